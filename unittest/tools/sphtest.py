@@ -1,0 +1,242 @@
+"""Test runner for USER-SPHTHERMAL (called by ctest, see unittest/CMakeLists.txt).
+
+  state   run an input through a sph_state driver and compare every atom's
+          T, desph, rho, drho with a stored reference (--generate writes it)
+  same    run an input through two drivers (or rank counts) and compare them
+  error   run one case of an error-case file and expect its LAMMPS error
+  styles  load the plugin and check that 'plugin list' shows every style
+          the package's headers declare
+  exports check that the plugin exports lammpsplugin_init and no LAMMPS symbol
+"""
+
+import argparse
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+COLUMNS = ["T", "desph", "rho", "drho"]
+
+
+def mpi_prefix(np_, mpirun):
+    if np_ <= 1:
+        return []
+    return [mpirun, "--oversubscribe", "-np", str(np_)]
+
+
+def mpi_env():
+    env = dict(os.environ)
+    # Open MPI refuses root unless told; CI containers often run as root
+    env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+    env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+    env.setdefault("OMP_NUM_THREADS", "1")
+    return env
+
+
+def run_state(driver, input_file, lmp_vars, np_=1, mpirun="mpirun"):
+    """Run the driver; return {column: [values]} sorted by atom id."""
+    fd, out = tempfile.mkstemp(suffix=".state")
+    os.close(fd)
+    values = dict(v.split("=", 1) for v in lmp_vars)  # a later name=value overrides
+    args = [word for name, value in values.items() for word in ("-var", name, value)]
+    cmd = mpi_prefix(np_, mpirun) + [driver, out, input_file] + args
+    proc = subprocess.run(cmd, cwd=os.path.dirname(os.path.abspath(input_file)),
+                          env=mpi_env(), capture_output=True, text=True)
+    if proc.returncode != 0:
+        sys.stderr.write(proc.stdout + proc.stderr)
+        sys.exit(f"FAIL: {' '.join(cmd)} exited with {proc.returncode}")
+    with open(out) as f:
+        text = f.read()
+    os.unlink(out)
+    return text
+
+
+def parse_state(text):
+    rows = [line.split() for line in text.splitlines() if line and not line.startswith("#")]
+    header = ["id", "type", "x", "y", "z"] + COLUMNS
+    return {name: [float(r[c]) for r in rows] for c, name in enumerate(header)}
+
+
+def compare(ref, new, rtol, label):
+    """Largest deviation per column, scaled by the column's largest magnitude."""
+    if len(ref["id"]) != len(new["id"]):
+        print(f"FAIL {label}: {len(new['id'])} atoms, reference has {len(ref['id'])}")
+        return False
+    ok = True
+    for name in ["type", "x", "y"] + COLUMNS:
+        scale = max(abs(v) for v in ref[name]) or 1.0
+        worst = max(abs(a - b) for a, b in zip(ref[name], new[name])) / scale
+        status = "ok" if worst <= rtol else "FAIL"
+        ok = ok and worst <= rtol
+        print(f"{status:4} {label}: {name:6} largest deviation {worst:.3e} of max |{name}| = {scale:.6g}"
+              f" (tolerance {rtol:.1e})")
+    return ok
+
+
+def cmd_state(a):
+    text = run_state(a.driver, a.input, a.var, a.np, a.mpirun)
+    if a.generate:
+        with open(a.ref, "w") as f:
+            f.write(text)
+        print("wrote", a.ref)
+        return 0
+    with open(a.ref) as f:
+        ref = parse_state(f.read())
+    new = parse_state(text)
+    # the test must be able to fail: the rates must not vanish
+    if max(abs(v) for v in new["desph"]) == 0.0:
+        print("FAIL: every desph is zero")
+        return 1
+    return 0 if compare(ref, new, a.rtol, os.path.basename(a.ref)) else 1
+
+
+def cmd_same(a):
+    first = parse_state(run_state(a.driver, a.input, a.var, a.np, a.mpirun))
+    second = parse_state(run_state(a.driver2 or a.driver, a.input, a.var + a.var2, a.np2, a.mpirun))
+    return 0 if compare(first, second, a.rtol, "second run against first") else 1
+
+
+def read_error_cases(path):
+    """Cases: '## name: X' and '## expect: regex' lines, then input lines.
+    Lines before the first case are the preamble, used unless '## preamble: no'."""
+    preamble, cases, current = [], {}, None
+    with open(path) as f:
+        for line in f.read().splitlines():
+            m = re.match(r"##\s*(name|expect|preamble):\s*(.*)$", line)
+            if m and m.group(1) == "name":
+                current = {"expect": None, "preamble": True, "lines": []}
+                cases[m.group(2).strip()] = current
+            elif m and current is not None:
+                if m.group(1) == "expect":
+                    current["expect"] = m.group(2).strip()
+                else:
+                    current["preamble"] = m.group(2).strip() != "no"
+            elif current is None:
+                preamble.append(line)
+            else:
+                current["lines"].append(line)
+    return preamble, cases
+
+
+def cmd_error(a):
+    preamble, cases = read_error_cases(a.cases)
+    if a.list:
+        print("\n".join(cases))
+        return 0
+    case = cases[a.name]
+    lines = ([f"variable plugin index {a.plugin}"] + preamble if case["preamble"] else
+             [f"variable plugin index {a.plugin}"])
+    script = "\n".join(lines + case["lines"]) + "\n"
+    with tempfile.NamedTemporaryFile("w", suffix=".in") as f:
+        f.write(script)
+        f.flush()
+        proc = subprocess.run([a.lmp, "-log", "none", "-echo", "screen", "-in", f.name], text=True,
+                              capture_output=True, env=mpi_env())
+    output = proc.stdout + proc.stderr
+    errors = [line for line in output.splitlines() if "ERROR" in line]
+    if not errors:
+        print(output)
+        print(f"FAIL {a.name}: no LAMMPS error, expected /{case['expect']}/")
+        return 1
+    if not re.search(case["expect"], errors[0]):
+        print(output)
+        print(f"FAIL {a.name}: first error is\n  {errors[0]}\nexpected /{case['expect']}/")
+        return 1
+    print(f"ok {a.name}: {errors[0]}")
+    return 0
+
+
+def declared_styles(pkg_dir):
+    styles = []
+    for name in sorted(os.listdir(pkg_dir)):
+        if name.endswith(".h"):
+            with open(os.path.join(pkg_dir, name)) as f:
+                for m in re.finditer(r"^(Pair|Fix|Compute)Style\(([^,]+),", f.read(), re.M):
+                    styles.append((m.group(1).lower(), m.group(2).strip()))
+    return styles
+
+
+def cmd_styles(a):
+    script = f"plugin load {a.plugin}\nplugin list\n"
+    proc = subprocess.run([a.lmp, "-log", "none"], input=script, text=True, capture_output=True,
+                          env=mpi_env())
+    output = proc.stdout + proc.stderr
+    styles = declared_styles(a.package)
+    if not styles:
+        print(f"FAIL: no styles declared in {a.package}")
+        return 1
+    missing = [f"{kind} style {name}" for kind, name in styles
+               if not re.search(rf"{kind} style plugin {re.escape(name)}\b", output)]
+    if missing or proc.returncode != 0:
+        print(output)
+        print("FAIL: plugin list lacks " + ", ".join(missing))
+        return 1
+    for kind, name in styles:
+        print(f"ok {kind} style {name}")
+    return 0
+
+
+def cmd_exports(a):
+    proc = subprocess.run(["nm", "-DC", "--defined-only", a.plugin], capture_output=True, text=True)
+    if proc.returncode != 0:
+        print(proc.stderr)
+        return 1
+    lines = proc.stdout.splitlines()
+    lammps = [line for line in lines if "LAMMPS_NS::" in line]
+    code = [line for line in lines if re.search(r" [TtWw] ", line)]
+    names = [line.split(" ", 2)[-1] for line in code]
+    ok = not lammps and names == ["lammpsplugin_init"]
+    print("\n".join(lines))
+    if not ok:
+        print("FAIL: expected only lammpsplugin_init exported and no LAMMPS_NS:: symbol")
+    return 0 if ok else 1
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = p.add_subparsers(dest="cmd", required=True)
+
+    s = sub.add_parser("state")
+    s.add_argument("--driver", required=True)
+    s.add_argument("--input", required=True)
+    s.add_argument("--ref", required=True)
+    s.add_argument("--var", action="append", default=[], help="name=value for LAMMPS -var")
+    s.add_argument("--np", type=int, default=1)
+    s.add_argument("--mpirun", default="mpirun")
+    s.add_argument("--rtol", type=float, default=1e-12)
+    s.add_argument("--generate", action="store_true")
+
+    s = sub.add_parser("same")
+    s.add_argument("--driver", required=True)
+    s.add_argument("--driver2")
+    s.add_argument("--input", required=True)
+    s.add_argument("--var", action="append", default=[])
+    s.add_argument("--var2", action="append", default=[], help="extra -var for the second run")
+    s.add_argument("--np", type=int, default=1)
+    s.add_argument("--np2", type=int, default=1)
+    s.add_argument("--mpirun", default="mpirun")
+    s.add_argument("--rtol", type=float, default=1e-12)
+
+    s = sub.add_parser("error")
+    s.add_argument("--lmp", required=True)
+    s.add_argument("--plugin", required=True)
+    s.add_argument("--cases", required=True)
+    s.add_argument("--name")
+    s.add_argument("--list", action="store_true")
+
+    s = sub.add_parser("styles")
+    s.add_argument("--lmp", required=True)
+    s.add_argument("--plugin", required=True)
+    s.add_argument("--package", required=True)
+
+    s = sub.add_parser("exports")
+    s.add_argument("--plugin", required=True)
+
+    a = p.parse_args()
+    return {"state": cmd_state, "same": cmd_same, "error": cmd_error, "styles": cmd_styles,
+            "exports": cmd_exports}[a.cmd](a)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
