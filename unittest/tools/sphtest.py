@@ -7,9 +7,12 @@
   styles  load the plugin and check that 'plugin list' shows every style
           the package's headers declare
   exports check that the plugin exports lammpsplugin_init and no LAMMPS symbol
+  eq6     recompute desph of in.rates at step 0 from seed 000 eq 6 in plain
+          Python (an independent oracle for the pair style)
 """
 
 import argparse
+import math
 import os
 import re
 import subprocess
@@ -40,7 +43,7 @@ def run_state(driver, input_file, lmp_vars, np_=1, mpirun="mpirun"):
     os.close(fd)
     values = dict(v.split("=", 1) for v in lmp_vars)  # a later name=value overrides
     args = [word for name, value in values.items() for word in ("-var", name, value)]
-    cmd = mpi_prefix(np_, mpirun) + [driver, out, input_file] + args
+    cmd = mpi_prefix(np_, mpirun) + [os.path.abspath(driver), out, os.path.abspath(input_file)] + args
     proc = subprocess.run(cmd, cwd=os.path.dirname(os.path.abspath(input_file)),
                           env=mpi_env(), capture_output=True, text=True)
     if proc.returncode != 0:
@@ -134,7 +137,7 @@ def cmd_error(a):
         proc = subprocess.run([a.lmp, "-log", "none", "-echo", "screen", "-in", f.name], text=True,
                               capture_output=True, env=mpi_env())
     output = proc.stdout + proc.stderr
-    errors = [line for line in output.splitlines() if "ERROR" in line]
+    errors = [line for line in output.splitlines() if line.startswith("ERROR")]
     if not errors:
         print(output)
         print(f"FAIL {a.name}: no LAMMPS error, expected /{case['expect']}/")
@@ -193,6 +196,53 @@ def cmd_exports(a):
     return 0 if ok else 1
 
 
+# 2-D kernel derivatives dW/dr on q = r/h, written out independently of sph_kernels.h
+KERNEL_2D = {
+    "lucy": (1.0, 5.0 / math.pi, lambda q: -12.0 * q * (1 - q) ** 2),
+    "cubic": (2.0, 10.0 / (7.0 * math.pi),
+              lambda q: -3.0 * q + 2.25 * q * q if q < 1 else -0.75 * (2 - q) ** 2),
+    "quintic": (3.0, 7.0 / (478.0 * math.pi),
+                lambda q: -5 * (3 - q) ** 4 + (30 * (2 - q) ** 4 if q < 2 else 0)
+                - (75 * (1 - q) ** 4 if q < 1 else 0)),
+    "wendland": (2.0, 7.0 / (4.0 * math.pi), lambda q: -5.0 * q * (1 - 0.5 * q) ** 3),
+}
+
+
+def cmd_eq6(a):
+    """in.rates: periodic 0.12 x 0.10 box, k = 1, 3, 0.5 and m = 0.1, 0.05, 0.3 by type."""
+    state = parse_state(run_state(a.driver, a.input, a.var + ["steps=0", f"kernel={a.kernel}"]))
+    cut = {"lucy": 0.013, "quintic": 0.039}.get(a.kernel, 0.026)
+    q_max, sigma, dfdq = KERNEL_2D[a.kernel]
+    h = cut / q_max
+    eta2 = (0.1 * h) ** 2
+    k = {1: 1.0, 2: 3.0, 3: 0.5}
+    m = {1: 0.10, 2: 0.05, 3: 0.30}
+    box = (0.12, 0.10)
+    n = len(state["id"])
+    worst = scale = 0.0
+    for i in range(n):
+        rate = 0.0
+        for j in range(n):
+            if i == j:
+                continue
+            d = [state["x"][i] - state["x"][j], state["y"][i] - state["y"][j]]
+            d = [c - L * round(c / L) for c, L in zip(d, box)]
+            r = math.hypot(*d)
+            if r >= cut:
+                continue
+            ti, tj = int(state["type"][i]), int(state["type"][j])
+            dwdr = sigma / h ** 3 * dfdq(r / h)
+            kij = 4 * k[ti] * k[tj] / (k[ti] + k[tj])
+            rate += (m[tj] * kij / (state["rho"][i] * state["rho"][j]) * (state["T"][i] - state["T"][j])
+                     * r * dwdr / (r * r + eta2))
+        worst = max(worst, abs(rate - state["desph"][i]))
+        scale = max(scale, abs(rate))
+    ok = scale > 0 and worst <= a.rtol * scale
+    print(f"{'ok' if ok else 'FAIL'} {a.kernel}: desph against seed 000 eq 6 in Python: largest deviation"
+          f" {worst:.3e} of max |desph| = {scale:.6g} (tolerance {a.rtol:.1e})")
+    return 0 if ok else 1
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = p.add_subparsers(dest="cmd", required=True)
@@ -233,9 +283,16 @@ def main():
     s = sub.add_parser("exports")
     s.add_argument("--plugin", required=True)
 
+    s = sub.add_parser("eq6")
+    s.add_argument("--driver", required=True)
+    s.add_argument("--input", required=True)
+    s.add_argument("--kernel", required=True, choices=sorted(KERNEL_2D))
+    s.add_argument("--var", action="append", default=[])
+    s.add_argument("--rtol", type=float, default=1e-12)
+
     a = p.parse_args()
     return {"state": cmd_state, "same": cmd_same, "error": cmd_error, "styles": cmd_styles,
-            "exports": cmd_exports}[a.cmd](a)
+            "exports": cmd_exports, "eq6": cmd_eq6}[a.cmd](a)
 
 
 if __name__ == "__main__":
