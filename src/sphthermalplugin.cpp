@@ -58,21 +58,23 @@ extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *l
   lammpsplugin_regfunc reg = (lammpsplugin_regfunc) regfunc;
 
 #define PAIR_CLASS
-#define PairStyle(key, Class) \
-  register_style(reg, lmp, handle, "pair", #key, (lammpsplugin_factory1 *) &pair_creator<Class>, nullptr);
+#define PairStyle(key, Class)                                                                    \
+  register_style(reg, lmp, handle, "pair", #key, (lammpsplugin_factory1 *) &pair_creator<Class>, \
+                 nullptr);
 #include "sphthermal_styles.h"
 #undef PairStyle
 #undef PAIR_CLASS
 
 #define FIX_CLASS
-#define FixStyle(key, Class) \
-  register_style(reg, lmp, handle, "fix", #key, nullptr, (lammpsplugin_factory2 *) &fix_creator<Class>);
+#define FixStyle(key, Class)                             \
+  register_style(reg, lmp, handle, "fix", #key, nullptr, \
+                 (lammpsplugin_factory2 *) &fix_creator<Class>);
 #include "sphthermal_styles.h"
 #undef FixStyle
 #undef FIX_CLASS
 
 #define COMPUTE_CLASS
-#define ComputeStyle(key, Class) \
+#define ComputeStyle(key, Class)                             \
   register_style(reg, lmp, handle, "compute", #key, nullptr, \
                  (lammpsplugin_factory2 *) &compute_creator<Class>);
 #include "sphthermal_styles.h"

@@ -27,8 +27,8 @@ using namespace LAMMPS_NS;
 /* ---------------------------------------------------------------------- */
 
 PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
-    Pair(lmp), kernel_kind(-1), cut_global(0.0), eta_factor(0.1), eta2(0.0),
-    conductivity(nullptr), conductivity_set(nullptr), conductance(nullptr)
+    Pair(lmp), kernel_kind(-1), cut_global(0.0), eta_factor(0.1), eta2(0.0), conductivity(nullptr),
+    conductivity_set(nullptr), conductance(nullptr)
 {
   restartinfo = 1;
   writedata = 1;
@@ -56,10 +56,18 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
 
   switch (kernel_kind) {
-    case SPHK_LUCY: eval_kernel<SPHK_LUCY>(); break;
-    case SPHK_CUBIC: eval_kernel<SPHK_CUBIC>(); break;
-    case SPHK_QUINTIC: eval_kernel<SPHK_QUINTIC>(); break;
-    case SPHK_WENDLAND: eval_kernel<SPHK_WENDLAND>(); break;
+    case SPHK_LUCY:
+      eval_kernel<SPHK_LUCY>();
+      break;
+    case SPHK_CUBIC:
+      eval_kernel<SPHK_CUBIC>();
+      break;
+    case SPHK_QUINTIC:
+      eval_kernel<SPHK_QUINTIC>();
+      break;
+    case SPHK_WENDLAND:
+      eval_kernel<SPHK_WENDLAND>();
+      break;
   }
 }
 
@@ -68,11 +76,15 @@ template <int KERNEL> void PairSPHClearyHeat::eval_kernel()
   const int newton_pair = force->newton_pair;
   const int rmass = (atom->rmass_flag && atom->rmass) ? 1 : 0;
   if (newton_pair) {
-    if (rmass) eval<KERNEL, 1, 1>();
-    else eval<KERNEL, 1, 0>();
+    if (rmass)
+      eval<KERNEL, 1, 1>();
+    else
+      eval<KERNEL, 1, 0>();
   } else {
-    if (rmass) eval<KERNEL, 0, 1>();
-    else eval<KERNEL, 0, 0>();
+    if (rmass)
+      eval<KERNEL, 0, 1>();
+    else
+      eval<KERNEL, 0, 0>();
   }
 }
 
@@ -199,7 +211,8 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
 void PairSPHClearyHeat::coeff(int narg, char **arg)
 {
   if (narg != 3)
-    error->all(FLERR, "Illegal pair_coeff command for sph/cleary/heat: expected I I <conductivity>");
+    error->all(FLERR,
+               "Illegal pair_coeff command for sph/cleary/heat: expected I I <conductivity>");
   if (!allocated) allocate();
 
   int ilo, ihi, jlo, jhi;
@@ -235,8 +248,10 @@ void PairSPHClearyHeat::init_style()
 
   for (int i = 1; i <= atom->ntypes; i++)
     if (!conductivity_set[i])
-      error->all(FLERR, "Pair style sph/cleary/heat: no conductivity for atom type {} (pair_coeff {} {} <k>)",
-                 i, i, i);
+      error->all(
+          FLERR,
+          "Pair style sph/cleary/heat: no conductivity for atom type {} (pair_coeff {} {} <k>)", i,
+          i, i);
 
   kernel = sphk_make(kernel_kind, domain->dimension, cut_global);
   const double eta = eta_factor * kernel.h;
@@ -249,8 +264,7 @@ void PairSPHClearyHeat::init_style()
 
 double PairSPHClearyHeat::init_one(int i, int j)
 {
-  conductance[i][j] = conductance[j][i] =
-      sphc_cleary_conductance(conductivity[i], conductivity[j]);
+  conductance[i][j] = conductance[j][i] = sphc_cleary_conductance(conductivity[i], conductivity[j]);
   return cut_global;
 }
 

@@ -115,22 +115,32 @@ static inline double sphk_wendland_df(double q)
 static inline double sphk_f(int kind, double q)
 {
   switch (kind) {
-    case SPHK_LUCY: return sphk_lucy_f(q);
-    case SPHK_CUBIC: return sphk_cubic_f(q);
-    case SPHK_QUINTIC: return sphk_quintic_f(q);
-    case SPHK_WENDLAND: return sphk_wendland_f(q);
-    default: return 0.0;
+    case SPHK_LUCY:
+      return sphk_lucy_f(q);
+    case SPHK_CUBIC:
+      return sphk_cubic_f(q);
+    case SPHK_QUINTIC:
+      return sphk_quintic_f(q);
+    case SPHK_WENDLAND:
+      return sphk_wendland_f(q);
+    default:
+      return 0.0;
   }
 }
 
 static inline double sphk_df(int kind, double q)
 {
   switch (kind) {
-    case SPHK_LUCY: return sphk_lucy_df(q);
-    case SPHK_CUBIC: return sphk_cubic_df(q);
-    case SPHK_QUINTIC: return sphk_quintic_df(q);
-    case SPHK_WENDLAND: return sphk_wendland_df(q);
-    default: return 0.0;
+    case SPHK_LUCY:
+      return sphk_lucy_df(q);
+    case SPHK_CUBIC:
+      return sphk_cubic_df(q);
+    case SPHK_QUINTIC:
+      return sphk_quintic_df(q);
+    case SPHK_WENDLAND:
+      return sphk_wendland_df(q);
+    default:
+      return 0.0;
   }
 }
 
@@ -169,10 +179,10 @@ static inline int sphk_lookup(const char *name)
 /* A kernel fixed to one dimension and one support radius (the cutoff). */
 typedef struct {
   int kind, dim;
-  double h;          /* smoothing length, cutoff / q_max */
-  double inv_h;      /* 1 / h */
-  double w_scale;    /* sigma_d / h^d */
-  double dw_scale;   /* sigma_d / h^(d+1) */
+  double h;        /* smoothing length, cutoff / q_max */
+  double inv_h;    /* 1 / h */
+  double w_scale;  /* sigma_d / h^d */
+  double dw_scale; /* sigma_d / h^(d+1) */
 } sphk_kernel;
 
 static inline sphk_kernel sphk_make(int kind, int dim, double cutoff)
