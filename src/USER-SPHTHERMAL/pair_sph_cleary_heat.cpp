@@ -3,8 +3,7 @@
    This software is distributed under the GNU General Public License.
 
    pair sph/cleary/heat: SPH heat conduction of Cleary 1998 (eq 6), with a
-   harmonic-mean conductivity so that the heat flux stays continuous
-   across material interfaces.
+   harmonic-mean (or arithmetic-mean) conductivity from fix sph/materials.
 ------------------------------------------------------------------------- */
 
 #include "pair_sph_cleary_heat.h"
@@ -13,6 +12,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_sph_materials.h"
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
@@ -27,11 +27,11 @@ using namespace LAMMPS_NS;
 /* ---------------------------------------------------------------------- */
 
 PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
-    Pair(lmp), kernel_kind(-1), cut_global(0.0), eta_factor(0.1), eta2(0.0), conductivity(nullptr),
-    conductivity_set(nullptr), conductance(nullptr)
+    Pair(lmp), kernel_kind(-1), mean(SPHC_HARMONIC), cut_global(0.0), eta_factor(0.1), eta2(0.0),
+    materials(nullptr), conductivity_varies(0), conductance(nullptr), conductivity(nullptr),
+    nmax(0)
 {
   restartinfo = 1;
-  writedata = 1;
   single_enable = 0;
   memset(&kernel, 0, sizeof(kernel));
 }
@@ -43,10 +43,9 @@ PairSPHClearyHeat::~PairSPHClearyHeat()
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
-    memory->destroy(conductivity);
-    memory->destroy(conductivity_set);
     memory->destroy(conductance);
   }
+  memory->destroy(conductivity);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -54,6 +53,7 @@ PairSPHClearyHeat::~PairSPHClearyHeat()
 void PairSPHClearyHeat::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  if (conductivity_varies) update_conductivity();
 
   switch (kernel_kind) {
     case SPHK_LUCY:
@@ -73,19 +73,46 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
 
 template <int KERNEL> void PairSPHClearyHeat::eval_kernel()
 {
-  const int newton_pair = force->newton_pair;
-  const int rmass = (atom->rmass_flag && atom->rmass) ? 1 : 0;
-  if (newton_pair) {
-    if (rmass)
-      eval<KERNEL, 1, 1>();
-    else
-      eval<KERNEL, 1, 0>();
-  } else {
-    if (rmass)
-      eval<KERNEL, 0, 1>();
-    else
-      eval<KERNEL, 0, 0>();
+  if (mean == SPHC_ARITHMETIC)
+    eval_mean<KERNEL, SPHC_ARITHMETIC>();
+  else
+    eval_mean<KERNEL, SPHC_HARMONIC>();
+}
+
+template <int KERNEL, int MEAN> void PairSPHClearyHeat::eval_mean()
+{
+  const int flags = (conductivity_varies ? 4 : 0) | (force->newton_pair ? 2 : 0) |
+      ((atom->rmass_flag && atom->rmass) ? 1 : 0);
+  switch (flags) {
+    case 0: eval<KERNEL, MEAN, 0, 0, 0>(); break;
+    case 1: eval<KERNEL, MEAN, 0, 0, 1>(); break;
+    case 2: eval<KERNEL, MEAN, 0, 1, 0>(); break;
+    case 3: eval<KERNEL, MEAN, 0, 1, 1>(); break;
+    case 4: eval<KERNEL, MEAN, 1, 0, 0>(); break;
+    case 5: eval<KERNEL, MEAN, 1, 0, 1>(); break;
+    case 6: eval<KERNEL, MEAN, 1, 1, 0>(); break;
+    case 7: eval<KERNEL, MEAN, 1, 1, 1>(); break;
   }
+}
+
+/* ----------------------------------------------------------------------
+   conductivity of every owned and ghost atom at its temperature
+   (ghosts carry esph and cv, so no communication is needed)
+------------------------------------------------------------------------- */
+
+void PairSPHClearyHeat::update_conductivity()
+{
+  if (atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(conductivity);
+    memory->create(conductivity, nmax, "pair:conductivity");
+  }
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+  const int *const type = atom->type;
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++)
+    conductivity[i] = sphm_law_eval(materials->conductivity(type[i]), esph[i] / cv[i]);
 }
 
 /* ----------------------------------------------------------------------
@@ -93,7 +120,8 @@ template <int KERNEL> void PairSPHClearyHeat::eval_kernel()
    kernel support (sph_conduction.h); T = esph / cv
 ------------------------------------------------------------------------- */
 
-template <int KERNEL, int NEWTON_PAIR, int RMASS> void PairSPHClearyHeat::eval()
+template <int KERNEL, int MEAN, int VARYING_K, int NEWTON_PAIR, int RMASS>
+void PairSPHClearyHeat::eval()
 {
   const double *const *const x = atom->x;
   const double *const esph = atom->esph;
@@ -123,6 +151,7 @@ template <int KERNEL, int NEWTON_PAIR, int RMASS> void PairSPHClearyHeat::eval()
     const double temp_i = esph[i] / cv[i];
     const double rho_i = rho[i];
     const double mass_i = RMASS ? rmass[i] : mass[itype];
+    const double k_i = VARYING_K ? conductivity[i] : 0.0;
     const double *const conductance_i = conductance[itype];
     const int *const jlist = firstneigh[i];
     const int jnum = numneigh[i];
@@ -139,8 +168,10 @@ template <int KERNEL, int NEWTON_PAIR, int RMASS> void PairSPHClearyHeat::eval()
       const int jtype = type[j];
       const double r = sqrt(rsq);
       const double dwdr = dw_scale * sphk_df(KERNEL, r * inv_h);
-      const double f_ij = sphc_cleary_pair(conductance_i[jtype], temp_i - esph[j] / cv[j], rho_i,
-                                           rho[j], r, dwdr, eta2);
+      const double conductance_ij =
+          VARYING_K ? sphc_conductance(MEAN, k_i, conductivity[j]) : conductance_i[jtype];
+      const double f_ij =
+          sphc_cleary_pair(conductance_ij, temp_i - esph[j] / cv[j], rho_i, rho[j], r, dwdr, eta2);
       desph_i += (RMASS ? rmass[j] : mass[jtype]) * f_ij;
       if (NEWTON_PAIR || j < nlocal) desph[j] -= mass_i * f_ij;
     }
@@ -157,17 +188,15 @@ void PairSPHClearyHeat::allocate()
   memory->create(setflag, n + 1, n + 1, "pair:setflag");
   memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
   memory->create(conductance, n + 1, n + 1, "pair:conductance");
-  memory->create(conductivity, n + 1, "pair:conductivity");
-  memory->create(conductivity_set, n + 1, "pair:conductivity_set");
-  for (int i = 0; i <= n; i++) {
-    conductivity[i] = 0.0;
-    conductivity_set[i] = 0;
-    for (int j = 0; j <= n; j++) setflag[i][j] = 0;
-  }
+  for (int i = 0; i <= n; i++)
+    for (int j = 0; j <= n; j++) {
+      setflag[i][j] = 0;
+      conductance[i][j] = 0.0;
+    }
 }
 
 /* ----------------------------------------------------------------------
-   pair_style sph/cleary/heat kernel cutoff [eta factor]
+   pair_style sph/cleary/heat kernel cutoff [mean harmonic|arithmetic] [eta f]
 ------------------------------------------------------------------------- */
 
 void PairSPHClearyHeat::settings(int narg, char **arg)
@@ -187,56 +216,56 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
     error->all(FLERR, "Illegal pair_style sph/cleary/heat command: cutoff {} must be > 0", arg[1]);
 
   eta_factor = 0.1;
+  mean = SPHC_HARMONIC;
   int iarg = 2;
   while (iarg < narg) {
+    if (iarg + 1 >= narg)
+      error->all(FLERR, "Illegal pair_style sph/cleary/heat command: missing value after '{}'",
+                 arg[iarg]);
     if (strcmp(arg[iarg], "eta") == 0) {
-      if (iarg + 1 >= narg)
-        error->all(FLERR, "Illegal pair_style sph/cleary/heat command: missing value after 'eta'");
       eta_factor = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (eta_factor <= 0.0)
-        error->all(FLERR, "Illegal pair_style sph/cleary/heat command: eta {} must be > 0",
+      if (eta_factor < 0.0)
+        error->all(FLERR, "Illegal pair_style sph/cleary/heat command: eta {} must be >= 0",
                    arg[iarg + 1]);
-      iarg += 2;
+    } else if (strcmp(arg[iarg], "mean") == 0) {
+      if (strcmp(arg[iarg + 1], "harmonic") == 0)
+        mean = SPHC_HARMONIC;
+      else if (strcmp(arg[iarg + 1], "arithmetic") == 0)
+        mean = SPHC_ARITHMETIC;
+      else
+        error->all(FLERR,
+                   "Illegal pair_style sph/cleary/heat command: unknown mean '{}' "
+                   "(harmonic or arithmetic)",
+                   arg[iarg + 1]);
     } else
       error->all(FLERR, "Illegal pair_style sph/cleary/heat command: unknown keyword '{}'",
                  arg[iarg]);
+    iarg += 2;
   }
 }
 
 /* ----------------------------------------------------------------------
-   pair_coeff I I k: conductivity of the types I (a range or * is allowed);
-   pairs of unlike types use the harmonic mean, so only I I is accepted
+   pair_coeff * *: the conductivities come from fix sph/materials
 ------------------------------------------------------------------------- */
 
 void PairSPHClearyHeat::coeff(int narg, char **arg)
 {
-  if (narg != 3)
+  if (narg != 2)
     error->all(FLERR,
-               "Illegal pair_coeff command for sph/cleary/heat: expected I I <conductivity>");
+               "Illegal pair_coeff command for sph/cleary/heat: expected I J only (conductivities "
+               "come from fix sph/materials)");
   if (!allocated) allocate();
 
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-  if (ilo != jlo || ihi != jhi)
-    error->all(FLERR,
-               "Illegal pair_coeff command for sph/cleary/heat: conductivity is per type, "
-               "use I I (or * *), not {} {}",
-               arg[0], arg[1]);
-
-  const double k = utils::numeric(FLERR, arg[2], false, lmp);
-  if (k < 0.0)
-    error->all(FLERR, "Illegal pair_coeff command for sph/cleary/heat: conductivity {} is negative",
-               arg[2]);
-
-  for (int i = ilo; i <= ihi; i++) {
-    conductivity[i] = k;
-    conductivity_set[i] = 1;
-  }
-
-  // unlike pairs follow from the per-type values; a missing type is reported by init_style
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = 1; j <= atom->ntypes; j++) setflag[i][j] = 1;
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      setflag[i][j] = 1;
+      count++;
+    }
+  if (count == 0) error->all(FLERR, "Illegal pair_coeff command for sph/cleary/heat: no type pair");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -246,12 +275,14 @@ void PairSPHClearyHeat::init_style()
   if (!atom->esph_flag || !atom->cv_flag || !atom->rho_flag)
     error->all(FLERR, "Pair style sph/cleary/heat requires atom style sph (esph, desph, cv, rho)");
 
+  materials = FixSPHMaterials::find(lmp, "Pair style sph/cleary/heat");
   for (int i = 1; i <= atom->ntypes; i++)
-    if (!conductivity_set[i])
-      error->all(
-          FLERR,
-          "Pair style sph/cleary/heat: no conductivity for atom type {} (pair_coeff {} {} <k>)", i,
-          i, i);
+    if (!materials->conductivity(i))
+      error->all(FLERR,
+                 "Pair style sph/cleary/heat: atom type {} has no conductivity in fix "
+                 "sph/materials",
+                 i);
+  conductivity_varies = !materials->conductivity_constant();
 
   kernel = sphk_make(kernel_kind, domain->dimension, cut_global);
   const double eta = eta_factor * kernel.h;
@@ -264,7 +295,10 @@ void PairSPHClearyHeat::init_style()
 
 double PairSPHClearyHeat::init_one(int i, int j)
 {
-  conductance[i][j] = conductance[j][i] = sphc_cleary_conductance(conductivity[i], conductivity[j]);
+  // with constant conductivities the conductance is a property of the type pair
+  if (!conductivity_varies)
+    conductance[i][j] = conductance[j][i] = sphc_conductance(
+        mean, materials->conductivity(i)->c[0], materials->conductivity(j)->c[0]);
   return cut_global;
 }
 
@@ -273,6 +307,7 @@ double PairSPHClearyHeat::init_one(int i, int j)
 void PairSPHClearyHeat::write_restart_settings(FILE *fp)
 {
   fwrite(&kernel_kind, sizeof(int), 1, fp);
+  fwrite(&mean, sizeof(int), 1, fp);
   fwrite(&cut_global, sizeof(double), 1, fp);
   fwrite(&eta_factor, sizeof(double), 1, fp);
 }
@@ -281,10 +316,12 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
 {
   if (comm->me == 0) {
     utils::sfread(FLERR, &kernel_kind, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &mean, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &eta_factor, sizeof(double), 1, fp, nullptr, error);
   }
   MPI_Bcast(&kernel_kind, 1, MPI_INT, 0, world);
+  MPI_Bcast(&mean, 1, MPI_INT, 0, world);
   MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&eta_factor, 1, MPI_DOUBLE, 0, world);
 }
@@ -292,31 +329,24 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
 void PairSPHClearyHeat::write_restart(FILE *fp)
 {
   write_restart_settings(fp);
-  for (int i = 1; i <= atom->ntypes; i++) {
-    fwrite(&conductivity_set[i], sizeof(int), 1, fp);
-    fwrite(&conductivity[i], sizeof(double), 1, fp);
-  }
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) fwrite(&setflag[i][j], sizeof(int), 1, fp);
 }
 
 void PairSPHClearyHeat::read_restart(FILE *fp)
 {
   read_restart_settings(fp);
   allocate();
-  for (int i = 1; i <= atom->ntypes; i++) {
-    if (comm->me == 0) {
-      utils::sfread(FLERR, &conductivity_set[i], sizeof(int), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &conductivity[i], sizeof(double), 1, fp, nullptr, error);
-    }
-    MPI_Bcast(&conductivity_set[i], 1, MPI_INT, 0, world);
-    MPI_Bcast(&conductivity[i], 1, MPI_DOUBLE, 0, world);
-  }
   for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = 1; j <= atom->ntypes; j++) setflag[i][j] = 1;
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (comm->me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+    }
 }
 
 /* ---------------------------------------------------------------------- */
 
-void PairSPHClearyHeat::write_data(FILE *fp)
+double PairSPHClearyHeat::memory_usage()
 {
-  for (int i = 1; i <= atom->ntypes; i++) fprintf(fp, "%d %.17g\n", i, conductivity[i]);
+  return Pair::memory_usage() + (double) nmax * sizeof(double);
 }

@@ -30,21 +30,26 @@ class PairSPHClearyHeat : public Pair {
   void read_restart(FILE *) override;
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
-  void write_data(FILE *) override;
+  double memory_usage() override;
 
  protected:
-  int kernel_kind;          // SPHK_* of sph_kernels.h
-  double cut_global;        // kernel support radius
-  double eta_factor;        // eta = eta_factor * h
-  sphk_kernel kernel;       // kernel fixed to this dimension and cutoff
-  double eta2;              // eta^2, regularises r -> 0
-  double *conductivity;     // per type
-  int *conductivity_set;    // per type: 1 once pair_coeff gave it
-  double **conductance;     // per type pair: 4 k_i k_j / (k_i + k_j)
+  int kernel_kind;            // SPHK_* of sph_kernels.h
+  int mean;                   // SPHC_HARMONIC or SPHC_ARITHMETIC of sph_conduction.h
+  double cut_global;          // kernel support radius
+  double eta_factor;          // eta = eta_factor * h
+  sphk_kernel kernel;         // kernel fixed to this dimension and cutoff
+  double eta2;                // eta^2, regularises r -> 0
+  class FixSPHMaterials *materials;
+  int conductivity_varies;    // 1 when some conductivity depends on T
+  double **conductance;       // per type pair, when no conductivity varies
+  double *conductivity;       // per atom (owned and ghost), when some varies
+  int nmax;
 
   void allocate();
-  template <int KERNEL, int NEWTON_PAIR, int RMASS> void eval();
+  void update_conductivity();
   template <int KERNEL> void eval_kernel();
+  template <int KERNEL, int MEAN> void eval_mean();
+  template <int KERNEL, int MEAN, int VARYING_K, int NEWTON_PAIR, int RMASS> void eval();
 };
 
 }    // namespace LAMMPS_NS

@@ -19,6 +19,8 @@ import subprocess
 import sys
 import tempfile
 
+import numpy as np
+
 COLUMNS = ["T", "desph", "rho", "drho"]
 
 
@@ -128,8 +130,8 @@ def cmd_error(a):
         print("\n".join(cases))
         return 0
     case = cases[a.name]
-    lines = ([f"variable plugin index {a.plugin}"] + preamble if case["preamble"] else
-             [f"variable plugin index {a.plugin}"])
+    defines = [f"variable plugin index {a.plugin}", f"variable potentials index {a.potentials}"]
+    lines = defines + preamble if case["preamble"] else defines
     script = "\n".join(lines + case["lines"]) + "\n"
     with tempfile.NamedTemporaryFile("w", suffix=".in") as f:
         f.write(script)
@@ -208,17 +210,26 @@ KERNEL_2D = {
 }
 
 
+# conductivity laws of in.rates, written out independently of sph_material_laws.h
+RATES_K = {
+    "constant": {1: lambda T: 1.0, 2: lambda T: 3.0, 3: lambda T: 0.5},
+    "varying": {1: lambda T: math.exp(0.2 * T), 2: lambda T: 3.0 + 0.5 * (T - 2.0),
+                3: lambda T: float(np.interp(T, [0.0, 2.0, 5.0], [0.4, 0.6, 0.9]))},
+}
+
+
 def cmd_eq6(a):
-    """in.rates: periodic 0.12 x 0.10 box, k = 1, 3, 0.5 and m = 0.1, 0.05, 0.3 by type."""
-    state = parse_state(run_state(a.driver, a.input, a.var + ["steps=0", f"kernel={a.kernel}"]))
+    """in.rates: periodic 0.12 x 0.10 box, masses 0.1, 0.05, 0.3 by type."""
+    state = parse_state(run_state(a.driver, a.input, a.var + [
+        "steps=0", f"kernel={a.kernel}", f"mean={a.mean}", f"eta={a.eta}", f"laws={a.laws}"]))
     cut = {"lucy": 0.013, "quintic": 0.039}.get(a.kernel, 0.026)
     q_max, sigma, dfdq = KERNEL_2D[a.kernel]
     h = cut / q_max
-    eta2 = (0.1 * h) ** 2
-    k = {1: 1.0, 2: 3.0, 3: 0.5}
+    eta2 = (a.eta * h) ** 2
     m = {1: 0.10, 2: 0.05, 3: 0.30}
     box = (0.12, 0.10)
     n = len(state["id"])
+    k = [RATES_K[a.laws][int(t)](T) for t, T in zip(state["type"], state["T"])]
     worst = scale = 0.0
     for i in range(n):
         rate = 0.0
@@ -230,16 +241,19 @@ def cmd_eq6(a):
             r = math.hypot(*d)
             if r >= cut:
                 continue
-            ti, tj = int(state["type"][i]), int(state["type"][j])
             dwdr = sigma / h ** 3 * dfdq(r / h)
-            kij = 4 * k[ti] * k[tj] / (k[ti] + k[tj])
-            rate += (m[tj] * kij / (state["rho"][i] * state["rho"][j]) * (state["T"][i] - state["T"][j])
-                     * r * dwdr / (r * r + eta2))
+            if a.mean == "harmonic":
+                kij = 4 * k[i] * k[j] / (k[i] + k[j])
+            else:
+                kij = k[i] + k[j]
+            rate += (m[int(state["type"][j])] * kij / (state["rho"][i] * state["rho"][j])
+                     * (state["T"][i] - state["T"][j]) * r * dwdr / (r * r + eta2))
         worst = max(worst, abs(rate - state["desph"][i]))
         scale = max(scale, abs(rate))
     ok = scale > 0 and worst <= a.rtol * scale
-    print(f"{'ok' if ok else 'FAIL'} {a.kernel}: desph against seed 000 eq 6 in Python: largest deviation"
-          f" {worst:.3e} of max |desph| = {scale:.6g} (tolerance {a.rtol:.1e})")
+    print(f"{'ok' if ok else 'FAIL'} {a.kernel}, {a.mean} mean, eta {a.eta}, {a.laws} k: desph against "
+          f"seed 000 eq 6 in Python: largest deviation {worst:.3e} of max |desph| = {scale:.6g}"
+          f" (tolerance {a.rtol:.1e})")
     return 0 if ok else 1
 
 
@@ -272,6 +286,8 @@ def main():
     s.add_argument("--lmp", required=True)
     s.add_argument("--plugin", required=True)
     s.add_argument("--cases", required=True)
+    s.add_argument("--potentials", default=os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                                        "..", "..", "potentials"))
     s.add_argument("--name")
     s.add_argument("--list", action="store_true")
 
@@ -287,6 +303,9 @@ def main():
     s.add_argument("--driver", required=True)
     s.add_argument("--input", required=True)
     s.add_argument("--kernel", required=True, choices=sorted(KERNEL_2D))
+    s.add_argument("--mean", default="harmonic", choices=["harmonic", "arithmetic"])
+    s.add_argument("--eta", type=float, default=0.1)
+    s.add_argument("--laws", default="constant", choices=sorted(RATES_K))
     s.add_argument("--var", action="append", default=[])
     s.add_argument("--rtol", type=float, default=1e-12)
 

@@ -1,0 +1,264 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   fix sph/materials: per-type material properties, given in the input
+   or read from a material file (potentials/NAME.sphmat), for every style of
+   the package.
+------------------------------------------------------------------------- */
+
+#include "fix_sph_materials.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "memory.h"
+#include "modify.h"
+#include "potential_file_reader.h"
+#include "tokenizer.h"
+#include "update.h"
+
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static const char cmd[] = "fix sph/materials";
+
+/* ---------------------------------------------------------------------- */
+
+FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), conductivity_law(nullptr), conductivity_set(nullptr), cv_type(nullptr),
+    rho0_type(nullptr)
+{
+  ntypes = atom->ntypes;
+  memory->create(conductivity_set, ntypes + 1, "sph/materials:conductivity_set");
+  memory->create(cv_type, ntypes + 1, "sph/materials:cv");
+  memory->create(rho0_type, ntypes + 1, "sph/materials:rho0");
+  conductivity_law = new sphm_law[ntypes + 1];
+  table_t.resize(ntypes + 1);
+  table_p.resize(ntypes + 1);
+  for (int i = 0; i <= ntypes; i++) {
+    conductivity_set[i] = 0;
+    cv_type[i] = rho0_type[i] = -1.0;
+    memset(&conductivity_law[i], 0, sizeof(sphm_law));
+  }
+
+  if (narg < 4)
+    error->all(FLERR, "Illegal {} command: expected 'type <I> <property> ...' or 'file ...'", cmd);
+
+  std::vector<std::string> words(arg + 3, arg + narg);
+  size_t iword = 0;
+  while (iword < words.size()) {
+    if (words[iword] == "type") {
+      if (iword + 1 >= words.size())
+        error->all(FLERR, "Illegal {} command: missing atom type after 'type'", cmd);
+      int ilo, ihi;
+      utils::bounds(FLERR, words[iword + 1], 1, ntypes, ilo, ihi, error);
+      const std::string where = fmt::format("{} command, type {}", cmd, words[iword + 1]);
+      iword += 2;
+      if (iword >= words.size() || words[iword] == "type" || words[iword] == "file")
+        error->all(FLERR, "Illegal {}: no property given", where);
+      while (iword < words.size() && words[iword] != "type" && words[iword] != "file")
+        iword += parse_property(ilo, ihi, words, iword, where);
+    } else if (words[iword] == "file") {
+      if (iword + 3 >= words.size())
+        error->all(FLERR, "Illegal {} command: expected 'file <path> <material> <type> ...'", cmd);
+      const std::string file = words[iword + 1];
+      std::vector<std::string> names;
+      std::vector<int> types;
+      iword += 2;
+      while (iword + 1 < words.size() && words[iword] != "type" && words[iword] != "file") {
+        int ilo, ihi;
+        utils::bounds(FLERR, words[iword + 1], 1, ntypes, ilo, ihi, error);
+        for (int i = ilo; i <= ihi; i++) {
+          names.push_back(words[iword]);
+          types.push_back(i);
+        }
+        iword += 2;
+      }
+      if (iword < words.size() && words[iword] != "type" && words[iword] != "file")
+        error->all(FLERR, "Illegal {} command: material '{}' of file {} has no atom type", cmd,
+                   words[iword], file);
+      read_file(file, names, types);
+    } else
+      error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, words[iword]);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixSPHMaterials::~FixSPHMaterials()
+{
+  delete[] conductivity_law;
+  memory->destroy(conductivity_set);
+  memory->destroy(cv_type);
+  memory->destroy(rho0_type);
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixSPHMaterials::setmask()
+{
+  return 0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixSPHMaterials *FixSPHMaterials::find(LAMMPS *lmp, const char *who)
+{
+  FixSPHMaterials *hub = nullptr;
+  int count = 0;
+  for (int i = 0; i < lmp->modify->nfix; i++)
+    if (strcmp(lmp->modify->fix[i]->style, "sph/materials") == 0) {
+      hub = (FixSPHMaterials *) lmp->modify->fix[i];
+      count++;
+    }
+  if (count == 0) lmp->error->all(FLERR, "{} requires fix sph/materials (the material properties)", who);
+  if (count > 1) lmp->error->all(FLERR, "{}: only one fix sph/materials may be defined", who);
+  return hub;
+}
+
+const sphm_law *FixSPHMaterials::conductivity(int type) const
+{
+  return conductivity_set[type] ? &conductivity_law[type] : nullptr;
+}
+
+int FixSPHMaterials::conductivity_constant() const
+{
+  for (int i = 1; i <= ntypes; i++)
+    if (conductivity_set[i] && conductivity_law[i].kind != SPHM_CONSTANT) return 0;
+  return 1;
+}
+
+/* ----------------------------------------------------------------------
+   one property of types ilo..ihi from words[iword]; returns the number
+   of words it took
+------------------------------------------------------------------------- */
+
+int FixSPHMaterials::parse_property(int ilo, int ihi, const std::vector<std::string> &words,
+                                    size_t iword, const std::string &where)
+{
+  const std::string &name = words[iword];
+  const size_t left = words.size() - iword - 1;
+
+  if (name == "cv" || name == "rho0") {
+    if (left < 1) error->all(FLERR, "Illegal {}: missing value after '{}'", where, name);
+    const double value = positive(words[iword + 1], name, where, false);
+    for (int i = ilo; i <= ihi; i++) (name == "cv" ? cv_type : rho0_type)[i] = value;
+    return 2;
+  }
+
+  if (name == "conductivity") {
+    if (left < 1) error->all(FLERR, "Illegal {}: missing law after 'conductivity'", where);
+    const int kind = sphm_law_lookup(words[iword + 1].c_str());
+    if (kind < 0)
+      error->all(FLERR,
+                 "Illegal {}: unknown conductivity law '{}' (constant, linear, exponential or "
+                 "table)",
+                 where, words[iword + 1]);
+    sphm_law law;
+    memset(&law, 0, sizeof(law));
+    law.kind = kind;
+    int ncoeffs = sphm_law_ncoeffs(kind);
+    std::vector<double> t, p;
+    if (kind == SPHM_TABLE) {
+      if (left < 2) error->all(FLERR, "Illegal {}: missing number of table points", where);
+      const int n = utils::inumeric(FLERR, words[iword + 2].c_str(), false, lmp);
+      if (n < 2) error->all(FLERR, "Illegal {}: a conductivity table needs at least 2 points", where);
+      if (left < 2 + 2 * (size_t) n)
+        error->all(FLERR, "Illegal {}: conductivity table of {} points needs {} values", where, n,
+                   2 * n);
+      for (int k = 0; k < n; k++) {
+        t.push_back(utils::numeric(FLERR, words[iword + 3 + 2 * k].c_str(), false, lmp));
+        p.push_back(positive(words[iword + 4 + 2 * k], "conductivity", where, true));
+        if (k > 0 && t[k] <= t[k - 1])
+          error->all(FLERR, "Illegal {}: conductivity table temperatures must increase ({} after {})",
+                     where, words[iword + 3 + 2 * k], words[iword + 1 + 2 * k]);
+      }
+      ncoeffs = 1 + 2 * n;
+    } else {
+      if (left < 1 + (size_t) ncoeffs)
+        error->all(FLERR, "Illegal {}: conductivity {} needs {} coefficient(s)", where,
+                   words[iword + 1], ncoeffs);
+      for (int k = 0; k < ncoeffs; k++)
+        law.c[k] = (k == 0) ? positive(words[iword + 2], "conductivity", where, true)
+                            : utils::numeric(FLERR, words[iword + 2 + k].c_str(), false, lmp);
+    }
+    for (int i = ilo; i <= ihi; i++) {
+      table_t[i] = t;
+      table_p[i] = p;
+      conductivity_law[i] = law;
+      conductivity_law[i].ntable = (int) t.size();
+      conductivity_law[i].table_t = table_t[i].data();
+      conductivity_law[i].table_p = table_p[i].data();
+      conductivity_set[i] = 1;
+    }
+    return 2 + ncoeffs;
+  }
+
+  error->all(FLERR, "Illegal {}: unknown property '{}' (conductivity, cv or rho0)", where, name);
+  return 0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixSPHMaterials::positive(const std::string &word, const std::string &what,
+                                 const std::string &where, bool zero_ok)
+{
+  const double value = utils::numeric(FLERR, word.c_str(), false, lmp);
+  if (value < 0.0 || (!zero_ok && value == 0.0))
+    error->all(FLERR, "Illegal {}: {} {} must be {}", where, what, word, zero_ok ? ">= 0" : "> 0");
+  return value;
+}
+
+/* ----------------------------------------------------------------------
+   material file: '# DATE: ... UNITS: ...' header, then lines
+     <material> <property> <values>
+   with the properties and values of the command. Rank 0 reads, every
+   rank parses the same text, so errors are collective.
+------------------------------------------------------------------------- */
+
+void FixSPHMaterials::read_file(const std::string &file, const std::vector<std::string> &names,
+                                const std::vector<int> &types)
+{
+  // checked here, collectively: an error on rank 0 alone may never be printed
+  std::string path = utils::get_potential_file_path(file);
+  if (path.empty()) error->all(FLERR, "Illegal {} command: cannot open material file {}", cmd, file);
+  const std::string units = utils::get_potential_units(path, "sph/materials");
+  if (!units.empty() && units != update->unit_style)
+    error->all(FLERR, "Illegal {} command: material file {} is in {} units, not {} units", cmd, file,
+               units, update->unit_style);
+
+  std::string text;
+  if (comm->me == 0) {
+    PotentialFileReader reader(lmp, file, "sph/materials");
+    char *line;
+    while ((line = reader.next_line())) {
+      text += line;
+      if (text.back() != '\n') text += '\n';
+    }
+  }
+  int n = (int) text.size();
+  MPI_Bcast(&n, 1, MPI_INT, 0, world);
+  text.resize(n);
+  MPI_Bcast(&text[0], n, MPI_CHAR, 0, world);
+
+  std::vector<int> found(names.size(), 0);
+  for (const auto &line : Tokenizer(text, "\n").as_vector()) {
+    std::vector<std::string> words = utils::split_words(line);
+    if (words.size() < 2) continue;
+    for (size_t m = 0; m < names.size(); m++) {
+      if (words[0] != names[m]) continue;
+      found[m] = 1;
+      const std::string where = fmt::format("{} command, material {} (type {}) in {}", cmd,
+                                            names[m], types[m], file);
+      size_t iword = 1;
+      while (iword < words.size())
+        iword += parse_property(types[m], types[m], words, iword, where);
+    }
+  }
+  for (size_t m = 0; m < names.size(); m++)
+    if (!found[m])
+      error->all(FLERR, "Illegal {} command: material '{}' not found in {}", cmd, names[m], file);
+}
