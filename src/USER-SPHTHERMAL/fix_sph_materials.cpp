@@ -47,6 +47,13 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
   if (narg < 4)
     error->all(FLERR, "Illegal {} command: expected 'type <I> <property> ...' or 'file ...'", cmd);
 
+  // global array, one row per type: rho0, cv (for input scripts: masses, set sph/cv)
+  array_flag = 1;
+  size_array_rows = ntypes;
+  size_array_cols = 2;
+  extarray = 0;
+  global_freq = 1;
+
   std::vector<std::string> words(arg + 3, arg + narg);
   size_t iword = 0;
   while (iword < words.size()) {
@@ -101,6 +108,15 @@ FixSPHMaterials::~FixSPHMaterials()
 int FixSPHMaterials::setmask()
 {
   return 0;
+}
+
+/* ----------------------------------------------------------------------
+   row = type - 1; column 0: rho0, 1: cv (-1 when not given)
+------------------------------------------------------------------------- */
+
+double FixSPHMaterials::compute_array(int row, int column)
+{
+  return (column == 0) ? rho0_type[row + 1] : cv_type[row + 1];
 }
 
 /* ---------------------------------------------------------------------- */

@@ -27,6 +27,7 @@ class FixSPHMaterials : public Fix {
   FixSPHMaterials(class LAMMPS *, int, char **);
   ~FixSPHMaterials() override;
   int setmask() override;
+  double compute_array(int, int) override;
 
   // the hub of this run: error (naming 'who') when there is none or several
   static FixSPHMaterials *find(class LAMMPS *, const char *who);
