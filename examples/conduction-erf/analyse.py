@@ -28,6 +28,7 @@ def main():
     p.add_argument("--alpha", type=float, default=1.0e-3, help="k / (rho cv)")
     p.add_argument("--x0", type=float, default=0.5)
     p.add_argument("--png", default="erf.png")
+    p.add_argument("--label", default="pair sph/cleary/heat")
     p.add_argument("--max-mean-error", type=float, help="fail (exit 1) above this mean error, %%")
     p.add_argument("--max-error", type=float, help="fail (exit 1) above this max error, %%")
     args = p.parse_args()
@@ -42,8 +43,8 @@ def main():
         err = 100.0 * np.abs(c["c_T"] - exact(c["x"], t, args.alpha, args.x0))
         worst_mean, worst_max = max(worst_mean, err.mean()), max(worst_max, err.max())
         print(f"{t:8.3f} {err.mean():13.4f} {err.max():12.4f}")
-    print(f"mean error (largest over the output times): {worst_mean:.4f} % of the jump")
-    print(f"max error  (largest over the output times): {worst_max:.4f} % of the jump")
+    print(f"{args.label}: mean error (largest over the output times): {worst_mean:.4f} % of the jump")
+    print(f"{args.label}: max error  (largest over the output times): {worst_max:.4f} % of the jump")
 
     import matplotlib
     matplotlib.use("Agg")
@@ -57,7 +58,8 @@ def main():
         ax.plot(c["x"], c["c_T"], ".", color=colour, ms=3, label=f"SPH, t = {t:g} s")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("T")
-    ax.set_title(f"erf slab: mean error {worst_mean:.3f} %, max {worst_max:.3f} %")
+    ax.set_title(f"erf slab, {args.label}: mean error {worst_mean:.3f} %, max {worst_max:.3f} %",
+                 fontsize=9)
     ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(args.png, dpi=120)
