@@ -350,3 +350,16 @@ double PairSPHClearyHeat::memory_usage()
 {
   return Pair::memory_usage() + (double) nmax * sizeof(double);
 }
+
+/* ----------------------------------------------------------------------
+   settings for styles that evaluate the same kernel (compute sph/heatflux/atom)
+------------------------------------------------------------------------- */
+
+void *PairSPHClearyHeat::extract(const char *name, int &dim)
+{
+  dim = 0;
+  if (strcmp(name, "kernel_kind") == 0) return (void *) &kernel_kind;
+  if (strcmp(name, "cutoff") == 0) return (void *) &cut_global;
+  if (strcmp(name, "eta_factor") == 0) return (void *) &eta_factor;
+  return nullptr;
+}

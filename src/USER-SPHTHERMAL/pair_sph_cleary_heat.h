@@ -31,6 +31,7 @@ class PairSPHClearyHeat : public Pair {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   double memory_usage() override;
+  void *extract(const char *, int &) override;
 
  protected:
   int kernel_kind;            // SPHK_* of sph_kernels.h
