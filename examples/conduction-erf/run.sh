@@ -7,12 +7,7 @@
 # ranks), OUT (output directory, default ./out), PYTHON (with numpy).
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
-LMP=${LMP:-$root/build/lmp}
-PLUGIN=${PLUGIN:-$root/build/sphthermalplugin.so}
-PYTHON=${PYTHON:-$("$root/tools/find-python.sh")}
-OUT=${OUT:-$here/out}
-NP=${NP:-1}
+. "$here/../common.sh"
 
 if [ "${1:-}" = quick ]; then
   size="-var nx 40 -var ny 10 -var dt 0.01"
@@ -25,10 +20,6 @@ else
   limits="--max-mean-error 0.3"
 fi
 
-run=""
-[ "$NP" -gt 1 ] && run="mpirun --oversubscribe -np $NP"
-mkdir -p "$OUT"
-cd "$OUT"
 rm -f erf.dump
 $run "$LMP" -in "$here/in.erf" -var plugin "$PLUGIN" $size -log log.erf
 "$PYTHON" "$here/analyse.py" erf.dump --dt $dt --png erf.png $limits

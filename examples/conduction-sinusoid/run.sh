@@ -5,12 +5,7 @@
 # Environment: LMP, PLUGIN, NP (MPI ranks), OUT (default ./out), PYTHON.
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
-LMP=${LMP:-$root/build/lmp}
-PLUGIN=${PLUGIN:-$root/build/sphthermalplugin.so}
-PYTHON=${PYTHON:-$("$root/tools/find-python.sh")}
-OUT=${OUT:-$here/out}
-NP=${NP:-1}
+. "$here/../common.sh"
 
 if [ "${1:-}" = quick ]; then
   n=20 dt=0.001
@@ -20,10 +15,6 @@ else
   limits="--max-error 1.4 --max-direct-error 3.1"    # Cleary 1998: 1.4 % (energy), 3.1 % (direct)
 fi
 
-run=""
-[ "$NP" -gt 1 ] && run="mpirun --oversubscribe -np $NP"
-mkdir -p "$OUT"
-cd "$OUT"
 rm -f sinusoid.flux sinusoid.dump
 $run "$LMP" -in "$here/in.sinusoid" -var plugin "$PLUGIN" -var n $n -var dt $dt -log log.sinusoid
 "$PYTHON" "$here/analyse.py" sinusoid --n $n --dt $dt --png sinusoid.png $limits

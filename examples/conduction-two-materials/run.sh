@@ -6,16 +6,7 @@
 # Environment: LMP, PLUGIN, NP (MPI ranks), OUT (default ./out), PYTHON.
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
-LMP=${LMP:-$root/build/lmp}
-PLUGIN=${PLUGIN:-$root/build/sphthermalplugin.so}
-PYTHON=${PYTHON:-$("$root/tools/find-python.sh")}
-OUT=${OUT:-$here/out}
-NP=${NP:-1}
-run=""
-[ "$NP" -gt 1 ] && run="mpirun --oversubscribe -np $NP"
-mkdir -p "$OUT"
-cd "$OUT"
+. "$here/../common.sh"
 
 lammps() {    # name, then -var arguments
   name=$1
