@@ -45,8 +45,10 @@ class Layer:
         self.rho, self.cv, self.T0 = rho, cv, T0
 
 
-def solve(layers, length, cells, times, left=None, right=None):
-    """left/right: None (adiabatic) or a temperature held at that end."""
+def solve(layers, length, cells, times, left=None, right=None, left_flux=None):
+    """left/right: None (adiabatic) or a temperature held at that end;
+    left_flux: None, a heat flux q into the slab at x = 0, or a function
+    of the cell temperatures giving it (convection)."""
     dx = length / cells
     x = (np.arange(cells) + 0.5) * dx
     owner = np.zeros(cells, dtype=int)
@@ -77,6 +79,8 @@ def solve(layers, length, cells, times, left=None, right=None):
                 dT[0] += 2.0 * k[0] / dx * (left - T[0])
             if right is not None:
                 dT[-1] += 2.0 * k[-1] / dx * (right - T[-1])
+            if left_flux is not None:
+                dT[0] += left_flux(T) if callable(left_flux) else left_flux
             T = T + dt * dT / (capacity * dx)
             t += dt
         results.append(T.copy())

@@ -1,0 +1,150 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   fix sph/surface/flux: a prescribed heat flux into a group of surface
+   particles (Xu, seed 002), or a convective one, q = h (T_inf - T).
+------------------------------------------------------------------------- */
+
+#include "fix_sph_surface_flux.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+/* ---------------------------------------------------------------------- */
+
+FixSPHSurfaceFlux::FixSPHSurfaceFlux(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), convective(0), q_given(0.0), h_transfer(0.0), t_ambient(0.0), area(0.0),
+    spacing(0.0), dt_half(0.0), rate_previous(0.0), energy(0.0)
+{
+  if (!atom->esph_flag || !atom->cv_flag)
+    error->all(FLERR, "Fix sph/surface/flux requires atom style sph (esph, desph, cv)");
+  if (narg < 4)
+    error->all(FLERR,
+               "Illegal fix sph/surface/flux command: expected 'flux <q>' or 'convection <h> <T_inf>'");
+
+  int iarg = 3;
+  if (strcmp(arg[iarg], "flux") == 0) {
+    if (iarg + 1 >= narg)
+      error->all(FLERR, "Illegal fix sph/surface/flux command: missing value after 'flux'");
+    q_given = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    iarg += 2;
+  } else if (strcmp(arg[iarg], "convection") == 0) {
+    if (iarg + 2 >= narg)
+      error->all(FLERR, "Illegal fix sph/surface/flux command: 'convection' needs <h> <T_inf>");
+    convective = 1;
+    h_transfer = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    t_ambient = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+    if (h_transfer < 0.0)
+      error->all(FLERR, "Illegal fix sph/surface/flux command: heat transfer coefficient {} must be >= 0",
+                 arg[iarg + 1]);
+    iarg += 3;
+  } else
+    error->all(FLERR,
+               "Illegal fix sph/surface/flux command: unknown keyword '{}' (flux or convection)",
+               arg[iarg]);
+
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "spacing") == 0) {
+      if (iarg + 1 >= narg)
+        error->all(FLERR, "Illegal fix sph/surface/flux command: missing value after 'spacing'");
+      spacing = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (spacing <= 0.0)
+        error->all(FLERR, "Illegal fix sph/surface/flux command: spacing {} must be > 0",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else
+      error->all(FLERR, "Illegal fix sph/surface/flux command: unknown keyword '{}'", arg[iarg]);
+  }
+  if (spacing <= 0.0)
+    error->all(FLERR,
+               "Illegal fix sph/surface/flux command: 'spacing <dx>' is required (the surface area "
+               "of a particle is dx^(d-1))");
+
+  scalar_flag = 1;
+  extscalar = 1;
+  global_freq = 1;
+  restart_global = 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixSPHSurfaceFlux::setmask()
+{
+  return POST_FORCE;
+}
+
+void FixSPHSurfaceFlux::init()
+{
+  dt_half = 0.5 * update->dt;
+  area = pow(spacing, domain->dimension - 1);
+}
+
+void FixSPHSurfaceFlux::setup(int /*vflag*/)
+{
+  add_flux(1);
+}
+
+void FixSPHSurfaceFlux::post_force(int /*vflag*/)
+{
+  add_flux(0);
+}
+
+/* ----------------------------------------------------------------------
+   desph_i += q_i A / m_i; the heat added is tallied with the half-step
+   weights of fix sph and fix sph/stationary (see fix sph/wall/isothermal),
+   so it equals the change of sum(m esph) it causes
+------------------------------------------------------------------------- */
+
+void FixSPHSurfaceFlux::add_flux(int first)
+{
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+  const double *const mass = atom->mass;
+  const double *const rmass = atom->rmass;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  double *const desph = atom->desph;
+
+  double rate_local = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double q = convective ? h_transfer * (t_ambient - esph[i] / cv[i]) : q_given;
+    desph[i] += q * area / (rmass ? rmass[i] : mass[type[i]]);
+    rate_local += q * area;
+  }
+  double rate;
+  MPI_Allreduce(&rate_local, &rate, 1, MPI_DOUBLE, MPI_SUM, world);
+  if (!first) energy += dt_half * (rate_previous + rate);
+  rate_previous = rate;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixSPHSurfaceFlux::compute_scalar()
+{
+  return energy;
+}
+
+void FixSPHSurfaceFlux::write_restart(FILE *fp)
+{
+  if (comm->me == 0) {
+    int size = sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(&energy, sizeof(double), 1, fp);
+  }
+}
+
+void FixSPHSurfaceFlux::restart(char *buf)
+{
+  energy = ((double *) buf)[0];
+}
