@@ -130,3 +130,14 @@ void FixSPHWallDirichlet::unpack_forward_comm(int n, int first, double *buf)
 {
   for (int k = 0; k < n; k++) atom->esph[first + k] = buf[k];
 }
+
+/* ----------------------------------------------------------------------
+   t_wall: pair sph/cleary/heat evaluates the dummies' conductivity there
+------------------------------------------------------------------------- */
+
+void *FixSPHWallDirichlet::extract(const char *name, int &dim)
+{
+  dim = 0;
+  if (strcmp(name, "t_wall") == 0) return (void *) &t_wall;
+  return nullptr;
+}

@@ -26,6 +26,7 @@ class FixSPHWallDirichlet : public Fix {
   void pre_force(int) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
+  void *extract(const char *, int &) override;
 
  protected:
   double t_wall;

@@ -15,6 +15,7 @@
 #include "fix_sph_materials.h"
 #include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "sph_conduction.h"
@@ -97,7 +98,10 @@ template <int KERNEL, int MEAN> void PairSPHClearyHeat::eval_mean()
 
 /* ----------------------------------------------------------------------
    conductivity of every owned and ghost atom at its temperature
-   (ghosts carry esph and cv, so no communication is needed)
+   (ghosts carry esph, cv and mask, so no communication is needed); a dummy
+   of fix sph/wall/dirichlet takes the wall temperature, since its
+   extrapolated one is no state of the material and can lie far outside the
+   range of the law (k = exp(4 T) would choke the wall)
 ------------------------------------------------------------------------- */
 
 void PairSPHClearyHeat::update_conductivity()
@@ -110,9 +114,14 @@ void PairSPHClearyHeat::update_conductivity()
   const double *const esph = atom->esph;
   const double *const cv = atom->cv;
   const int *const type = atom->type;
+  const int *const mask = atom->mask;
   const int nall = atom->nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++)
-    conductivity[i] = sphm_law_eval(materials->conductivity(type[i]), esph[i] / cv[i]);
+  for (int i = 0; i < nall; i++) {
+    double temperature = esph[i] / cv[i];
+    for (const auto &wall : dummy_walls)
+      if (mask[i] & wall.first) temperature = wall.second;
+    conductivity[i] = sphm_law_eval(materials->conductivity(type[i]), temperature);
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -283,6 +292,14 @@ void PairSPHClearyHeat::init_style()
                  "sph/materials",
                  i);
   conductivity_varies = !materials->conductivity_constant();
+
+  dummy_walls.clear();
+  for (int ifix = 0; ifix < modify->nfix; ifix++)
+    if (strcmp(modify->fix[ifix]->style, "sph/wall/dirichlet") == 0) {
+      int dim;
+      const double *t_wall = (const double *) modify->fix[ifix]->extract("t_wall", dim);
+      dummy_walls.emplace_back(modify->fix[ifix]->groupbit, *t_wall);
+    }
 
   kernel = sphk_make(kernel_kind, domain->dimension, cut_global);
   const double eta = eta_factor * kernel.h;

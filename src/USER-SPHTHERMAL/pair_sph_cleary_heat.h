@@ -15,6 +15,9 @@ PairStyle(sph/cleary/heat,PairSPHClearyHeat);
 #include "pair.h"
 #include "sph_kernels.h"
 
+#include <utility>
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class PairSPHClearyHeat : public Pair {
@@ -45,6 +48,8 @@ class PairSPHClearyHeat : public Pair {
   double **conductance;       // per type pair, when no conductivity varies
   double *conductivity;       // per atom (owned and ghost), when some varies
   int nmax;
+  // dummy particles of fix sph/wall/dirichlet: group bit and wall temperature
+  std::vector<std::pair<int, double>> dummy_walls;
 
   void allocate();
   void update_conductivity();
