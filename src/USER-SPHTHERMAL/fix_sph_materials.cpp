@@ -28,20 +28,26 @@ static const char cmd[] = "fix sph/materials";
 /* ---------------------------------------------------------------------- */
 
 FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), conductivity_law(nullptr), conductivity_set(nullptr), cv_type(nullptr),
-    rho0_type(nullptr)
+    Fix(lmp, narg, arg), eos_type(nullptr), eos_set(nullptr), cv_type(nullptr),
+    rho0_type(nullptr), expansion_type(nullptr)
 {
   ntypes = atom->ntypes;
-  memory->create(conductivity_set, ntypes + 1, "sph/materials:conductivity_set");
+  conductivity_laws.resize(ntypes + 1);
+  viscosity_laws.resize(ntypes + 1);
+  for (int i = 0; i <= ntypes; i++) {
+    memset(&conductivity_laws[i].law, 0, sizeof(sphm_law));
+    memset(&viscosity_laws[i].law, 0, sizeof(sphm_law));
+    conductivity_laws[i].set = viscosity_laws[i].set = 0;
+  }
+  eos_type = new sphe_eos[ntypes + 1];
+  memset(eos_type, 0, (ntypes + 1) * sizeof(sphe_eos));
+  memory->create(eos_set, ntypes + 1, "sph/materials:eos_set");
   memory->create(cv_type, ntypes + 1, "sph/materials:cv");
   memory->create(rho0_type, ntypes + 1, "sph/materials:rho0");
-  conductivity_law = new sphm_law[ntypes + 1];
-  table_t.resize(ntypes + 1);
-  table_p.resize(ntypes + 1);
+  memory->create(expansion_type, ntypes + 1, "sph/materials:expansion");
   for (int i = 0; i <= ntypes; i++) {
-    conductivity_set[i] = 0;
-    cv_type[i] = rho0_type[i] = -1.0;
-    memset(&conductivity_law[i], 0, sizeof(sphm_law));
+    eos_set[i] = 0;
+    cv_type[i] = rho0_type[i] = expansion_type[i] = -1.0;
   }
 
   if (narg < 4)
@@ -91,16 +97,26 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
     } else
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, words[iword]);
   }
+
+  // an equation of state is relative to the reference density of its type
+  for (int i = 1; i <= ntypes; i++) {
+    if (!eos_set[i]) continue;
+    if (rho0_type[i] <= 0.0)
+      error->all(FLERR, "Illegal {} command: type {} has an equation of state but no rho0", cmd,
+                 i);
+    eos_type[i].rho0 = rho0_type[i];
+  }
 }
 
 /* ---------------------------------------------------------------------- */
 
 FixSPHMaterials::~FixSPHMaterials()
 {
-  delete[] conductivity_law;
-  memory->destroy(conductivity_set);
+  delete[] eos_type;
+  memory->destroy(eos_set);
   memory->destroy(cv_type);
   memory->destroy(rho0_type);
+  memory->destroy(expansion_type);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -135,15 +151,10 @@ FixSPHMaterials *FixSPHMaterials::find(LAMMPS *lmp, const char *who)
   return hub;
 }
 
-const sphm_law *FixSPHMaterials::conductivity(int type) const
+int FixSPHMaterials::constant(const std::vector<MaterialLaw> &laws)
 {
-  return conductivity_set[type] ? &conductivity_law[type] : nullptr;
-}
-
-int FixSPHMaterials::conductivity_constant() const
-{
-  for (int i = 1; i <= ntypes; i++)
-    if (conductivity_set[i] && conductivity_law[i].kind != SPHM_CONSTANT) return 0;
+  for (const auto &slot : laws)
+    if (slot.set && slot.law.kind != SPHM_CONSTANT) return 0;
   return 1;
 }
 
@@ -165,56 +176,113 @@ int FixSPHMaterials::parse_property(int ilo, int ihi, const std::vector<std::str
     return 2;
   }
 
-  if (name == "conductivity") {
-    if (left < 1) error->all(FLERR, "Illegal {}: missing law after 'conductivity'", where);
-    const int kind = sphm_law_lookup(words[iword + 1].c_str());
-    if (kind < 0)
-      error->all(FLERR,
-                 "Illegal {}: unknown conductivity law '{}' (constant, linear, exponential or "
-                 "table)",
-                 where, words[iword + 1]);
-    sphm_law law;
-    memset(&law, 0, sizeof(law));
-    law.kind = kind;
-    int ncoeffs = sphm_law_ncoeffs(kind);
-    std::vector<double> t, p;
-    if (kind == SPHM_TABLE) {
-      if (left < 2) error->all(FLERR, "Illegal {}: missing number of table points", where);
-      const int n = utils::inumeric(FLERR, words[iword + 2].c_str(), false, lmp);
-      if (n < 2) error->all(FLERR, "Illegal {}: a conductivity table needs at least 2 points", where);
-      if (left < 2 + 2 * (size_t) n)
-        error->all(FLERR, "Illegal {}: conductivity table of {} points needs {} values", where, n,
-                   2 * n);
-      for (int k = 0; k < n; k++) {
-        t.push_back(utils::numeric(FLERR, words[iword + 3 + 2 * k].c_str(), false, lmp));
-        p.push_back(positive(words[iword + 4 + 2 * k], "conductivity", where, true));
-        if (k > 0 && t[k] <= t[k - 1])
-          error->all(FLERR, "Illegal {}: conductivity table temperatures must increase ({} after {})",
-                     where, words[iword + 3 + 2 * k], words[iword + 1 + 2 * k]);
-      }
-      ncoeffs = 1 + 2 * n;
-    } else {
-      if (left < 1 + (size_t) ncoeffs)
-        error->all(FLERR, "Illegal {}: conductivity {} needs {} coefficient(s)", where,
-                   words[iword + 1], ncoeffs);
-      for (int k = 0; k < ncoeffs; k++)
-        law.c[k] = (k == 0) ? positive(words[iword + 2], "conductivity", where, true)
-                            : utils::numeric(FLERR, words[iword + 2 + k].c_str(), false, lmp);
-    }
-    for (int i = ilo; i <= ihi; i++) {
-      table_t[i] = t;
-      table_p[i] = p;
-      conductivity_law[i] = law;
-      conductivity_law[i].ntable = (int) t.size();
-      conductivity_law[i].table_t = table_t[i].data();
-      conductivity_law[i].table_p = table_p[i].data();
-      conductivity_set[i] = 1;
-    }
-    return 2 + ncoeffs;
+  if (name == "expansion") {
+    if (left < 1) error->all(FLERR, "Illegal {}: missing value after '{}'", where, name);
+    const double value = utils::numeric(FLERR, words[iword + 1].c_str(), false, lmp);
+    for (int i = ilo; i <= ihi; i++) expansion_type[i] = value;
+    return 2;
   }
+  if (name == "conductivity") return parse_law(conductivity_laws, ilo, ihi, words, iword, where);
+  if (name == "viscosity") return parse_law(viscosity_laws, ilo, ihi, words, iword, where);
+  if (name == "eos") return parse_eos(ilo, ihi, words, iword, where);
 
-  error->all(FLERR, "Illegal {}: unknown property '{}' (conductivity, cv or rho0)", where, name);
+  error->all(FLERR,
+             "Illegal {}: unknown property '{}' (conductivity, viscosity, eos, cv, rho0 or "
+             "expansion)",
+             where, name);
   return 0;
+}
+
+/* ----------------------------------------------------------------------
+   '<property> <law> <coefficients>' of types ilo..ihi (property:
+   conductivity or viscosity, both >= 0); returns the number of words taken
+------------------------------------------------------------------------- */
+
+int FixSPHMaterials::parse_law(std::vector<MaterialLaw> &laws, int ilo, int ihi,
+                               const std::vector<std::string> &words, size_t iword,
+                               const std::string &where)
+{
+  const std::string &what = words[iword];
+  const size_t left = words.size() - iword - 1;
+  if (left < 1) error->all(FLERR, "Illegal {}: missing law after '{}'", where, what);
+  const int kind = sphm_law_lookup(words[iword + 1].c_str());
+  if (kind < 0)
+    error->all(FLERR, "Illegal {}: unknown {} law '{}' (constant, linear, exponential or table)",
+               where, what, words[iword + 1]);
+  sphm_law law;
+  memset(&law, 0, sizeof(law));
+  law.kind = kind;
+  int ncoeffs = sphm_law_ncoeffs(kind);
+  std::vector<double> t, p;
+  if (kind == SPHM_TABLE) {
+    if (left < 2) error->all(FLERR, "Illegal {}: missing number of table points", where);
+    const int n = utils::inumeric(FLERR, words[iword + 2].c_str(), false, lmp);
+    if (n < 2) error->all(FLERR, "Illegal {}: a {} table needs at least 2 points", where, what);
+    if (left < 2 + 2 * (size_t) n)
+      error->all(FLERR, "Illegal {}: {} table of {} points needs {} values", where, what, n, 2 * n);
+    for (int k = 0; k < n; k++) {
+      t.push_back(utils::numeric(FLERR, words[iword + 3 + 2 * k].c_str(), false, lmp));
+      p.push_back(positive(words[iword + 4 + 2 * k], what, where, true));
+      if (k > 0 && t[k] <= t[k - 1])
+        error->all(FLERR, "Illegal {}: {} table temperatures must increase ({} after {})", where,
+                   what, words[iword + 3 + 2 * k], words[iword + 1 + 2 * k]);
+    }
+    ncoeffs = 1 + 2 * n;
+  } else {
+    if (left < 1 + (size_t) ncoeffs)
+      error->all(FLERR, "Illegal {}: {} {} needs {} coefficient(s)", where, what,
+                 words[iword + 1], ncoeffs);
+    for (int k = 0; k < ncoeffs; k++)
+      law.c[k] = (k == 0) ? positive(words[iword + 2], what, where, true)
+                          : utils::numeric(FLERR, words[iword + 2 + k].c_str(), false, lmp);
+  }
+  for (int i = ilo; i <= ihi; i++) {
+    MaterialLaw &slot = laws[i];
+    slot.table_t = t;
+    slot.table_p = p;
+    slot.law = law;
+    slot.law.ntable = (int) t.size();
+    slot.law.table_t = slot.table_t.data();
+    slot.law.table_p = slot.table_p.data();
+    slot.set = 1;
+  }
+  return 2 + ncoeffs;
+}
+
+/* ----------------------------------------------------------------------
+   'eos tait <c0> <gamma> [background <P>]' or 'eos linear <c0> [background <P>]'
+------------------------------------------------------------------------- */
+
+int FixSPHMaterials::parse_eos(int ilo, int ihi, const std::vector<std::string> &words,
+                               size_t iword, const std::string &where)
+{
+  const size_t left = words.size() - iword - 1;
+  if (left < 1) error->all(FLERR, "Illegal {}: missing equation of state after 'eos'", where);
+  const int kind = sphe_lookup(words[iword + 1].c_str());
+  if (kind < 0)
+    error->all(FLERR, "Illegal {}: unknown equation of state '{}' (tait or linear)", where,
+               words[iword + 1]);
+  const int ncoeffs = sphe_ncoeffs(kind);
+  if (left < 1 + (size_t) ncoeffs)
+    error->all(FLERR, "Illegal {}: eos {} needs {} coefficient(s)", where, words[iword + 1],
+               ncoeffs);
+  sphe_eos eos;
+  memset(&eos, 0, sizeof(eos));
+  eos.kind = kind;
+  eos.c0 = positive(words[iword + 2], "speed of sound", where, false);
+  if (kind == SPHE_TAIT) eos.gamma = positive(words[iword + 3], "gamma", where, false);
+  int taken = 2 + ncoeffs;
+  if (left >= (size_t) taken && words[iword + taken] == "background") {
+    if (left < (size_t) taken + 1)
+      error->all(FLERR, "Illegal {}: missing value after 'background'", where);
+    eos.p_background = utils::numeric(FLERR, words[iword + taken + 1].c_str(), false, lmp);
+    taken += 2;
+  }
+  for (int i = ilo; i <= ihi; i++) {
+    eos_type[i] = eos;
+    eos_set[i] = 1;
+  }
+  return taken;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -13,6 +13,7 @@ FixStyle(sph/materials,FixSPHMaterials);
 #define LMP_FIX_SPH_MATERIALS_H
 
 #include "fix.h"
+#include "sph_eos.h"
 #include "sph_material_laws.h"
 
 #include <string>
@@ -21,7 +22,8 @@ FixStyle(sph/materials,FixSPHMaterials);
 namespace LAMMPS_NS {
 
 // The package's one place for per-type material properties: every style
-// that needs a conductivity (and later viscosity, expansion, EOS) asks it.
+// that needs a conductivity, viscosity, equation of state or expansion
+// coefficient asks it.
 class FixSPHMaterials : public Fix {
  public:
   FixSPHMaterials(class LAMMPS *, int, char **);
@@ -32,23 +34,43 @@ class FixSPHMaterials : public Fix {
   // the hub of this run: error (naming 'who') when there is none or several
   static FixSPHMaterials *find(class LAMMPS *, const char *who);
 
-  // conductivity law of a type, nullptr when none was given
-  const sphm_law *conductivity(int type) const;
-  // 1 when every type has a constant conductivity
-  int conductivity_constant() const;
-  // specific heat and reference density of a type, -1 when not given
+  // conductivity and viscosity laws of a type, nullptr when none was given
+  const sphm_law *conductivity(int type) const { return law_of(conductivity_laws, type); }
+  const sphm_law *viscosity(int type) const { return law_of(viscosity_laws, type); }
+  // 1 when every type with the property has a constant law
+  int conductivity_constant() const { return constant(conductivity_laws); }
+  int viscosity_constant() const { return constant(viscosity_laws); }
+  // equation of state of a type (rho0 filled in), nullptr when none was given
+  const sphe_eos *eos(int type) const { return eos_set[type] ? &eos_type[type] : nullptr; }
+  // specific heat, reference density, expansion coefficient; -1 when not given
   double cv(int type) const { return cv_type[type]; }
   double rho0(int type) const { return rho0_type[type]; }
+  double expansion(int type) const { return expansion_type[type]; }
 
  protected:
+  // a law of one type: the C description and the storage of its table
+  struct MaterialLaw {
+    sphm_law law;
+    std::vector<double> table_t, table_p;
+    int set;
+  };
   int ntypes;
-  sphm_law *conductivity_law;
-  int *conductivity_set;
-  double *cv_type, *rho0_type;
-  std::vector<std::vector<double>> table_t, table_p;    // per type
+  std::vector<MaterialLaw> conductivity_laws, viscosity_laws;    // index: type
+  sphe_eos *eos_type;
+  int *eos_set;
+  double *cv_type, *rho0_type, *expansion_type;
 
+  static const sphm_law *law_of(const std::vector<MaterialLaw> &laws, int type)
+  {
+    return laws[type].set ? &laws[type].law : nullptr;
+  }
+  static int constant(const std::vector<MaterialLaw> &laws);
   int parse_property(int ilo, int ihi, const std::vector<std::string> &words, size_t iword,
                      const std::string &where);
+  int parse_law(std::vector<MaterialLaw> &laws, int ilo, int ihi,
+                const std::vector<std::string> &words, size_t iword, const std::string &where);
+  int parse_eos(int ilo, int ihi, const std::vector<std::string> &words, size_t iword,
+                const std::string &where);
   void read_file(const std::string &file, const std::vector<std::string> &names,
                  const std::vector<int> &types);
   double positive(const std::string &word, const std::string &what, const std::string &where,

@@ -1,0 +1,171 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   fix sph/wall/adami: wall particles of weakly compressible flow with the
+   pressure and no-slip velocity extrapolated from the fluid (Adami, Hu &
+   Adams 2012; seed 003 eqs 8-9, with the body-force term of Adami kept):
+     P_w = (sum_f P_f W_wf + (g - a_w) . sum_f rho_f r_wf W_wf) / sum_f W_wf
+     rho_w from P_w by the wall type's equation of state
+     vest_w = 2 v_w - sum_f v_f W_wf / sum_f W_wf   (v_w: the wall's own v)
+   over the fluid neighbours f (particles of no sph/wall/adami fix).
+------------------------------------------------------------------------- */
+
+#include "fix_sph_wall_adami.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_sph_materials.h"
+#include "force.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+#include "pair.h"
+#include "sph_kernels.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static const char cmd[] = "fix sph/wall/adami";
+
+/* ---------------------------------------------------------------------- */
+
+FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), wall_groupbit(0), kernel_kind(0), cutoff(0.0), materials(nullptr),
+    list(nullptr)
+{
+  if (!atom->rho_flag || !atom->vest_flag)
+    error->all(FLERR, "Fix sph/wall/adami requires atom style sph (rho, vest)");
+  body[0] = body[1] = body[2] = 0.0;
+  int iarg = 3;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "body") == 0) {
+      if (iarg + 3 >= narg)
+        error->all(FLERR, "Illegal {} command: 'body' needs 3 values (gx gy gz)", cmd);
+      for (int k = 0; k < 3; k++) body[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
+      iarg += 4;
+    } else
+      error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
+  }
+  comm_forward = 4;
+}
+
+int FixSPHWallAdami::setmask()
+{
+  return PRE_FORCE;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHWallAdami::init()
+{
+  // the kernel and its support are those of the flow pair style
+  Pair *pair = force->pair_match("^sph/harmonic/visc", 0);
+  if (!pair) error->all(FLERR, "Fix sph/wall/adami requires pair style sph/harmonic/visc");
+  int dim;
+  kernel_kind = *(int *) pair->extract("kernel_kind", dim);
+  cutoff = *(double *) pair->extract("cutoff", dim);
+  materials = FixSPHMaterials::find(lmp, "Fix sph/wall/adami");
+  if (!comm->ghost_velocity)
+    error->all(FLERR, "Fix sph/wall/adami requires ghost velocities (comm_modify vel yes)");
+
+  wall_groupbit = 0;
+  for (int ifix = 0; ifix < modify->nfix; ifix++)
+    if (strcmp(modify->fix[ifix]->style, "sph/wall/adami") == 0)
+      wall_groupbit |= modify->fix[ifix]->groupbit;
+
+  int irequest = neighbor->request(this, instance_me);
+  neighbor->requests[irequest]->pair = 0;
+  neighbor->requests[irequest]->fix = 1;
+  neighbor->requests[irequest]->half = 0;
+  neighbor->requests[irequest]->full = 1;
+}
+
+void FixSPHWallAdami::init_list(int /*id*/, NeighList *ptr)
+{
+  list = ptr;
+}
+
+void FixSPHWallAdami::setup_pre_force(int vflag)
+{
+  pre_force(vflag);
+}
+
+/* ----------------------------------------------------------------------
+   density and viscous velocity of the owned wall particles, then of their
+   ghost copies; a wall particle with no fluid neighbour is at rest density
+------------------------------------------------------------------------- */
+
+void FixSPHWallAdami::pre_force(int /*vflag*/)
+{
+  const double *const *const x = atom->x;
+  const double *const *const v = atom->v;
+  double *const *const vest = atom->vest;
+  double *const rho = atom->rho;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  const sphk_kernel kernel = sphk_make(kernel_kind, domain->dimension, cutoff);
+  const double cutsq = cutoff * cutoff;
+
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    if (!(mask[i] & groupbit)) continue;
+    double weight = 0.0, weighted_p = 0.0, hydrostatic = 0.0;
+    double weighted_v[3] = {0.0, 0.0, 0.0};
+    const int *const jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (mask[j] & wall_groupbit) continue;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const double rsq = dx * dx + dy * dy + dz * dz;
+      if (rsq >= cutsq) continue;
+      const double w = sphk_w(&kernel, sqrt(rsq));
+      weight += w;
+      weighted_p += w * sphe_pressure(materials->eos(type[j]), rho[j]);
+      hydrostatic += w * rho[j] * (body[0] * dx + body[1] * dy + body[2] * dz);
+      for (int k = 0; k < 3; k++) weighted_v[k] += w * v[j][k];
+    }
+    const sphe_eos *eos = materials->eos(type[i]);
+    if (weight > 0.0) {
+      rho[i] = sphe_density(eos, (weighted_p + hydrostatic) / weight);
+      for (int k = 0; k < 3; k++) vest[i][k] = 2.0 * v[i][k] - weighted_v[k] / weight;
+    } else {
+      rho[i] = sphe_density(eos, eos->p_background);
+      for (int k = 0; k < 3; k++) vest[i][k] = v[i][k];
+    }
+  }
+  comm->forward_comm_fix(this);
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixSPHWallAdami::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/,
+                                       int * /*pbc*/)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int i = send[k];
+    buf[m++] = atom->rho[i];
+    buf[m++] = atom->vest[i][0];
+    buf[m++] = atom->vest[i][1];
+    buf[m++] = atom->vest[i][2];
+  }
+  return m;
+}
+
+void FixSPHWallAdami::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    atom->rho[i] = buf[m++];
+    atom->vest[i][0] = buf[m++];
+    atom->vest[i][1] = buf[m++];
+    atom->vest[i][2] = buf[m++];
+  }
+}

@@ -1,0 +1,489 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   pair sph/harmonic/visc: continuity and momentum of weakly compressible
+   SPH in one pass per pair (sph_flow.h): the pressure forms of seeds 000,
+   003 and 004 with their continuity equations, viscosity with a harmonic
+   (000 eq 4, 003 eq 7) or arithmetic (004 eq 12) mean of the per-type,
+   optionally temperature-dependent viscosities, equations of state and
+   materials from fix sph/materials; optional density diffusion (003 eq 5).
+------------------------------------------------------------------------- */
+
+#include "pair_sph_harmonic_visc.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_sph_materials.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "sph_flow.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+static const char cmd[] = "pair_style sph/harmonic/visc";
+
+/* ---------------------------------------------------------------------- */
+
+PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
+    Pair(lmp), kernel_kind(-1), pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI),
+    cut_global(0.0), xi(SPHF_XI_CLEARY), eta_factor(0.1), delta(0.1), eta2(0.0),
+    materials(nullptr), viscosity_varies(0), wall_groupbit(0), pressure(nullptr),
+    viscosity(nullptr), mass_of(nullptr), nmax(0)
+{
+  restartinfo = 1;
+  single_enable = 0;
+  memset(&kernel, 0, sizeof(kernel));
+}
+
+PairSPHHarmonicVisc::~PairSPHHarmonicVisc()
+{
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+  }
+  memory->destroy(pressure);
+  memory->destroy(viscosity);
+  memory->destroy(mass_of);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  update_atom_state();
+
+  switch (kernel_kind) {
+    case SPHK_LUCY:
+      eval_kernel<SPHK_LUCY>();
+      break;
+    case SPHK_CUBIC:
+      eval_kernel<SPHK_CUBIC>();
+      break;
+    case SPHK_QUINTIC:
+      eval_kernel<SPHK_QUINTIC>();
+      break;
+    case SPHK_WENDLAND:
+      eval_kernel<SPHK_WENDLAND>();
+      break;
+  }
+  if (vflag_fdotr) virial_fdotr_compute();
+}
+
+template <int KERNEL> void PairSPHHarmonicVisc::eval_kernel()
+{
+  switch (pressure_form) {
+    case SPHF_P_SYMMETRIC:
+      eval_pressure<KERNEL, SPHF_P_SYMMETRIC>();
+      break;
+    case SPHF_P_SUM:
+      eval_pressure<KERNEL, SPHF_P_SUM>();
+      break;
+    default:
+      eval_pressure<KERNEL, SPHF_P_AVERAGED>();
+  }
+  if (delta > 0.0) {
+    if (force->newton_pair)
+      eval_diffusion<KERNEL, 1>();
+    else
+      eval_diffusion<KERNEL, 0>();
+  }
+}
+
+template <int KERNEL, int PRESSURE> void PairSPHHarmonicVisc::eval_pressure()
+{
+  switch (viscosity_form) {
+    case SPHF_V_CLEARY:
+      eval_newton<KERNEL, PRESSURE, SPHF_V_CLEARY>();
+      break;
+    case SPHF_V_MORRIS:
+      eval_newton<KERNEL, PRESSURE, SPHF_V_MORRIS>();
+      break;
+    default:
+      eval_newton<KERNEL, PRESSURE, SPHF_V_ADAMI>();
+  }
+}
+
+template <int KERNEL, int PRESSURE, int VISCOSITY> void PairSPHHarmonicVisc::eval_newton()
+{
+  if (force->newton_pair)
+    eval<KERNEL, PRESSURE, VISCOSITY, 1>();
+  else
+    eval<KERNEL, PRESSURE, VISCOSITY, 0>();
+}
+
+/* ----------------------------------------------------------------------
+   pressure, viscosity and mass of every owned and ghost atom (ghosts carry
+   rho, esph, cv: no communication is needed)
+------------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::update_atom_state()
+{
+  if (atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(pressure);
+    memory->destroy(viscosity);
+    memory->destroy(mass_of);
+    memory->create(pressure, nmax, "pair:pressure");
+    memory->create(viscosity, nmax, "pair:viscosity");
+    memory->create(mass_of, nmax, "pair:mass_of");
+  }
+  const double *const rho = atom->rho;
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+  const int *const type = atom->type;
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) {
+    pressure[i] = sphe_pressure(materials->eos(type[i]), rho[i]);
+    viscosity[i] = sphm_law_eval(materials->viscosity(type[i]),
+                                 viscosity_varies ? esph[i] / cv[i] : 0.0);
+  }
+  if (atom->rmass_flag && atom->rmass)
+    memcpy(mass_of, atom->rmass, nall * sizeof(double));
+  else
+    for (int i = 0; i < nall; i++) mass_of[i] = atom->mass[type[i]];
+}
+
+/* ----------------------------------------------------------------------
+   f_i += F_ij, f_j -= F_ij and drho of both for every pair in the kernel
+   support; the viscosity sees vest (the velocity fix sph extrapolates to
+   the end of the step, and the no-slip velocity of wall particles), the
+   continuity equation v
+------------------------------------------------------------------------- */
+
+template <int KERNEL, int PRESSURE, int VISCOSITY, int NEWTON_PAIR>
+void PairSPHHarmonicVisc::eval()
+{
+  const double *const *const x = atom->x;
+  const double *const *const v = atom->v;
+  const double *const *const vest = atom->vest;
+  double *const *const f = atom->f;
+  const double *const rho = atom->rho;
+  double *const drho = atom->drho;
+  const int nlocal = atom->nlocal;
+
+  const double cutsq_kernel = cut_global * cut_global;
+  const double inv_h = kernel.inv_h;
+  const double dw_scale = kernel.dw_scale;
+
+  const int inum = list->inum;
+  const int *const ilist = list->ilist;
+  const int *const numneigh = list->numneigh;
+  int **const firstneigh = list->firstneigh;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const double xtmp = x[i][0], ytmp = x[i][1], ztmp = x[i][2];
+    const double rho_i = rho[i], p_i = pressure[i], mu_i = viscosity[i], m_i = mass_of[i];
+    const int *const jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+    double fx_i = 0.0, fy_i = 0.0, fz_i = 0.0, drho_i = 0.0;
+
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double delx = xtmp - x[j][0];
+      const double dely = ytmp - x[j][1];
+      const double delz = ztmp - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      if (rsq >= cutsq_kernel) continue;
+
+      const double r = sqrt(rsq);
+      const double dwdr = dw_scale * sphk_df(KERNEL, r * inv_h);
+      const double dwdr_r = dwdr / r;
+      const double inv_r2eta2 = 1.0 / (rsq + eta2);
+      const double rho_j = rho[j], m_j = mass_of[j];
+
+      // force on i along r_ij (pressure, cleary viscosity) and along v_ij
+      double s_r = sphf_pressure_pair(PRESSURE, m_i, m_j, rho_i, rho_j, p_i, pressure[j], dwdr_r);
+      double s_v = 0.0;
+      const double dvx = vest[i][0] - vest[j][0];
+      const double dvy = vest[i][1] - vest[j][1];
+      const double dvz = vest[i][2] - vest[j][2];
+      if (VISCOSITY == SPHF_V_CLEARY)
+        s_r += sphf_viscosity_pair(VISCOSITY, xi, m_i, m_j, rho_i, rho_j, mu_i, viscosity[j],
+                                   dvx * delx + dvy * dely + dvz * delz, dwdr_r, inv_r2eta2, 0.0);
+      else
+        s_v = sphf_viscosity_pair(VISCOSITY, xi, m_i, m_j, rho_i, rho_j, mu_i, viscosity[j], 0.0,
+                                  0.0, 0.0, dwdr * r * inv_r2eta2);
+      const double fx = s_r * delx + s_v * dvx;
+      const double fy = s_r * dely + s_v * dvy;
+      const double fz = s_r * delz + s_v * dvz;
+
+      const double vr = (v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely +
+          (v[i][2] - v[j][2]) * delz;
+      fx_i += fx;
+      fy_i += fy;
+      fz_i += fz;
+      drho_i += sphf_continuity_pair(PRESSURE, m_j, rho_i, rho_j, dwdr_r) * vr;
+      if (NEWTON_PAIR || j < nlocal) {
+        f[j][0] -= fx;
+        f[j][1] -= fy;
+        f[j][2] -= fz;
+        drho[j] += sphf_continuity_pair(PRESSURE, m_i, rho_j, rho_i, dwdr_r) * vr;
+      }
+      if (evflag) ev_tally_xyz(i, j, nlocal, NEWTON_PAIR, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+    }
+    f[i][0] += fx_i;
+    f[i][1] += fy_i;
+    f[i][2] += fz_i;
+    drho[i] += drho_i;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   density diffusion of Molteni & Colagrossi (seed 003 eqs 5-6), not across
+   walls (the seed sets rho_j = rho_i for wall particles)
+------------------------------------------------------------------------- */
+
+template <int KERNEL, int NEWTON_PAIR> void PairSPHHarmonicVisc::eval_diffusion()
+{
+  const double *const *const x = atom->x;
+  const double *const rho = atom->rho;
+  double *const drho = atom->drho;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const double cutsq_kernel = cut_global * cut_global;
+  const double inv_h = kernel.inv_h;
+  const double dw_scale = kernel.dw_scale;
+
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    if (mask[i] & wall_groupbit) continue;
+    const double c0_i = materials->eos(type[i])->c0;
+    const int *const jlist = list->firstneigh[i];
+    double drho_i = 0.0;
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (mask[j] & wall_groupbit) continue;
+      const double delx = x[i][0] - x[j][0];
+      const double dely = x[i][1] - x[j][1];
+      const double delz = x[i][2] - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      if (rsq >= cutsq_kernel) continue;
+      const double r = sqrt(rsq);
+      const double dwdr_r = dw_scale * sphk_df(KERNEL, r * inv_h) / r;
+      // one coefficient per pair: the mean speed of sound of the two
+      const double delta_h_c0 = delta * kernel.h * 0.5 * (c0_i + materials->eos(type[j])->c0);
+      const double drho_ij = rho[j] - rho[i];
+      drho_i += sphf_diffusion_pair(delta_h_c0, mass_of[j], rho[j], dwdr_r) * drho_ij;
+      if (NEWTON_PAIR || j < nlocal)
+        drho[j] -= sphf_diffusion_pair(delta_h_c0, mass_of[i], rho[i], dwdr_r) * drho_ij;
+    }
+    drho[i] += drho_i;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::allocate()
+{
+  allocated = 1;
+  const int n = atom->ntypes;
+  memory->create(setflag, n + 1, n + 1, "pair:setflag");
+  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+  for (int i = 0; i <= n; i++)
+    for (int j = 0; j <= n; j++) setflag[i][j] = 0;
+}
+
+/* ----------------------------------------------------------------------
+   pair_style sph/harmonic/visc kernel cutoff [pressure symmetric|sum|averaged]
+     [viscosity cleary|adami|morris] [xi value] [eta f] [delta value]
+------------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::settings(int narg, char **arg)
+{
+  if (narg < 2) error->all(FLERR, "Illegal {} command: expected <kernel> <cutoff>", cmd);
+
+  kernel_kind = sphk_lookup(arg[0]);
+  if (kernel_kind < 0)
+    error->all(FLERR,
+               "Illegal {} command: unknown kernel '{}' (lucy, cubic, quintic or wendland)", cmd,
+               arg[0]);
+  cut_global = utils::numeric(FLERR, arg[1], false, lmp);
+  if (cut_global <= 0.0)
+    error->all(FLERR, "Illegal {} command: cutoff {} must be > 0", cmd, arg[1]);
+
+  pressure_form = SPHF_P_AVERAGED;
+  viscosity_form = SPHF_V_ADAMI;
+  xi = SPHF_XI_CLEARY;
+  eta_factor = -1.0;    // the default depends on the viscosity form
+  delta = 0.1;    // seed 003: "not a tunable parameter", 0.1 for all flows
+  int iarg = 2;
+  while (iarg < narg) {
+    if (iarg + 1 >= narg)
+      error->all(FLERR, "Illegal {} command: missing value after '{}'", cmd, arg[iarg]);
+    const char *value = arg[iarg + 1];
+    if (strcmp(arg[iarg], "pressure") == 0) {
+      pressure_form = sphf_pressure_lookup(value);
+      if (pressure_form < 0)
+        error->all(FLERR,
+                   "Illegal {} command: unknown pressure form '{}' (symmetric, sum or averaged)",
+                   cmd, value);
+    } else if (strcmp(arg[iarg], "viscosity") == 0) {
+      viscosity_form = sphf_viscosity_lookup(value);
+      if (viscosity_form < 0)
+        error->all(FLERR,
+                   "Illegal {} command: unknown viscosity form '{}' (cleary, adami or morris)",
+                   cmd, value);
+    } else if (strcmp(arg[iarg], "xi") == 0) {
+      xi = utils::numeric(FLERR, value, false, lmp);
+      if (xi <= 0.0) error->all(FLERR, "Illegal {} command: xi {} must be > 0", cmd, value);
+    } else if (strcmp(arg[iarg], "eta") == 0) {
+      eta_factor = utils::numeric(FLERR, value, false, lmp);
+      if (eta_factor < 0.0)
+        error->all(FLERR, "Illegal {} command: eta {} must be >= 0", cmd, value);
+    } else if (strcmp(arg[iarg], "delta") == 0) {
+      delta = utils::numeric(FLERR, value, false, lmp);
+      if (delta < 0.0) error->all(FLERR, "Illegal {} command: delta {} must be >= 0", cmd, value);
+    } else
+      error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
+    iarg += 2;
+  }
+  // Cleary's xi was calibrated with eta = 0.1 h; the consistent forms only
+  // need eta against r -> 0, and 0.1 h would lower their viscosity by 1-4 %
+  if (eta_factor < 0.0) eta_factor = (viscosity_form == SPHF_V_CLEARY) ? 0.1 : 0.01;
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff * *: viscosities and equations of state come from fix sph/materials
+------------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::coeff(int narg, char **arg)
+{
+  if (narg != 2)
+    error->all(FLERR,
+               "Illegal pair_coeff command for sph/harmonic/visc: expected I J only (viscosities "
+               "and equations of state come from fix sph/materials)");
+  if (!allocated) allocate();
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      setflag[i][j] = 1;
+      count++;
+    }
+  if (count == 0) error->all(FLERR, "Illegal pair_coeff command for sph/harmonic/visc: no type pair");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::init_style()
+{
+  if (!atom->rho_flag || !atom->vest_flag || !atom->esph_flag || !atom->cv_flag)
+    error->all(FLERR, "Pair style sph/harmonic/visc requires atom style sph (rho, drho, vest)");
+
+  // the continuity equation needs the velocities of ghost atoms
+  if (!comm->ghost_velocity)
+    error->all(FLERR, "Pair style sph/harmonic/visc requires ghost velocities (comm_modify vel yes)");
+
+  materials = FixSPHMaterials::find(lmp, "Pair style sph/harmonic/visc");
+  for (int i = 1; i <= atom->ntypes; i++) {
+    if (!materials->eos(i))
+      error->all(FLERR,
+                 "Pair style sph/harmonic/visc: atom type {} has no equation of state (eos) in "
+                 "fix sph/materials",
+                 i);
+    if (!materials->viscosity(i))
+      error->all(FLERR,
+                 "Pair style sph/harmonic/visc: atom type {} has no viscosity in fix sph/materials",
+                 i);
+  }
+  viscosity_varies = !materials->viscosity_constant();
+
+  wall_groupbit = 0;
+  for (int ifix = 0; ifix < modify->nfix; ifix++)
+    if (strcmp(modify->fix[ifix]->style, "sph/wall/adami") == 0)
+      wall_groupbit |= modify->fix[ifix]->groupbit;
+
+  kernel = sphk_make(kernel_kind, domain->dimension, cut_global);
+  const double eta = eta_factor * kernel.h;
+  eta2 = eta * eta;
+
+  neighbor->request(this, instance_me);
+}
+
+double PairSPHHarmonicVisc::init_one(int, int)
+{
+  return cut_global;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::write_restart_settings(FILE *fp)
+{
+  const int ints[3] = {kernel_kind, pressure_form, viscosity_form};
+  const double doubles[4] = {cut_global, xi, eta_factor, delta};
+  fwrite(ints, sizeof(int), 3, fp);
+  fwrite(doubles, sizeof(double), 4, fp);
+}
+
+void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
+{
+  int ints[3];
+  double doubles[4];
+  if (comm->me == 0) {
+    utils::sfread(FLERR, ints, sizeof(int), 3, fp, nullptr, error);
+    utils::sfread(FLERR, doubles, sizeof(double), 4, fp, nullptr, error);
+  }
+  MPI_Bcast(ints, 3, MPI_INT, 0, world);
+  MPI_Bcast(doubles, 4, MPI_DOUBLE, 0, world);
+  kernel_kind = ints[0];
+  pressure_form = ints[1];
+  viscosity_form = ints[2];
+  cut_global = doubles[0];
+  xi = doubles[1];
+  eta_factor = doubles[2];
+  delta = doubles[3];
+}
+
+void PairSPHHarmonicVisc::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) fwrite(&setflag[i][j], sizeof(int), 1, fp);
+}
+
+void PairSPHHarmonicVisc::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (comm->me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairSPHHarmonicVisc::memory_usage()
+{
+  return Pair::memory_usage() + 3.0 * nmax * sizeof(double);
+}
+
+/* ----------------------------------------------------------------------
+   settings for styles that evaluate the same kernel (fix sph/wall/adami,
+   the timestep fix)
+------------------------------------------------------------------------- */
+
+void *PairSPHHarmonicVisc::extract(const char *name, int &dim)
+{
+  dim = 0;
+  if (strcmp(name, "kernel_kind") == 0) return (void *) &kernel_kind;
+  if (strcmp(name, "cutoff") == 0) return (void *) &cut_global;
+  if (strcmp(name, "eta_factor") == 0) return (void *) &eta_factor;
+  if (strcmp(name, "xi") == 0) return (void *) &xi;
+  return nullptr;
+}

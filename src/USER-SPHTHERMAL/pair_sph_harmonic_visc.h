@@ -1,0 +1,65 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(sph/harmonic/visc,PairSPHHarmonicVisc);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_SPH_HARMONIC_VISC_H
+#define LMP_PAIR_SPH_HARMONIC_VISC_H
+
+#include "pair.h"
+#include "sph_kernels.h"
+
+namespace LAMMPS_NS {
+
+class PairSPHHarmonicVisc : public Pair {
+ public:
+  PairSPHHarmonicVisc(class LAMMPS *);
+  ~PairSPHHarmonicVisc() override;
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  double memory_usage() override;
+  void *extract(const char *, int &) override;
+
+ protected:
+  int kernel_kind;        // SPHK_* of sph_kernels.h
+  int pressure_form;      // SPHF_P_* of sph_flow.h (also selects the continuity form)
+  int viscosity_form;     // SPHF_V_* of sph_flow.h
+  double cut_global;      // kernel support radius
+  double xi;              // factor of the cleary viscosity
+  double eta_factor;      // eta = eta_factor * h
+  double delta;           // density diffusion (seed 003 eq 5), 0: none
+  sphk_kernel kernel;     // kernel fixed to this dimension and cutoff
+  double eta2;            // eta^2, regularises r -> 0
+  class FixSPHMaterials *materials;
+  int viscosity_varies;    // 1 when some viscosity depends on T
+  int wall_groupbit;       // particles of every fix sph/wall/adami (no density diffusion)
+  // per atom (owned and ghost), refreshed every step
+  double *pressure, *viscosity, *mass_of;
+  int nmax;
+
+  void allocate();
+  void update_atom_state();
+  template <int KERNEL> void eval_kernel();
+  template <int KERNEL, int PRESSURE> void eval_pressure();
+  template <int KERNEL, int PRESSURE, int VISCOSITY> void eval_newton();
+  template <int KERNEL, int PRESSURE, int VISCOSITY, int NEWTON_PAIR> void eval();
+  template <int KERNEL, int NEWTON_PAIR> void eval_diffusion();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

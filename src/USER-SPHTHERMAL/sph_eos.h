@@ -1,0 +1,76 @@
+/* -*- c -*- -------------------------------------------------------------
+   USER-SPHTHERMAL: equations of state of weakly compressible SPH, C99.
+
+   An EOS is a name and its coefficients, with the reference density rho0
+   of the material:
+     tait    P = B ((rho / rho0)^gamma - 1) + P_b,  B = rho0 c0^2 / gamma
+             (seed 004 eq 11; seed 000 eq 8 with P0 = B)
+     linear  P = c0^2 (rho - rho0) + P_b            (seed 003 eq 4)
+   c0 is the speed of sound at rho0 and P_b a background pressure (default 0).
+------------------------------------------------------------------------- */
+
+#ifndef SPH_EOS_H
+#define SPH_EOS_H
+
+#include <math.h>
+#include <string.h>
+
+enum sphe_kind { SPHE_TAIT = 0, SPHE_LINEAR, SPHE_NKINDS };
+
+typedef struct {
+  int kind;
+  double rho0;         /* reference density */
+  double c0;           /* speed of sound at rho0 */
+  double gamma;        /* tait: polytropic index */
+  double p_background; /* added to the pressure */
+} sphe_eos;
+
+static inline const char *sphe_name(int kind)
+{
+  static const char *const names[SPHE_NKINDS] = {"tait", "linear"};
+  return (kind >= 0 && kind < SPHE_NKINDS) ? names[kind] : 0;
+}
+
+static inline int sphe_lookup(const char *name)
+{
+  for (int kind = 0; kind < SPHE_NKINDS; kind++)
+    if (strcmp(name, sphe_name(kind)) == 0) return kind;
+  return -1;
+}
+
+/* coefficients on the command line after the name: tait c0 gamma, linear c0 */
+static inline int sphe_ncoeffs(int kind)
+{
+  static const int ncoeffs[SPHE_NKINDS] = {2, 1};
+  return (kind >= 0 && kind < SPHE_NKINDS) ? ncoeffs[kind] : 0;
+}
+
+static inline double sphe_pressure(const sphe_eos *eos, double rho)
+{
+  const double c2 = eos->c0 * eos->c0;
+  if (eos->kind == SPHE_TAIT)
+    return eos->rho0 * c2 / eos->gamma * (pow(rho / eos->rho0, eos->gamma) - 1.0) +
+        eos->p_background;
+  return c2 * (rho - eos->rho0) + eos->p_background;
+}
+
+/* the inverse: density at pressure P (walls of Adami et al. 2012); the tait
+   form is clamped at rho = 0 for pressures below -B + P_b */
+static inline double sphe_density(const sphe_eos *eos, double p)
+{
+  const double c2 = eos->c0 * eos->c0;
+  if (eos->kind == SPHE_TAIT) {
+    const double ratio = 1.0 + (p - eos->p_background) * eos->gamma / (eos->rho0 * c2);
+    return (ratio > 0.0) ? eos->rho0 * pow(ratio, 1.0 / eos->gamma) : 0.0;
+  }
+  return eos->rho0 + (p - eos->p_background) / c2;
+}
+
+/* speed of sound sqrt(dP/drho) at rho */
+static inline double sphe_sound_speed(const sphe_eos *eos, double rho)
+{
+  if (eos->kind == SPHE_TAIT) return eos->c0 * pow(rho / eos->rho0, 0.5 * (eos->gamma - 1.0));
+  return eos->c0;
+}
+
+#endif

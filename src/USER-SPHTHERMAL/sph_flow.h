@@ -1,0 +1,118 @@
+/* -*- c -*- -------------------------------------------------------------
+   USER-SPHTHERMAL: pair terms of weakly compressible SPH flow, C99.
+
+   For a pair a, b at distance r (r_ab = x_a - x_b, v_ab = v_a - v_b) with
+   dW/dr = dwdr (<= 0) the terms below return scalars s such that
+     pressure:   force on a  = s * r_ab           (force on b = -that)
+     viscosity:  force on a  = s * r_ab  (cleary) or s * v_ab (morris, adami)
+     continuity: drho_a/dt  += s * (v_ab . r_ab)
+   so every pair conserves momentum exactly. m = mass, rho = density,
+   P = pressure, mu = dynamic viscosity, eta2 = eta^2 regularises r -> 0.
+
+   Pressure (the paper's continuity equation goes with each form):
+     symmetric  seed 000 eq 4: -m_a m_b (P_a / rho_a^2 + P_b / rho_b^2) grad W;
+                eq 3: drho_a = sum m_b v_ab . grad W
+     sum        seed 004 eq 8: -m_a m_b (P_a + P_b) / (rho_a rho_b) grad W;
+                eq 7: drho_a = rho_a sum V_b v_ab . grad W
+     averaged   seed 003 eq 7: -(V_a^2 + V_b^2) (P_a rho_b + P_b rho_a) /
+                (rho_a + rho_b) grad W, V = m / rho (stable for large density
+                ratios); eq 5: as 004 eq 7
+   Viscosity:
+     cleary     seed 000 eq 4: xi m_a m_b / (rho_a rho_b) 4 mu_a mu_b /
+                (mu_a + mu_b) (v_ab . r_ab) / (r^2 + eta^2) grad W
+     adami      seed 003 eq 7: (V_a^2 + V_b^2) 2 mu_a mu_b / (mu_a + mu_b)
+                v_ab dW/dr r / (r^2 + eta^2)   (harmonic mean)
+     morris     seed 004 eq 12 (the form of eq 14 with a consistent
+                operator): m_a m_b 2 (nu_a + nu_b) / (rho_a + rho_b)
+                v_ab dW/dr r / (r^2 + eta^2), nu = mu / rho (arithmetic mean)
+------------------------------------------------------------------------- */
+
+#ifndef SPH_FLOW_H
+#define SPH_FLOW_H
+
+#include <string.h>
+
+enum sphf_pressure_form { SPHF_P_SYMMETRIC = 0, SPHF_P_SUM, SPHF_P_AVERAGED, SPHF_P_NFORMS };
+enum sphf_viscosity_form { SPHF_V_CLEARY = 0, SPHF_V_ADAMI, SPHF_V_MORRIS, SPHF_V_NFORMS };
+
+/* xi of seed 000 eq 4, calibrated by Cleary on transient Couette flow */
+#define SPHF_XI_CLEARY 4.96333
+
+static inline const char *sphf_pressure_name(int form)
+{
+  static const char *const names[SPHF_P_NFORMS] = {"symmetric", "sum", "averaged"};
+  return (form >= 0 && form < SPHF_P_NFORMS) ? names[form] : 0;
+}
+
+static inline const char *sphf_viscosity_name(int form)
+{
+  static const char *const names[SPHF_V_NFORMS] = {"cleary", "adami", "morris"};
+  return (form >= 0 && form < SPHF_V_NFORMS) ? names[form] : 0;
+}
+
+static inline int sphf_pressure_lookup(const char *name)
+{
+  for (int form = 0; form < SPHF_P_NFORMS; form++)
+    if (strcmp(name, sphf_pressure_name(form)) == 0) return form;
+  return -1;
+}
+
+static inline int sphf_viscosity_lookup(const char *name)
+{
+  for (int form = 0; form < SPHF_V_NFORMS; form++)
+    if (strcmp(name, sphf_viscosity_name(form)) == 0) return form;
+  return -1;
+}
+
+/* s with force on a = s r_ab; dwdr_r = dW/dr / r */
+static inline double sphf_pressure_pair(int form, double m_a, double m_b, double rho_a,
+                                        double rho_b, double p_a, double p_b, double dwdr_r)
+{
+  if (form == SPHF_P_SYMMETRIC)
+    return -m_a * m_b * (p_a / (rho_a * rho_a) + p_b / (rho_b * rho_b)) * dwdr_r;
+  if (form == SPHF_P_SUM) return -m_a * m_b * (p_a + p_b) / (rho_a * rho_b) * dwdr_r;
+  const double v_a = m_a / rho_a, v_b = m_b / rho_b;
+  const double p_avg = (p_a * rho_b + p_b * rho_a) / (rho_a + rho_b);
+  return -(v_a * v_a + v_b * v_b) * p_avg * dwdr_r;
+}
+
+/* cleary: s with force on a = s r_ab; adami, morris: s with force on a = s v_ab.
+   vr = v_ab . r_ab (used by cleary only); dwdr_rr = dW/dr r / (r^2 + eta^2);
+   dwdr_r = dW/dr / r */
+static inline double sphf_viscosity_pair(int form, double xi, double m_a, double m_b,
+                                         double rho_a, double rho_b, double mu_a, double mu_b,
+                                         double vr, double dwdr_r, double inv_r2eta2,
+                                         double dwdr_rr)
+{
+  const double mu_sum = mu_a + mu_b;
+  if (form == SPHF_V_CLEARY) {
+    const double mu_h = (mu_sum > 0.0) ? 4.0 * mu_a * mu_b / mu_sum : 0.0;
+    return xi * m_a * m_b / (rho_a * rho_b) * mu_h * vr * inv_r2eta2 * dwdr_r;
+  }
+  if (form == SPHF_V_ADAMI) {
+    const double v_a = m_a / rho_a, v_b = m_b / rho_b;
+    const double mu_h = (mu_sum > 0.0) ? 2.0 * mu_a * mu_b / mu_sum : 0.0;
+    return (v_a * v_a + v_b * v_b) * mu_h * dwdr_rr;
+  }
+  return m_a * m_b * 2.0 * (mu_a / rho_a + mu_b / rho_b) / (rho_a + rho_b) * dwdr_rr;
+}
+
+/* drho_a/dt += s (v_ab . r_ab): symmetric m_b dW/dr / r; the others
+   rho_a m_b / rho_b dW/dr / r */
+static inline double sphf_continuity_pair(int form, double m_b, double rho_a, double rho_b,
+                                          double dwdr_r)
+{
+  if (form == SPHF_P_SYMMETRIC) return m_b * dwdr_r;
+  return rho_a * m_b / rho_b * dwdr_r;
+}
+
+/* density diffusion of Molteni & Colagrossi (seed 003 eqs 5-6):
+   drho_a/dt += 2 delta h c0 sum (rho_b - rho_a) V_b (r_ba . grad_a W) / r^2
+             =  s (rho_b - rho_a) with s = -2 delta h c0 V_b dW/dr / r */
+static inline double sphf_diffusion_pair(double delta_h_c0, double m_b, double rho_b,
+                                         double dwdr_r)
+{
+  return -2.0 * delta_h_c0 * m_b / rho_b * dwdr_r;
+}
+
+#endif
