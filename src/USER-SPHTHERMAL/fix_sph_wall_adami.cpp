@@ -112,6 +112,7 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
   const int *const mask = atom->mask;
   const sphk_kernel kernel = sphk_make(kernel_kind, domain->dimension, cutoff);
   const double cutsq = cutoff * cutoff;
+  int below_eos = 0;
 
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
@@ -134,12 +135,22 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
     const sphe_eos *eos = materials->eos(type[i]);
     if (weight > 0.0) {
       rho[i] = sphe_density(eos, (weighted_p + hydrostatic) / weight);
+      if (rho[i] <= 0.0) below_eos++;
       for (int k = 0; k < 3; k++) vest[i][k] = 2.0 * v[i][k] - weighted_v[k] / weight;
     } else {
       rho[i] = sphe_density(eos, eos->p_background);
       for (int k = 0; k < 3; k++) vest[i][k] = v[i][k];
     }
   }
+  // a tension beyond the equation of state leaves no density: stop, collectively
+  int below_eos_all = 0;
+  MPI_Allreduce(&below_eos, &below_eos_all, 1, MPI_INT, MPI_SUM, world);
+  if (below_eos_all)
+    error->all(FLERR,
+               "Fix sph/wall/adami: the extrapolated pressure of {} wall particle(s) is below the "
+               "lowest pressure of their equation of state (raise its speed of sound or "
+               "background pressure)",
+               below_eos_all);
   comm->forward_comm_fix(this);
 }
 

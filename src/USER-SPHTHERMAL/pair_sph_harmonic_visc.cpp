@@ -23,6 +23,7 @@
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "sph_flow.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
@@ -41,6 +42,7 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
 {
   restartinfo = 1;
   single_enable = 0;
+  comm_forward = 3;
   memset(&kernel, 0, sizeof(kernel));
 }
 
@@ -60,6 +62,9 @@ PairSPHHarmonicVisc::~PairSPHHarmonicVisc()
 void PairSPHHarmonicVisc::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  // fix sph sets vest = v on owned atoms at setup without updating their
+  // ghosts: refresh them, or results depend on newton and the rank count
+  if (update->setupflag) comm->forward_comm_pair(this);
   update_atom_state();
 
   switch (kernel_kind) {
@@ -486,4 +491,24 @@ void *PairSPHHarmonicVisc::extract(const char *name, int &dim)
   if (strcmp(name, "eta_factor") == 0) return (void *) &eta_factor;
   if (strcmp(name, "xi") == 0) return (void *) &xi;
   return nullptr;
+}
+
+/* ----------------------------------------------------------------------
+   vest of the ghost atoms, at setup
+------------------------------------------------------------------------- */
+
+int PairSPHHarmonicVisc::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/,
+                                           int * /*pbc*/)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++)
+    for (int d = 0; d < 3; d++) buf[m++] = atom->vest[send[k]][d];
+  return m;
+}
+
+void PairSPHHarmonicVisc::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int d = 0; d < 3; d++) atom->vest[i][d] = buf[m++];
 }

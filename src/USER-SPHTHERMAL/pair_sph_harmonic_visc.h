@@ -32,6 +32,8 @@ class PairSPHHarmonicVisc : public Pair {
   void read_restart_settings(FILE *) override;
   double memory_usage() override;
   void *extract(const char *, int &) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
 
  protected:
   int kernel_kind;        // SPHK_* of sph_kernels.h

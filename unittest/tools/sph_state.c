@@ -1,6 +1,6 @@
 /* sph_state: run a LAMMPS input through the C library interface and write
    the SPH state of every atom, sorted by id, for regression tests:
-     id type x y z T desph rho drho
+     id type x y z T desph rho drho vx vy vz fx fy fz
    usage: [mpirun -np N] sph_state <out-file> <input> [LAMMPS args, e.g. -var k v]
    Built twice: against the host LAMMPS (inputs load the plugin) and against
    the LAMMPS with USER-SPHTHERMAL compiled in. */
@@ -63,6 +63,8 @@ int main(int argc, char **argv)
   double *desph = gather(lmp, "desph", 1, natoms);
   double *rho = gather(lmp, "rho", 1, natoms);
   double *drho = gather(lmp, "drho", 1, natoms);
+  double *v = gather(lmp, "v", 3, natoms);
+  double *f = gather(lmp, "f", 3, natoms);
 
   if (me == 0) {
     FILE *out = fopen(argv[1], "w");
@@ -70,10 +72,12 @@ int main(int argc, char **argv)
       fprintf(stderr, "sph_state: cannot write %s\n", argv[1]);
       MPI_Abort(MPI_COMM_WORLD, 1);
     }
-    fprintf(out, "# id type x y z T desph rho drho\n");
+    fprintf(out, "# id type x y z T desph rho drho vx vy vz fx fy fz\n");
     for (int i = 0; i < natoms; i++)
-      fprintf(out, "%d %d %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", i + 1, type[i], x[3 * i],
-              x[3 * i + 1], x[3 * i + 2], esph[i] / cv[i], desph[i], rho[i], drho[i]);
+      fprintf(out,
+              "%d %d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n",
+              i + 1, type[i], x[3 * i], x[3 * i + 1], x[3 * i + 2], esph[i] / cv[i], desph[i], rho[i],
+              drho[i], v[3 * i], v[3 * i + 1], v[3 * i + 2], f[3 * i], f[3 * i + 1], f[3 * i + 2]);
     fclose(out);
   }
 

@@ -1,0 +1,351 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   fix sph/dt/reset: adaptive timestep of weakly compressible, thermal SPH,
+   the minimum over the particles of the group of four limits
+     acoustic  C_c h / (c_i + |v_i|)        (seed 000 eq 5, 003 eq 18, 004 eq 21)
+     force     C_f sqrt(h / |a_i|)           (003 eq 18, 004 eq 20)
+     viscous   C_v h^2 rho_i / mu_i          (003 eq 18, 004 eq 22)
+     thermal   C_t h^2 rho_i cv_i / k_i      (000 eq 7, 003 eq 18, 004 eqs 23-25)
+   clamped to [dtmin, dtmax]. It is set at the setup of every run and then
+   every N steps at the end of the step, the way fix dt/reset does it, so
+   that the elapsed time (thermo keyword time) stays the sum of the steps.
+------------------------------------------------------------------------- */
+
+#include "fix_sph_dt_reset.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_sph_materials.h"
+#include "force.h"
+#include "integrate.h"
+#include "modify.h"
+#include "pair.h"
+#include "sph_eos.h"
+#include "sph_kernels.h"
+#include "sph_material_laws.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static const char cmd[] = "fix sph/dt/reset";
+
+// "no limit": larger than any timestep, finite so that thermo can print it
+static constexpr double BIG = 1.0e300;
+
+// the package's pair styles that know their kernel (extract "kernel_kind", "cutoff")
+static const char *const sph_pairs[] = {"sph/harmonic/visc", "sph/cleary/heat"};
+
+/* ---------------------------------------------------------------------- */
+
+FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), dtmin(0.0), dtmax(BIG), h_user(0.0), h(0.0), active(0), respa_flag(0),
+    materials(nullptr)
+{
+  if (!atom->rho_flag || !atom->esph_flag || !atom->cv_flag)
+    error->all(FLERR, "Fix sph/dt/reset requires atom style sph (rho, esph, cv)");
+  if (narg < 4)
+    error->all(FLERR, "Illegal {} command: missing N (recompute the timestep every N steps)", cmd);
+  char *end = nullptr;
+  const long n = strtol(arg[3], &end, 10);
+  if (end == arg[3] || *end != '\0' || n <= 0 || n > MAXSMALLINT)
+    error->all(FLERR, "Illegal {} command: N must be a positive integer, not '{}'", cmd, arg[3]);
+  nevery = (int) n;
+
+  // defaults: seed 003 eq 18 for the flow limits, Cleary's zeta = 0.1 (seed 000 eq 7)
+  coeff[ACOUSTIC] = 0.25;
+  coeff[FORCE] = 0.25;
+  coeff[VISCOUS] = 0.125;
+  coeff[THERMAL] = 0.1;
+
+  static const char *const names[NLIMITS] = {"acoustic", "force", "viscous", "thermal"};
+  int iarg = 4;
+  while (iarg < narg) {
+    int which = -1;
+    for (int k = 0; k < NLIMITS; k++)
+      if (strcmp(arg[iarg], names[k]) == 0) which = k;
+    if (which >= 0)
+      coeff[which] = parse_value(iarg, narg, arg, true);
+    else if (strcmp(arg[iarg], "min") == 0)
+      dtmin = parse_value(iarg, narg, arg, true);
+    else if (strcmp(arg[iarg], "max") == 0)
+      dtmax = parse_value(iarg, narg, arg, false);
+    else if (strcmp(arg[iarg], "h") == 0)
+      h_user = parse_value(iarg, narg, arg, false);
+    else
+      error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
+    iarg += 2;
+  }
+  if (dtmin > dtmax)
+    error->all(FLERR, "Illegal {} command: min {} is larger than max {}", cmd, dtmin, dtmax);
+  if (coeff[ACOUSTIC] == 0.0 && coeff[FORCE] == 0.0 && coeff[VISCOUS] == 0.0 &&
+      coeff[THERMAL] == 0.0 && dtmax == BIG)
+    error->all(FLERR, "Illegal {} command: every limit is off (0) and no 'max' is given", cmd);
+
+  for (int k = 0; k < NLIMITS; k++) limit[k] = BIG;
+
+  // the elapsed time depends on every dt: keep it across restarts, and
+  // forbid reset_timestep while the fix exists (as fix dt/reset does)
+  time_depend = 1;
+  restart_global = 1;
+  scalar_flag = 1;
+  vector_flag = 1;
+  size_vector = 2 + NLIMITS;
+  global_freq = 1;
+  extscalar = 0;
+  extvector = 0;
+  dynamic_group_allow = 1;
+}
+
+/* ----------------------------------------------------------------------
+   value of keyword arg[iarg]: a number >= 0 (zero_ok) or > 0
+------------------------------------------------------------------------- */
+
+double FixSPHDtReset::parse_value(int iarg, int narg, char **arg, bool zero_ok)
+{
+  if (iarg + 1 >= narg)
+    error->all(FLERR, "Illegal {} command: missing value after '{}'", cmd, arg[iarg]);
+  const char *word = arg[iarg + 1];
+  char *end = nullptr;
+  const double value = strtod(word, &end);
+  if (end == word || *end != '\0' || !std::isfinite(value))
+    error->all(FLERR, "Illegal {} command: {} value '{}' is not a number", cmd, arg[iarg], word);
+  if (value < 0.0 || (!zero_ok && value == 0.0))
+    error->all(FLERR, "Illegal {} command: {} {} must be {}", cmd, arg[iarg], word,
+               zero_ok ? ">= 0" : "> 0");
+  return value;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixSPHDtReset::setmask()
+{
+  return END_OF_STEP;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHDtReset::init()
+{
+  // two fixes changing dt would overwrite each other's choice
+  for (int i = 0; i < modify->nfix; i++)
+    if (modify->fix[i] != this &&
+        (strcmp(modify->fix[i]->style, "sph/dt/reset") == 0 ||
+         strcmp(modify->fix[i]->style, "dt/reset") == 0))
+      error->all(FLERR, "Fix sph/dt/reset: fix {} (style {}) also resets the timestep",
+                 modify->fix[i]->id, modify->fix[i]->style);
+
+  // setup() runs in the order of the fixes: a fix defined later that adds
+  // forces after the pair (addforce, gravity, ...) has not done so yet when
+  // the first dt is chosen
+  if (coeff[FORCE] > 0.0 && comm->me == 0) {
+    int me_index = modify->find_fix(id);
+    for (int i = me_index + 1; i < modify->nfix; i++)
+      if (modify->fmask[i] & POST_FORCE)
+        error->warning(FLERR,
+                       "Fix sph/dt/reset: fix {} (style {}) is defined after it and acts after "
+                       "the forces; if it changes forces, define fix sph/dt/reset after it so "
+                       "that the first dt sees them",
+                       modify->fix[i]->id, modify->fix[i]->style);
+  }
+
+  h = smoothing_length();
+
+  // the hub is needed only by the limits that read material properties
+  materials = nullptr;
+  if (coeff[ACOUSTIC] > 0.0 || coeff[VISCOUS] > 0.0 || coeff[THERMAL] > 0.0)
+    materials = FixSPHMaterials::find(lmp, "Fix sph/dt/reset");
+
+  respa_flag = utils::strmatch(update->integrate_style, "^respa") ? 1 : 0;
+}
+
+/* ----------------------------------------------------------------------
+   h from the 'h' keyword, else cutoff / q_max of the package's SPH pair
+   styles (the smallest when there are several, e.g. in hybrid/overlay)
+------------------------------------------------------------------------- */
+
+double FixSPHDtReset::smoothing_length()
+{
+  if (h_user > 0.0) return h_user;
+  double hmin = 0.0;
+  for (const char *style : sph_pairs) {
+    Pair *pair = force->pair_match(style, 1);
+    if (!pair) continue;
+    int dim;
+    const int *kind = (const int *) pair->extract("kernel_kind", dim);
+    const double *cut = (const double *) pair->extract("cutoff", dim);
+    if (!kind || !cut || sphk_support(*kind) <= 0.0) continue;
+    const double hpair = *cut / sphk_support(*kind);
+    if (hmin == 0.0 || hpair < hmin) hmin = hpair;
+  }
+  if (hmin <= 0.0)
+    error->all(FLERR,
+               "Fix sph/dt/reset: no smoothing length: give keyword 'h' or use pair style "
+               "sph/harmonic/visc or sph/cleary/heat");
+  return hmin;
+}
+
+/* ----------------------------------------------------------------------
+   before the first step of every run: the forces of the initial state are
+   known, the first step must already use the limited dt
+------------------------------------------------------------------------- */
+
+void FixSPHDtReset::setup(int /*vflag*/)
+{
+  choose_dt();
+}
+
+void FixSPHDtReset::end_of_step()
+{
+  choose_dt();
+}
+
+/* ----------------------------------------------------------------------
+   the four limits over the group, their global minima, the new dt
+------------------------------------------------------------------------- */
+
+void FixSPHDtReset::choose_dt()
+{
+  const double *const *const v = atom->v;
+  const double *const *const f = atom->f;
+  const double *const rho = atom->rho;
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+  const double *const mass = atom->mass;
+  const double *const rmass = atom->rmass;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const double ftm2v = force->ftm2v;
+  const double hsq = h * h;
+
+  double local[NLIMITS];
+  for (int k = 0; k < NLIMITS; k++) local[k] = BIG;
+
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const int itype = type[i];
+    const double vsq = v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2];
+    const double fsq = f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2];
+    const double temperature = (cv[i] > 0.0) ? esph[i] / cv[i] : 0.0;
+
+    // a limit whose property the type lacks does not apply to the particle
+    if (coeff[ACOUSTIC] > 0.0) {
+      const sphe_eos *eos = materials->eos(itype);
+      if (eos) {
+        const double dt = coeff[ACOUSTIC] * h / (sphe_sound_speed(eos, rho[i]) + sqrt(vsq));
+        if (dt < local[ACOUSTIC]) local[ACOUSTIC] = dt;
+      }
+    }
+    if (coeff[FORCE] > 0.0 && fsq > 0.0) {
+      const double m = rmass ? rmass[i] : mass[itype];
+      const double accel = ftm2v * sqrt(fsq) / m;
+      const double dt = coeff[FORCE] * sqrt(h / accel);
+      if (dt < local[FORCE]) local[FORCE] = dt;
+    }
+    if (coeff[VISCOUS] > 0.0) {
+      const sphm_law *law = materials->viscosity(itype);
+      const double mu = law ? sphm_law_eval(law, temperature) : 0.0;
+      if (mu > 0.0) {
+        const double dt = coeff[VISCOUS] * hsq * rho[i] / mu;
+        if (dt < local[VISCOUS]) local[VISCOUS] = dt;
+      }
+    }
+    if (coeff[THERMAL] > 0.0) {
+      const sphm_law *law = materials->conductivity(itype);
+      const double k = law ? sphm_law_eval(law, temperature) : 0.0;
+      if (k > 0.0) {
+        const double dt = coeff[THERMAL] * hsq * rho[i] * cv[i] / k;
+        if (dt < local[THERMAL]) local[THERMAL] = dt;
+      }
+    }
+  }
+
+  // minima are exact, so every rank count that gives the same per-atom
+  // state gives the same dt and the same active limit
+  MPI_Allreduce(local, limit, NLIMITS, MPI_DOUBLE, MPI_MIN, world);
+
+  double dt = BIG;
+  active = 0;
+  for (int k = 0; k < NLIMITS; k++)
+    if (limit[k] < dt) {
+      dt = limit[k];
+      active = k + 1;
+    }
+  if (active == 0) {
+    // no limit applies (e.g. only the force limit, and no force): keep dt
+    // unless a maximum is given
+    if (dtmax < BIG) {
+      dt = dtmax;
+      active = BOUND;
+    } else
+      dt = update->dt;
+  }
+  if (dt < dtmin) {
+    dt = dtmin;
+    active = BOUND;
+  } else if (dt > dtmax) {
+    dt = dtmax;
+    active = BOUND;
+  }
+
+  if (dt == update->dt) return;
+
+  // as fix dt/reset: account the elapsed time with the old dt first
+  update->update_time();
+  update->dt = dt;
+  update->dt_default = 0;
+  if (respa_flag) update->integrate->reset_dt();
+  if (force->pair) force->pair->reset_dt();
+  for (int i = 0; i < modify->nfix; i++) modify->fix[i]->reset_dt();
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixSPHDtReset::compute_scalar()
+{
+  return update->dt;
+}
+
+/* ----------------------------------------------------------------------
+   1 = dt, 2 = active limit, 3..6 = acoustic, force, viscous, thermal
+------------------------------------------------------------------------- */
+
+double FixSPHDtReset::compute_vector(int n)
+{
+  if (n == 0) return update->dt;
+  if (n == 1) return (double) active;
+  return limit[n - 2];
+}
+
+/* ----------------------------------------------------------------------
+   LAMMPS (29Sep2021) writes ntimestep and dt to a restart file but not the
+   elapsed time, which read_restart then starts at 0; with a variable dt it
+   cannot be recomputed as step * dt, so the fix keeps it
+------------------------------------------------------------------------- */
+
+void FixSPHDtReset::write_restart(FILE *fp)
+{
+  if (comm->me == 0) {
+    const double elapsed =
+        update->atime + (double) (update->ntimestep - update->atimestep) * update->dt;
+    const double list[2] = {elapsed, update->dt};
+    int size = 2 * sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list, sizeof(double), 2, fp);
+  }
+}
+
+void FixSPHDtReset::restart(char *buf)
+{
+  const double *list = (const double *) buf;
+  update->atime = list[0];
+  update->atimestep = update->ntimestep;
+}

@@ -1,0 +1,53 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(sph/dt/reset,FixSPHDtReset);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_SPH_DT_RESET_H
+#define LMP_FIX_SPH_DT_RESET_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixSPHDtReset : public Fix {
+ public:
+  FixSPHDtReset(class LAMMPS *, int, char **);
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void end_of_step() override;
+  double compute_scalar() override;
+  double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+
+  // the limits, in the order of the output vector (active limit = index + 1)
+  enum { ACOUSTIC = 0, FORCE, VISCOUS, THERMAL, NLIMITS };
+  enum { BOUND = NLIMITS + 1 };
+
+ protected:
+  double coeff[NLIMITS];     // 0 = limit off
+  double dtmin, dtmax;       // dtmax = BIG: no upper bound
+  double h_user;             // 'h' keyword, 0 = from the pair style
+  double h;                  // smoothing length used
+  double limit[NLIMITS];     // global minimum of each limit, coefficient applied
+  int active;                // 1..4 a limit, 5 the min/max bound, 0 none computed yet
+  int respa_flag;
+  class FixSPHMaterials *materials;
+
+  double parse_value(int, int, char **, bool);
+  double smoothing_length();
+  void choose_dt();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
