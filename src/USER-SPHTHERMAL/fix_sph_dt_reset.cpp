@@ -47,7 +47,7 @@ static const char *const sph_pairs[] = {"sph/harmonic/visc", "sph/cleary/heat"};
 
 FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), dtmin(0.0), dtmax(BIG), h_user(0.0), h(0.0), active(0), respa_flag(0),
-    materials(nullptr)
+    warned(0), materials(nullptr)
 {
   if (!atom->rho_flag || !atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Fix sph/dt/reset requires atom style sph (rho, esph, cv)");
@@ -145,10 +145,11 @@ void FixSPHDtReset::init()
   // setup() runs in the order of the fixes: a fix defined later that adds
   // forces after the pair (addforce, gravity, ...) has not done so yet when
   // the first dt is chosen
-  if (coeff[FORCE] > 0.0 && comm->me == 0) {
-    int me_index = modify->find_fix(id);
+  if (coeff[FORCE] > 0.0 && !warned) {
+    warned = 1;
+    const int me_index = modify->find_fix(id);
     for (int i = me_index + 1; i < modify->nfix; i++)
-      if (modify->fmask[i] & POST_FORCE)
+      if ((modify->fmask[i] & POST_FORCE) && comm->me == 0)
         error->warning(FLERR,
                        "Fix sph/dt/reset: fix {} (style {}) is defined after it and acts after "
                        "the forces; if it changes forces, define fix sph/dt/reset after it so "
@@ -328,7 +329,8 @@ double FixSPHDtReset::compute_vector(int n)
 /* ----------------------------------------------------------------------
    LAMMPS (29Sep2021) writes ntimestep and dt to a restart file but not the
    elapsed time, which read_restart then starts at 0; with a variable dt it
-   cannot be recomputed as step * dt, so the fix keeps it
+   cannot be recomputed as step * dt, so the fix keeps it (and the dt of
+   that moment, for information: the next run's setup recomputes dt)
 ------------------------------------------------------------------------- */
 
 void FixSPHDtReset::write_restart(FILE *fp)

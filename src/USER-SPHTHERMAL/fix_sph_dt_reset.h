@@ -33,13 +33,14 @@ class FixSPHDtReset : public Fix {
   enum { BOUND = NLIMITS + 1 };
 
  protected:
-  double coeff[NLIMITS];     // 0 = limit off
-  double dtmin, dtmax;       // dtmax = BIG: no upper bound
-  double h_user;             // 'h' keyword, 0 = from the pair style
-  double h;                  // smoothing length used
-  double limit[NLIMITS];     // global minimum of each limit, coefficient applied
-  int active;                // 1..4 a limit, 5 the min/max bound, 0 none computed yet
+  double coeff[NLIMITS];    // 0 = limit off
+  double dtmin, dtmax;      // dtmax = BIG: no upper bound
+  double h_user;            // 'h' keyword, 0 = from the pair style
+  double h;                 // smoothing length used
+  double limit[NLIMITS];    // global minimum of each limit, coefficient applied
+  int active;               // 1..4 a limit, 5 the min/max bound, 0 none computed yet
   int respa_flag;
+  int warned;    // the fix-order warning was given
   class FixSPHMaterials *materials;
 
   double parse_value(int, int, char **, bool);

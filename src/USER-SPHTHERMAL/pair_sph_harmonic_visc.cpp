@@ -38,7 +38,7 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     Pair(lmp), kernel_kind(-1), pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI),
     cut_global(0.0), xi(SPHF_XI_CLEARY), eta_factor(0.1), delta(0.1), eta2(0.0),
     materials(nullptr), viscosity_varies(0), wall_groupbit(0), pressure(nullptr),
-    viscosity(nullptr), mass_of(nullptr), nmax(0)
+    viscosity(nullptr), mass_of(nullptr), volume(nullptr), nmax(0)
 {
   restartinfo = 1;
   single_enable = 0;
@@ -55,6 +55,7 @@ PairSPHHarmonicVisc::~PairSPHHarmonicVisc()
   memory->destroy(pressure);
   memory->destroy(viscosity);
   memory->destroy(mass_of);
+  memory->destroy(volume);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -138,6 +139,8 @@ void PairSPHHarmonicVisc::update_atom_state()
     memory->destroy(pressure);
     memory->destroy(viscosity);
     memory->destroy(mass_of);
+    memory->destroy(volume);
+    memory->create(volume, nmax, "pair:volume");
     memory->create(pressure, nmax, "pair:pressure");
     memory->create(viscosity, nmax, "pair:viscosity");
     memory->create(mass_of, nmax, "pair:mass_of");
@@ -156,6 +159,7 @@ void PairSPHHarmonicVisc::update_atom_state()
     memcpy(mass_of, atom->rmass, nall * sizeof(double));
   else
     for (int i = 0; i < nall; i++) mass_of[i] = atom->mass[type[i]];
+  for (int i = 0; i < nall; i++) volume[i] = mass_of[i] / rho[i];
 }
 
 /* ----------------------------------------------------------------------
@@ -188,7 +192,7 @@ void PairSPHHarmonicVisc::eval()
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const double xtmp = x[i][0], ytmp = x[i][1], ztmp = x[i][2];
-    const double rho_i = rho[i], p_i = pressure[i], mu_i = viscosity[i], m_i = mass_of[i];
+    const sphf_particle a = {mass_of[i], rho[i], volume[i], pressure[i], viscosity[i]};
     const int *const jlist = firstneigh[i];
     const int jnum = numneigh[i];
     double fx_i = 0.0, fy_i = 0.0, fz_i = 0.0, drho_i = 0.0;
@@ -203,37 +207,27 @@ void PairSPHHarmonicVisc::eval()
 
       const double r = sqrt(rsq);
       const double dwdr = dw_scale * sphk_df(KERNEL, r * inv_h);
-      const double dwdr_r = dwdr / r;
-      const double inv_r2eta2 = 1.0 / (rsq + eta2);
-      const double rho_j = rho[j], m_j = mass_of[j];
-
-      // force on i along r_ij (pressure, cleary viscosity) and along v_ij
-      double s_r = sphf_pressure_pair(PRESSURE, m_i, m_j, rho_i, rho_j, p_i, pressure[j], dwdr_r);
-      double s_v = 0.0;
+      const sphf_particle b = {mass_of[j], rho[j], volume[j], pressure[j], viscosity[j]};
       const double dvx = vest[i][0] - vest[j][0];
       const double dvy = vest[i][1] - vest[j][1];
       const double dvz = vest[i][2] - vest[j][2];
-      if (VISCOSITY == SPHF_V_CLEARY)
-        s_r += sphf_viscosity_pair(VISCOSITY, xi, m_i, m_j, rho_i, rho_j, mu_i, viscosity[j],
-                                   dvx * delx + dvy * dely + dvz * delz, dwdr_r, inv_r2eta2, 0.0);
-      else
-        s_v = sphf_viscosity_pair(VISCOSITY, xi, m_i, m_j, rho_i, rho_j, mu_i, viscosity[j], 0.0,
-                                  0.0, 0.0, dwdr * r * inv_r2eta2);
+      const double vr_est = (VISCOSITY == SPHF_V_CLEARY) ? dvx * delx + dvy * dely + dvz * delz : 0.0;
+      double s_r, s_v, c_i, c_j;
+      sphf_pair(PRESSURE, VISCOSITY, xi, &a, &b, r, dwdr, eta2, vr_est, &s_r, &s_v, &c_i, &c_j);
       const double fx = s_r * delx + s_v * dvx;
       const double fy = s_r * dely + s_v * dvy;
       const double fz = s_r * delz + s_v * dvz;
-
       const double vr = (v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely +
           (v[i][2] - v[j][2]) * delz;
       fx_i += fx;
       fy_i += fy;
       fz_i += fz;
-      drho_i += sphf_continuity_pair(PRESSURE, m_j, rho_i, rho_j, dwdr_r) * vr;
+      drho_i += c_i * vr;
       if (NEWTON_PAIR || j < nlocal) {
         f[j][0] -= fx;
         f[j][1] -= fy;
         f[j][2] -= fz;
-        drho[j] += sphf_continuity_pair(PRESSURE, m_i, rho_j, rho_i, dwdr_r) * vr;
+        drho[j] += c_j * vr;
       }
       if (evflag) ev_tally_xyz(i, j, nlocal, NEWTON_PAIR, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
     }
@@ -475,7 +469,7 @@ void PairSPHHarmonicVisc::read_restart(FILE *fp)
 
 double PairSPHHarmonicVisc::memory_usage()
 {
-  return Pair::memory_usage() + 3.0 * nmax * sizeof(double);
+  return Pair::memory_usage() + 4.0 * nmax * sizeof(double);
 }
 
 /* ----------------------------------------------------------------------

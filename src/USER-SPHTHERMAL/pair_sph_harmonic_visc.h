@@ -49,7 +49,7 @@ class PairSPHHarmonicVisc : public Pair {
   int viscosity_varies;    // 1 when some viscosity depends on T
   int wall_groupbit;       // particles of every fix sph/wall/adami (no density diffusion)
   // per atom (owned and ghost), refreshed every step
-  double *pressure, *viscosity, *mass_of;
+  double *pressure, *viscosity, *mass_of, *volume;
   int nmax;
 
   void allocate();

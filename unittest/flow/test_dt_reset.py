@@ -195,7 +195,7 @@ def cmd_conduction(a):
         data = os.path.join(HERE, "..", "conduction", "rates.data")
         lmp_vars = {"case": a.case, "out": dump, "data": data, "steps": 10, "dump": 5}
         if a.h:
-            lmp_vars["dtargs"] = f"thermal 0.1 h {a.h}"
+            lmp_vars["dtargs"] = f"h {a.h}"
             h = a.h
         rows = thermo_runs(run_lammps(a, "in.dt_conduction", lmp_vars, cwd=tmp))[0]
         snapshots = read_dump(dump)
@@ -269,7 +269,7 @@ def flow_h(n, bounds):
 def cmd_flow(a):
     lmp_vars, active0 = CASES[a.case]
     lmp_vars = dict({"n": 12, "steps": 20, "dump": 10, "mu": 0.248, "eos": "linear",
-                     "dtargs": "acoustic 0.25", "every": 1}, **lmp_vars)
+                     "dtargs": "min 0", "every": 1}, **lmp_vars)
     coeff, bounds = coefficients(lmp_vars["dtargs"])
     h = flow_h(lmp_vars["n"], bounds)
     with tempfile.TemporaryDirectory() as tmp:

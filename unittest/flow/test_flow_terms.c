@@ -1,5 +1,5 @@
 /* Unit tests of sph_eos.h and sph_flow.h with sph_kernels.h, in C99.
-   usage: test_flow_terms eos | symmetry | dissipation | laplacian */
+   usage: test_flow_terms eos | symmetry | dissipation | laplacian | fused */
 
 #include "sph_eos.h"
 #include "sph_flow.h"
@@ -183,6 +183,43 @@ static void check_laplacian(void)
   }
 }
 
+/* the pair loop's one-division form equals the separate terms */
+static void check_fused(void)
+{
+  for (int n = 0; n < 3000; n++) {
+    const sphf_particle a = {uniform(0.1, 10.0), uniform(1.0, 1000.0), 0.0, uniform(-100.0, 100.0),
+                             uniform(0.0, 2.0)};
+    const sphf_particle b = {uniform(0.1, 10.0), uniform(1.0, 1000.0), 0.0, uniform(-100.0, 100.0),
+                             (n % 7 == 0) ? 0.0 : uniform(0.0, 2.0)};
+    sphf_particle pa = a, pb = b;
+    pa.vol = pa.m / pa.rho;
+    pb.vol = pb.m / pb.rho;
+    if (n % 11 == 0) pa.mu = 0.0; /* both inviscid now and then */
+    const double r = uniform(0.01, 1.0), dwdr = -uniform(0.1, 10.0), eta2 = uniform(0.0, 0.01);
+    const double vr = uniform(-1.0, 1.0);
+    for (int pf = 0; pf < SPHF_P_NFORMS; pf++)
+      for (int vf = 0; vf < SPHF_V_NFORMS; vf++) {
+        double s_r, s_v, c_a, c_b;
+        sphf_pair(pf, vf, SPHF_XI_CLEARY, &pa, &pb, r, dwdr, eta2, vr, &s_r, &s_v, &c_a, &c_b);
+        const double dwdr_r = dwdr / r, inv = 1.0 / (r * r + eta2), dwdr_rr = dwdr * r * inv;
+        double want_r = sphf_pressure_pair(pf, pa.m, pb.m, pa.rho, pb.rho, pa.p, pb.p, dwdr_r);
+        const double visc = sphf_viscosity_pair(vf, SPHF_XI_CLEARY, pa.m, pb.m, pa.rho, pb.rho,
+                                                pa.mu, pb.mu, vr, dwdr_r, inv, dwdr_rr);
+        double want_v = 0.0;
+        if (vf == SPHF_V_CLEARY)
+          want_r += visc;
+        else
+          want_v = visc;
+        const double want_ca = sphf_continuity_pair(pf, pb.m, pa.rho, pb.rho, dwdr_r);
+        const double want_cb = sphf_continuity_pair(pf, pa.m, pb.rho, pa.rho, dwdr_r);
+        expect(near(s_r, want_r, 1e-12), "fused s_r", s_r, want_r);
+        expect(near(s_v, want_v, 1e-12), "fused s_v", s_v, want_v);
+        expect(near(c_a, want_ca, 1e-12), "fused c_a", c_a, want_ca);
+        expect(near(c_b, want_cb, 1e-12), "fused c_b", c_b, want_cb);
+      }
+  }
+}
+
 int main(int argc, char **argv)
 {
   const char *check = (argc > 1) ? argv[1] : "";
@@ -194,8 +231,10 @@ int main(int argc, char **argv)
     check_dissipation();
   else if (strcmp(check, "laplacian") == 0)
     check_laplacian();
+  else if (strcmp(check, "fused") == 0)
+    check_fused();
   else {
-    printf("usage: test_flow_terms eos | symmetry | dissipation | laplacian\n");
+    printf("usage: test_flow_terms eos | symmetry | dissipation | laplacian | fused\n");
     return 2;
   }
   if (failures == 0) printf("PASS %s\n", check);

@@ -1,0 +1,110 @@
+"""Flow benchmark: cost per particle-step of a thermal-flow step (continuity,
+momentum, energy) with this package's pair sph/harmonic/visc + pair
+sph/cleary/heat against LAMMPS's sph/taitwater/morris + sph/heatconduction
+(both as pair hybrid/overlay) on the same particles, kernel (Lucy) and
+cutoff, measured in the same run of this script; and the cost of each of
+our two pairs alone, to judge whether fusing them into one pair loop would
+pay. Serial runs, one at a time, each the fastest of --repeat runs. Writes
+results.md here (or in --out).
+
+  /usr/bin/python3 bench/flow/run_bench.py [--quick] [--lmp ...] [--plugin ...]
+"""
+
+import argparse
+import os
+import re
+import resource
+import subprocess
+import tempfile
+
+here = os.path.dirname(os.path.abspath(__file__))
+root = os.path.normpath(os.path.join(here, "..", ".."))
+
+
+def cpu_seconds(cmd, workdir):
+    """CPU time of a child process: on a shared machine wall time counts the
+    waiting too."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    subprocess.run(cmd, cwd=workdir, check=True, capture_output=True,
+                   env=dict(os.environ, OMP_NUM_THREADS="1"))
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+
+
+def cost(args, workdir, lmp_vars):
+    """Pair CPU time per particle-step (s), the fastest of --repeat runs: the
+    CPU time of the run (set-up included, a few % of it) times the pair's
+    share of the loop time in LAMMPS's timing breakdown."""
+    cmd = [args.lmp, "-in", os.path.join(here, "in.bench"), "-var", "plugin", args.plugin]
+    for k, v in lmp_vars.items():
+        if k != "steps":
+            cmd += ["-var", k, str(v)]
+    best = None
+    for _ in range(args.repeat):
+        total = cpu_seconds(cmd + ["-var", "steps", str(lmp_vars["steps"]), "-log", "log.lammps"],
+                            workdir)
+        log = open(os.path.join(workdir, "log.lammps")).read()
+        steps, natoms = (int(v) for v in re.findall(
+            r"Loop time of [0-9.eE+-]+ on \d+ procs for (\d+) steps with (\d+) atoms", log)[-1])
+        share = float(re.findall(r"^Pair\s+\|.*\|\s+([0-9.]+)\s*$", log, re.M)[-1]) / 100.0
+        c = total * share / (steps * natoms)
+        best = c if best is None or c < best else best
+    return best
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--lmp", default=os.path.join(root, "build", "lmp"))
+    p.add_argument("--plugin", default=os.path.join(root, "build", "sphthermalplugin.so"))
+    p.add_argument("--repeat", type=int, help="runs per point (default 3, 1 with --quick)")
+    p.add_argument("--quick", action="store_true", help="one size, one repeat")
+    p.add_argument("--out", default=here)
+    args = p.parse_args()
+    if args.repeat is None:
+        args.repeat = 1 if args.quick else 3
+    sizes = [60] if args.quick else [60, 120]
+    steps = 300 if args.quick else 1000
+    workdir = tempfile.mkdtemp(prefix="sphflowbench")
+
+    rows = []
+    for n in sizes:
+        base = {"n": n, "steps": steps}
+        # the same particles, kernel (Lucy) and cutoff (2.6 dx) for both packages
+        lammps = cost(args, workdir, dict(base, pair="lammps", kernel="lucy", hdx=2.6))
+        ours = cost(args, workdir, dict(base, pair="ours", kernel="lucy", hdx=2.6))
+        flow = cost(args, workdir, dict(base, pair="flow", kernel="lucy", hdx=2.6))
+        heat = cost(args, workdir, dict(base, pair="heat", kernel="lucy", hdx=2.6))
+        rows.append((n, "lucy, cutoff 2.6 dx", lammps, ours, flow, heat))
+        print(f"n = {n}: LAMMPS {1e6 * lammps:.3f} us, ours {1e6 * ours:.3f} us "
+              f"(ratio {ours / lammps:.2f}); flow alone {1e6 * flow:.3f}, heat alone {1e6 * heat:.3f}")
+        if not args.quick:
+            for kernel, hdx in [("quintic", 1.0), ("wendland", 1.3), ("cubic", 1.3)]:
+                ours_k = cost(args, workdir, dict(base, pair="ours", kernel=kernel, hdx=hdx))
+                flow_k = cost(args, workdir, dict(base, pair="flow", kernel=kernel, hdx=hdx))
+                heat_k = cost(args, workdir, dict(base, pair="heat", kernel=kernel, hdx=hdx))
+                cut = {"quintic": 3, "wendland": 2, "cubic": 2}[kernel] * hdx
+                rows.append((n, f"{kernel}, h = {hdx} dx (cutoff {cut:.1f} dx)", None, ours_k, flow_k,
+                             heat_k))
+                print(f"n = {n}, {kernel}: ours {1e6 * ours_k:.3f} us")
+
+    with open(os.path.join(args.out, "results.md"), "w") as f:
+        f.write("# Flow benchmark results\n\n")
+        f.write("Pair CPU time per particle-step (microseconds), serial, the fastest of "
+                f"{args.repeat} runs of {steps} steps; n x n particles in a periodic box "
+                "(2-D), shear flow and temperature field, fix sph. *thermal flow* = continuity, "
+                "momentum and energy: ours = `sph/harmonic/visc` (delta 0, as LAMMPS has no "
+                "density diffusion) + `sph/cleary/heat`; LAMMPS = `sph/taitwater/morris` + "
+                "`sph/heatconduction`, both as `pair hybrid/overlay`, Lucy kernel on the same "
+                "cutoff. Written by `bench/flow/run_bench.py`.\n\n")
+        f.write("| particles | kernel | LAMMPS thermal flow | ours thermal flow | ratio | ours: flow pair alone | ours: heat pair alone |\n")
+        f.write("|---|---|---|---|---|---|---|\n")
+        for n, kernel, lammps, ours, flow, heat in rows:
+            lt = f"{1e6 * lammps:.3f}" if lammps else "-"
+            ratio = f"{ours / lammps:.2f}" if lammps else "-"
+            f.write(f"| {n} x {n} | {kernel} | {lt} | {1e6 * ours:.3f} | {ratio} | {1e6 * flow:.3f} | "
+                    f"{1e6 * heat:.3f} |\n")
+    print("wrote", os.path.join(args.out, "results.md"))
+
+
+if __name__ == "__main__":
+    main()
