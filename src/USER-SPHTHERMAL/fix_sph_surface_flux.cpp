@@ -12,6 +12,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "force.h"
 #include "update.h"
 
 #include <cmath>
@@ -83,9 +84,19 @@ int FixSPHSurfaceFlux::setmask()
   return POST_FORCE;
 }
 
+/* ----------------------------------------------------------------------
+   the half-step weight of fix sph and fix sph/stationary (with ftm2v as they
+   have it), renewed when a timestep fix changes dt
+------------------------------------------------------------------------- */
+
+void FixSPHSurfaceFlux::reset_dt()
+{
+  dt_half = 0.5 * update->dt * force->ftm2v;
+}
+
 void FixSPHSurfaceFlux::init()
 {
-  dt_half = 0.5 * update->dt;
+  reset_dt();
   area = pow(spacing, domain->dimension - 1);
 }
 

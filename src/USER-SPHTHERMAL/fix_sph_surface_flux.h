@@ -21,6 +21,7 @@ class FixSPHSurfaceFlux : public Fix {
   FixSPHSurfaceFlux(class LAMMPS *, int, char **);
   int setmask() override;
   void init() override;
+  void reset_dt() override;
   void setup(int) override;
   void post_force(int) override;
   double compute_scalar() override;

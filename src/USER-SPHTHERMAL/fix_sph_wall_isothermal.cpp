@@ -13,6 +13,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "force.h"
 #include "memory.h"
 #include "update.h"
 
@@ -85,9 +86,19 @@ int FixSPHWallIsothermal::setmask()
 
 /* ---------------------------------------------------------------------- */
 
+/* ----------------------------------------------------------------------
+   the half-step weight of fix sph and fix sph/stationary (with ftm2v as they
+   have it), renewed when a timestep fix changes dt
+------------------------------------------------------------------------- */
+
+void FixSPHWallIsothermal::reset_dt()
+{
+  dt_half = 0.5 * update->dt * force->ftm2v;
+}
+
 void FixSPHWallIsothermal::init()
 {
-  dt_half = 0.5 * update->dt;
+  reset_dt();
   // the wall is at its temperature before the first force evaluation
   const double *const cv = atom->cv;
   const int *const mask = atom->mask;

@@ -22,6 +22,7 @@ class FixSPHWallIsothermal : public Fix {
   ~FixSPHWallIsothermal() override;
   int setmask() override;
   void init() override;
+  void reset_dt() override;
   void setup(int) override;
   void post_force(int) override;
   double compute_scalar() override;
