@@ -36,13 +36,14 @@ static const char cmd[] = "pair_style sph/harmonic/visc";
 
 PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     Pair(lmp), kernel_kind(-1), pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI),
-    cut_global(0.0), xi(SPHF_XI_CLEARY), eta_factor(0.1), delta(0.1), eta2(0.0),
+    cut_global(0.0), xi(SPHF_XI_CLEARY), eta_factor(0.1), delta(0.1), hydrostatic(0), eta2(0.0),
     materials(nullptr), viscosity_varies(0), wall_groupbit(0), pressure(nullptr),
     viscosity(nullptr), mass_of(nullptr), volume(nullptr), nmax(0)
 {
   restartinfo = 1;
   single_enable = 0;
   comm_forward = 3;
+  gravity[0] = gravity[1] = gravity[2] = 0.0;
   memset(&kernel, 0, sizeof(kernel));
 }
 
@@ -98,10 +99,13 @@ template <int KERNEL> void PairSPHHarmonicVisc::eval_kernel()
       eval_pressure<KERNEL, SPHF_P_AVERAGED>();
   }
   if (delta > 0.0) {
-    if (force->newton_pair)
-      eval_diffusion<KERNEL, 1>();
-    else
-      eval_diffusion<KERNEL, 0>();
+    const int flags = (force->newton_pair ? 1 : 0) | (hydrostatic ? 2 : 0);
+    switch (flags) {
+      case 0: eval_diffusion<KERNEL, 0, 0>(); break;
+      case 1: eval_diffusion<KERNEL, 1, 0>(); break;
+      case 2: eval_diffusion<KERNEL, 0, 1>(); break;
+      case 3: eval_diffusion<KERNEL, 1, 1>(); break;
+    }
   }
 }
 
@@ -239,11 +243,15 @@ void PairSPHHarmonicVisc::eval()
 }
 
 /* ----------------------------------------------------------------------
-   density diffusion of Molteni & Colagrossi (seed 003 eqs 5-6), not across
-   walls (the seed sets rho_j = rho_i for wall particles)
+   density diffusion of Molteni & Colagrossi (seed 003 eqs 5-6), or of
+   Fourtakas et al. (seed 004 eq 39), which diffuses only the departure from
+   the hydrostatic density difference rho^H_ba = rho(P_b + rho0 g . r_ba) -
+   rho0 (by the equation of state of a), so that a column at rest under
+   gravity stays at rest; not across walls (the seeds set rho_b = rho_a for
+   wall particles)
 ------------------------------------------------------------------------- */
 
-template <int KERNEL, int NEWTON_PAIR> void PairSPHHarmonicVisc::eval_diffusion()
+template <int KERNEL, int NEWTON_PAIR, int HYDROSTATIC> void PairSPHHarmonicVisc::eval_diffusion()
 {
   const double *const *const x = atom->x;
   const double *const rho = atom->rho;
@@ -258,7 +266,7 @@ template <int KERNEL, int NEWTON_PAIR> void PairSPHHarmonicVisc::eval_diffusion(
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     if (mask[i] & wall_groupbit) continue;
-    const double c0_i = materials->eos(type[i])->c0;
+    const sphe_eos *const eos_i = materials->eos(type[i]);
     const int *const jlist = list->firstneigh[i];
     double drho_i = 0.0;
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
@@ -271,12 +279,18 @@ template <int KERNEL, int NEWTON_PAIR> void PairSPHHarmonicVisc::eval_diffusion(
       if (rsq >= cutsq_kernel) continue;
       const double r = sqrt(rsq);
       const double dwdr_r = dw_scale * sphk_df(KERNEL, r * inv_h) / r;
+      const sphe_eos *const eos_j = materials->eos(type[j]);
       // one coefficient per pair: the mean speed of sound of the two
-      const double delta_h_c0 = delta * kernel.h * 0.5 * (c0_i + materials->eos(type[j])->c0);
-      const double drho_ij = rho[j] - rho[i];
-      drho_i += sphf_diffusion_pair(delta_h_c0, mass_of[j], rho[j], dwdr_r) * drho_ij;
+      const double delta_h_c0 = delta * kernel.h * 0.5 * (eos_i->c0 + eos_j->c0);
+      double drho_ji = rho[j] - rho[i], drho_ij = -drho_ji;
+      if (HYDROSTATIC) {
+        const double g_r = gravity[0] * delx + gravity[1] * dely + gravity[2] * delz;
+        drho_ji -= sphe_density(eos_i, eos_i->p_background - eos_i->rho0 * g_r) - eos_i->rho0;
+        drho_ij -= sphe_density(eos_j, eos_j->p_background + eos_j->rho0 * g_r) - eos_j->rho0;
+      }
+      drho_i += sphf_diffusion_pair(delta_h_c0, mass_of[j], rho[j], dwdr_r) * drho_ji;
       if (NEWTON_PAIR || j < nlocal)
-        drho[j] -= sphf_diffusion_pair(delta_h_c0, mass_of[i], rho[i], dwdr_r) * drho_ij;
+        drho[j] += sphf_diffusion_pair(delta_h_c0, mass_of[i], rho[i], dwdr_r) * drho_ij;
     }
     drho[i] += drho_i;
   }
@@ -297,6 +311,7 @@ void PairSPHHarmonicVisc::allocate()
 /* ----------------------------------------------------------------------
    pair_style sph/harmonic/visc kernel cutoff [pressure symmetric|sum|averaged]
      [viscosity cleary|adami|morris] [xi value] [eta f] [delta value]
+     [fourtakas gx gy gz]
 ------------------------------------------------------------------------- */
 
 void PairSPHHarmonicVisc::settings(int narg, char **arg)
@@ -317,6 +332,8 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
   xi = SPHF_XI_CLEARY;
   eta_factor = -1.0;    // the default depends on the viscosity form
   delta = 0.1;    // seed 003: "not a tunable parameter", 0.1 for all flows
+  hydrostatic = 0;
+  gravity[0] = gravity[1] = gravity[2] = 0.0;
   int iarg = 2;
   while (iarg < narg) {
     if (iarg + 1 >= narg)
@@ -341,6 +358,13 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
       eta_factor = utils::numeric(FLERR, value, false, lmp);
       if (eta_factor < 0.0)
         error->all(FLERR, "Illegal {} command: eta {} must be >= 0", cmd, value);
+    } else if (strcmp(arg[iarg], "fourtakas") == 0) {
+      if (iarg + 3 >= narg)
+        error->all(FLERR, "Illegal {} command: 'fourtakas' needs 3 values (gx gy gz)", cmd);
+      hydrostatic = 1;
+      for (int k = 0; k < 3; k++) gravity[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
+      iarg += 4;
+      continue;
     } else if (strcmp(arg[iarg], "delta") == 0) {
       delta = utils::numeric(FLERR, value, false, lmp);
       if (delta < 0.0) error->all(FLERR, "Illegal {} command: delta {} must be >= 0", cmd, value);
@@ -422,22 +446,24 @@ double PairSPHHarmonicVisc::init_one(int, int)
 
 void PairSPHHarmonicVisc::write_restart_settings(FILE *fp)
 {
-  const int ints[3] = {kernel_kind, pressure_form, viscosity_form};
-  const double doubles[4] = {cut_global, xi, eta_factor, delta};
-  fwrite(ints, sizeof(int), 3, fp);
-  fwrite(doubles, sizeof(double), 4, fp);
+  const int ints[4] = {kernel_kind, pressure_form, viscosity_form, hydrostatic};
+  const double doubles[7] = {cut_global, xi, eta_factor, delta, gravity[0], gravity[1], gravity[2]};
+  fwrite(ints, sizeof(int), 4, fp);
+  fwrite(doubles, sizeof(double), 7, fp);
 }
 
 void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
 {
-  int ints[3];
-  double doubles[4];
+  int ints[4];
+  double doubles[7];
   if (comm->me == 0) {
-    utils::sfread(FLERR, ints, sizeof(int), 3, fp, nullptr, error);
-    utils::sfread(FLERR, doubles, sizeof(double), 4, fp, nullptr, error);
+    utils::sfread(FLERR, ints, sizeof(int), 4, fp, nullptr, error);
+    utils::sfread(FLERR, doubles, sizeof(double), 7, fp, nullptr, error);
   }
-  MPI_Bcast(ints, 3, MPI_INT, 0, world);
-  MPI_Bcast(doubles, 4, MPI_DOUBLE, 0, world);
+  MPI_Bcast(ints, 4, MPI_INT, 0, world);
+  MPI_Bcast(doubles, 7, MPI_DOUBLE, 0, world);
+  hydrostatic = ints[3];
+  for (int k = 0; k < 3; k++) gravity[k] = doubles[4 + k];
   kernel_kind = ints[0];
   pressure_form = ints[1];
   viscosity_form = ints[2];

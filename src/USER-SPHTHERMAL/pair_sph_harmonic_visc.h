@@ -43,6 +43,8 @@ class PairSPHHarmonicVisc : public Pair {
   double xi;              // factor of the cleary viscosity
   double eta_factor;      // eta = eta_factor * h
   double delta;           // density diffusion (seed 003 eq 5), 0: none
+  int hydrostatic;        // 1: Fourtakas's diffusion (seed 004 eq 39) with gravity below
+  double gravity[3];
   sphk_kernel kernel;     // kernel fixed to this dimension and cutoff
   double eta2;            // eta^2, regularises r -> 0
   class FixSPHMaterials *materials;
@@ -58,7 +60,7 @@ class PairSPHHarmonicVisc : public Pair {
   template <int KERNEL, int PRESSURE> void eval_pressure();
   template <int KERNEL, int PRESSURE, int VISCOSITY> void eval_newton();
   template <int KERNEL, int PRESSURE, int VISCOSITY, int NEWTON_PAIR> void eval();
-  template <int KERNEL, int NEWTON_PAIR> void eval_diffusion();
+  template <int KERNEL, int NEWTON_PAIR, int HYDROSTATIC> void eval_diffusion();
 };
 
 }    // namespace LAMMPS_NS
