@@ -28,24 +28,17 @@ using namespace LAMMPS_NS;
 /* ---------------------------------------------------------------------- */
 
 PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
-    Pair(lmp), kernel_kind(-1), mean(SPHC_HARMONIC), cut_global(0.0), eta_factor(0.1), eta2(0.0),
-    materials(nullptr), conductivity_varies(0), conductance(nullptr), conductivity(nullptr),
-    nmax(0)
+    PairSPHKernel(lmp, "sph/cleary/heat", "conductivities come from fix sph/materials"),
+    mean(SPHC_HARMONIC), eta2(0.0), materials(nullptr), conductivity_varies(0),
+    conductance(nullptr), conductivity(nullptr), nmax(0)
 {
-  restartinfo = 1;
-  single_enable = 0;
-  memset(&kernel, 0, sizeof(kernel));
 }
 
 /* ---------------------------------------------------------------------- */
 
 PairSPHClearyHeat::~PairSPHClearyHeat()
 {
-  if (allocated) {
-    memory->destroy(setflag);
-    memory->destroy(cutsq);
-    memory->destroy(conductance);
-  }
+  memory->destroy(conductance);
   memory->destroy(conductivity);
 }
 
@@ -192,16 +185,11 @@ void PairSPHClearyHeat::eval()
 
 void PairSPHClearyHeat::allocate()
 {
-  allocated = 1;
+  PairSPHKernel::allocate();
   const int n = atom->ntypes;
-  memory->create(setflag, n + 1, n + 1, "pair:setflag");
-  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
   memory->create(conductance, n + 1, n + 1, "pair:conductance");
   for (int i = 0; i <= n; i++)
-    for (int j = 0; j <= n; j++) {
-      setflag[i][j] = 0;
-      conductance[i][j] = 0.0;
-    }
+    for (int j = 0; j <= n; j++) conductance[i][j] = 0.0;
 }
 
 /* ----------------------------------------------------------------------
@@ -210,23 +198,9 @@ void PairSPHClearyHeat::allocate()
 
 void PairSPHClearyHeat::settings(int narg, char **arg)
 {
-  if (narg < 2)
-    error->all(FLERR, "Illegal pair_style sph/cleary/heat command: expected <kernel> <cutoff>");
-
-  kernel_kind = sphk_lookup(arg[0]);
-  if (kernel_kind < 0)
-    error->all(FLERR,
-               "Illegal pair_style sph/cleary/heat command: unknown kernel '{}' "
-               "(lucy, cubic, quintic or wendland)",
-               arg[0]);
-
-  cut_global = utils::numeric(FLERR, arg[1], false, lmp);
-  if (cut_global <= 0.0)
-    error->all(FLERR, "Illegal pair_style sph/cleary/heat command: cutoff {} must be > 0", arg[1]);
-
+  int iarg = parse_kernel(narg, arg);
   eta_factor = 0.1;
   mean = SPHC_HARMONIC;
-  int iarg = 2;
   while (iarg < narg) {
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal pair_style sph/cleary/heat command: missing value after '{}'",
@@ -253,30 +227,6 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
   }
 }
 
-/* ----------------------------------------------------------------------
-   pair_coeff * *: the conductivities come from fix sph/materials
-------------------------------------------------------------------------- */
-
-void PairSPHClearyHeat::coeff(int narg, char **arg)
-{
-  if (narg != 2)
-    error->all(FLERR,
-               "Illegal pair_coeff command for sph/cleary/heat: expected I J only (conductivities "
-               "come from fix sph/materials)");
-  if (!allocated) allocate();
-
-  int ilo, ihi, jlo, jhi;
-  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
-  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-  int count = 0;
-  for (int i = ilo; i <= ihi; i++)
-    for (int j = MAX(jlo, i); j <= jhi; j++) {
-      setflag[i][j] = 1;
-      count++;
-    }
-  if (count == 0) error->all(FLERR, "Illegal pair_coeff command for sph/cleary/heat: no type pair");
-}
-
 /* ---------------------------------------------------------------------- */
 
 void PairSPHClearyHeat::init_style()
@@ -301,9 +251,7 @@ void PairSPHClearyHeat::init_style()
       dummy_walls.emplace_back(modify->fix[ifix]->groupbit, *t_wall);
     }
 
-  kernel = sphk_make(kernel_kind, domain->dimension, cut_global);
-  const double eta = eta_factor * kernel.h;
-  eta2 = eta * eta;
+  eta2 = init_kernel();
 
   neighbor->request(this, instance_me);
 }
@@ -343,40 +291,9 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
   MPI_Bcast(&eta_factor, 1, MPI_DOUBLE, 0, world);
 }
 
-void PairSPHClearyHeat::write_restart(FILE *fp)
-{
-  write_restart_settings(fp);
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) fwrite(&setflag[i][j], sizeof(int), 1, fp);
-}
-
-void PairSPHClearyHeat::read_restart(FILE *fp)
-{
-  read_restart_settings(fp);
-  allocate();
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
-      if (comm->me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
-      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
-    }
-}
-
 /* ---------------------------------------------------------------------- */
 
 double PairSPHClearyHeat::memory_usage()
 {
   return Pair::memory_usage() + (double) nmax * sizeof(double);
-}
-
-/* ----------------------------------------------------------------------
-   settings for styles that evaluate the same kernel (compute sph/heatflux/atom)
-------------------------------------------------------------------------- */
-
-void *PairSPHClearyHeat::extract(const char *name, int &dim)
-{
-  dim = 0;
-  if (strcmp(name, "kernel_kind") == 0) return (void *) &kernel_kind;
-  if (strcmp(name, "cutoff") == 0) return (void *) &cut_global;
-  if (strcmp(name, "eta_factor") == 0) return (void *) &eta_factor;
-  return nullptr;
 }

@@ -12,36 +12,27 @@ PairStyle(sph/cleary/heat,PairSPHClearyHeat);
 #ifndef LMP_PAIR_SPH_CLEARY_HEAT_H
 #define LMP_PAIR_SPH_CLEARY_HEAT_H
 
-#include "pair.h"
-#include "sph_kernels.h"
+#include "pair_sph_kernel.h"
 
 #include <utility>
 #include <vector>
 
 namespace LAMMPS_NS {
 
-class PairSPHClearyHeat : public Pair {
+class PairSPHClearyHeat : public PairSPHKernel {
  public:
   PairSPHClearyHeat(class LAMMPS *);
   ~PairSPHClearyHeat() override;
   void compute(int, int) override;
   void settings(int, char **) override;
-  void coeff(int, char **) override;
   void init_style() override;
   double init_one(int, int) override;
-  void write_restart(FILE *) override;
-  void read_restart(FILE *) override;
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   double memory_usage() override;
-  void *extract(const char *, int &) override;
 
  protected:
-  int kernel_kind;            // SPHK_* of sph_kernels.h
   int mean;                   // SPHC_HARMONIC or SPHC_ARITHMETIC of sph_conduction.h
-  double cut_global;          // kernel support radius
-  double eta_factor;          // eta = eta_factor * h
-  sphk_kernel kernel;         // kernel fixed to this dimension and cutoff
   double eta2;                // eta^2, regularises r -> 0
   class FixSPHMaterials *materials;
   int conductivity_varies;    // 1 when some conductivity depends on T
@@ -51,7 +42,7 @@ class PairSPHClearyHeat : public Pair {
   // dummy particles of fix sph/wall/dirichlet: group bit and wall temperature
   std::vector<std::pair<int, double>> dummy_walls;
 
-  void allocate();
+  void allocate() override;
   void update_conductivity();
   template <int KERNEL> void eval_kernel();
   template <int KERNEL, int MEAN> void eval_mean();

@@ -35,24 +35,18 @@ static const char cmd[] = "pair_style sph/harmonic/visc";
 /* ---------------------------------------------------------------------- */
 
 PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
-    Pair(lmp), kernel_kind(-1), pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI),
-    cut_global(0.0), xi(SPHF_XI_CLEARY), eta_factor(0.1), delta(0.1), hydrostatic(0), eta2(0.0),
-    materials(nullptr), viscosity_varies(0), wall_groupbit(0), pressure(nullptr),
-    viscosity(nullptr), mass_of(nullptr), volume(nullptr), nmax(0)
+    PairSPHKernel(lmp, "sph/harmonic/visc",
+                  "viscosities and equations of state come from fix sph/materials"),
+    pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI), xi(SPHF_XI_CLEARY), delta(0.1),
+    hydrostatic(0), eta2(0.0), materials(nullptr), viscosity_varies(0), wall_groupbit(0),
+    pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr), nmax(0)
 {
-  restartinfo = 1;
-  single_enable = 0;
   comm_forward = 3;
   gravity[0] = gravity[1] = gravity[2] = 0.0;
-  memset(&kernel, 0, sizeof(kernel));
 }
 
 PairSPHHarmonicVisc::~PairSPHHarmonicVisc()
 {
-  if (allocated) {
-    memory->destroy(setflag);
-    memory->destroy(cutsq);
-  }
   memory->destroy(pressure);
   memory->destroy(viscosity);
   memory->destroy(mass_of);
@@ -296,18 +290,6 @@ template <int KERNEL, int NEWTON_PAIR, int HYDROSTATIC> void PairSPHHarmonicVisc
   }
 }
 
-/* ---------------------------------------------------------------------- */
-
-void PairSPHHarmonicVisc::allocate()
-{
-  allocated = 1;
-  const int n = atom->ntypes;
-  memory->create(setflag, n + 1, n + 1, "pair:setflag");
-  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
-  for (int i = 0; i <= n; i++)
-    for (int j = 0; j <= n; j++) setflag[i][j] = 0;
-}
-
 /* ----------------------------------------------------------------------
    pair_style sph/harmonic/visc kernel cutoff [pressure symmetric|sum|averaged]
      [viscosity cleary|adami|morris] [xi value] [eta f] [delta value]
@@ -316,17 +298,7 @@ void PairSPHHarmonicVisc::allocate()
 
 void PairSPHHarmonicVisc::settings(int narg, char **arg)
 {
-  if (narg < 2) error->all(FLERR, "Illegal {} command: expected <kernel> <cutoff>", cmd);
-
-  kernel_kind = sphk_lookup(arg[0]);
-  if (kernel_kind < 0)
-    error->all(FLERR,
-               "Illegal {} command: unknown kernel '{}' (lucy, cubic, quintic or wendland)", cmd,
-               arg[0]);
-  cut_global = utils::numeric(FLERR, arg[1], false, lmp);
-  if (cut_global <= 0.0)
-    error->all(FLERR, "Illegal {} command: cutoff {} must be > 0", cmd, arg[1]);
-
+  int iarg = parse_kernel(narg, arg);
   pressure_form = SPHF_P_AVERAGED;
   viscosity_form = SPHF_V_ADAMI;
   xi = SPHF_XI_CLEARY;
@@ -334,7 +306,6 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
   delta = 0.1;    // seed 003: "not a tunable parameter", 0.1 for all flows
   hydrostatic = 0;
   gravity[0] = gravity[1] = gravity[2] = 0.0;
-  int iarg = 2;
   while (iarg < narg) {
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal {} command: missing value after '{}'", cmd, arg[iarg]);
@@ -377,29 +348,6 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
   if (eta_factor < 0.0) eta_factor = (viscosity_form == SPHF_V_CLEARY) ? 0.1 : 0.01;
 }
 
-/* ----------------------------------------------------------------------
-   pair_coeff * *: viscosities and equations of state come from fix sph/materials
-------------------------------------------------------------------------- */
-
-void PairSPHHarmonicVisc::coeff(int narg, char **arg)
-{
-  if (narg != 2)
-    error->all(FLERR,
-               "Illegal pair_coeff command for sph/harmonic/visc: expected I J only (viscosities "
-               "and equations of state come from fix sph/materials)");
-  if (!allocated) allocate();
-  int ilo, ihi, jlo, jhi;
-  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
-  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-  int count = 0;
-  for (int i = ilo; i <= ihi; i++)
-    for (int j = MAX(jlo, i); j <= jhi; j++) {
-      setflag[i][j] = 1;
-      count++;
-    }
-  if (count == 0) error->all(FLERR, "Illegal pair_coeff command for sph/harmonic/visc: no type pair");
-}
-
 /* ---------------------------------------------------------------------- */
 
 void PairSPHHarmonicVisc::init_style()
@@ -430,9 +378,7 @@ void PairSPHHarmonicVisc::init_style()
     if (strcmp(modify->fix[ifix]->style, "sph/wall/adami") == 0)
       wall_groupbit |= modify->fix[ifix]->groupbit;
 
-  kernel = sphk_make(kernel_kind, domain->dimension, cut_global);
-  const double eta = eta_factor * kernel.h;
-  eta2 = eta * eta;
+  eta2 = init_kernel();
 
   neighbor->request(this, instance_me);
 }
@@ -473,24 +419,6 @@ void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
   delta = doubles[3];
 }
 
-void PairSPHHarmonicVisc::write_restart(FILE *fp)
-{
-  write_restart_settings(fp);
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) fwrite(&setflag[i][j], sizeof(int), 1, fp);
-}
-
-void PairSPHHarmonicVisc::read_restart(FILE *fp)
-{
-  read_restart_settings(fp);
-  allocate();
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
-      if (comm->me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
-      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
-    }
-}
-
 /* ---------------------------------------------------------------------- */
 
 double PairSPHHarmonicVisc::memory_usage()
@@ -506,11 +434,8 @@ double PairSPHHarmonicVisc::memory_usage()
 void *PairSPHHarmonicVisc::extract(const char *name, int &dim)
 {
   dim = 0;
-  if (strcmp(name, "kernel_kind") == 0) return (void *) &kernel_kind;
-  if (strcmp(name, "cutoff") == 0) return (void *) &cut_global;
-  if (strcmp(name, "eta_factor") == 0) return (void *) &eta_factor;
   if (strcmp(name, "xi") == 0) return (void *) &xi;
-  return nullptr;
+  return PairSPHKernel::extract(name, dim);
 }
 
 /* ----------------------------------------------------------------------

@@ -12,22 +12,18 @@ PairStyle(sph/harmonic/visc,PairSPHHarmonicVisc);
 #ifndef LMP_PAIR_SPH_HARMONIC_VISC_H
 #define LMP_PAIR_SPH_HARMONIC_VISC_H
 
-#include "pair.h"
-#include "sph_kernels.h"
+#include "pair_sph_kernel.h"
 
 namespace LAMMPS_NS {
 
-class PairSPHHarmonicVisc : public Pair {
+class PairSPHHarmonicVisc : public PairSPHKernel {
  public:
   PairSPHHarmonicVisc(class LAMMPS *);
   ~PairSPHHarmonicVisc() override;
   void compute(int, int) override;
   void settings(int, char **) override;
-  void coeff(int, char **) override;
   void init_style() override;
   double init_one(int, int) override;
-  void write_restart(FILE *) override;
-  void read_restart(FILE *) override;
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   double memory_usage() override;
@@ -36,16 +32,12 @@ class PairSPHHarmonicVisc : public Pair {
   void unpack_forward_comm(int, int, double *) override;
 
  protected:
-  int kernel_kind;        // SPHK_* of sph_kernels.h
   int pressure_form;      // SPHF_P_* of sph_flow.h (also selects the continuity form)
   int viscosity_form;     // SPHF_V_* of sph_flow.h
-  double cut_global;      // kernel support radius
   double xi;              // factor of the cleary viscosity
-  double eta_factor;      // eta = eta_factor * h
   double delta;           // density diffusion (seed 003 eq 5), 0: none
   int hydrostatic;        // 1: Fourtakas's diffusion (seed 004 eq 39) with gravity below
   double gravity[3];
-  sphk_kernel kernel;     // kernel fixed to this dimension and cutoff
   double eta2;            // eta^2, regularises r -> 0
   class FixSPHMaterials *materials;
   int viscosity_varies;    // 1 when some viscosity depends on T
@@ -54,7 +46,6 @@ class PairSPHHarmonicVisc : public Pair {
   double *pressure, *viscosity, *mass_of, *volume;
   int nmax;
 
-  void allocate();
   void update_atom_state();
   template <int KERNEL> void eval_kernel();
   template <int KERNEL, int PRESSURE> void eval_pressure();
