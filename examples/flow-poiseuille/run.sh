@@ -1,0 +1,34 @@
+#!/bin/sh
+# Run the transient Poiseuille example and print its error against the exact series.
+#   ./run.sh          40 particles across (8 columns, a periodic length of 4 m), then the
+#                     same with the viscous regularisation eta = 0.1 h of the pair's
+#                     default for comparison (about 1.5 minutes)
+#   ./run.sh quick    20 across, 4 columns (the same 4 m), the CI test flow.validation.poiseuille_20
+# Environment: LMP (LAMMPS binary), PLUGIN (sphthermalplugin.so), NP (MPI
+# ranks), OUT (output directory, default ./out), PYTHON (with numpy).
+set -e
+here=$(cd "$(dirname "$0")" && pwd)
+. "$here/../common.sh"
+
+if [ "${1:-}" = quick ]; then
+  size="-var n 20 -var ncol 4"
+  label="20 across"
+  # measured (README.md): max error 0.44 % of u_max (at t = 1200 s), max |vy| 0.023 %
+  limits="--max-error 0.55 --max-vy 0.1"
+else
+  size="-var n 40 -var ncol 8"
+  label="40 across"
+  # the issue's target: below 1 % of u_max at steady state
+  limits="--max-steady-error 1.0"
+fi
+
+rm -f poiseuille.dump.t*
+$run "$LMP" -in "$here/in.poiseuille" -var plugin "$PLUGIN" $size -log log.poiseuille
+"$PYTHON" "$here/analyse.py" poiseuille.dump --png poiseuille.png --label "$label" $limits
+if [ "${1:-}" != quick ]; then
+  rm -f poiseuille-eta0.1.dump.t*
+  $run "$LMP" -in "$here/in.poiseuille" -var plugin "$PLUGIN" $size -var eta 0.1 \
+    -var out poiseuille-eta0.1.dump -log log.poiseuille-eta0.1 > /dev/null
+  "$PYTHON" "$here/analyse.py" poiseuille-eta0.1.dump --png poiseuille-eta0.1.png \
+    --label "40 across, eta = 0.1 h" | tail -n 7
+fi
