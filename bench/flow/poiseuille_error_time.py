@@ -1,0 +1,93 @@
+"""Poiseuille error against run time: examples/flow-poiseuille at 10, 20, 40
+(and with --fine 80) particles across, quintic kernel (h = dx) and Wendland
+C2 (h = 2 dx), in the example's 4 m long periodic channel (n / 5 columns),
+against the series solution; the error is the largest over
+the four output times in % of u_max, the time the run's CPU seconds. Serial,
+one run per point. Writes poiseuille_error_time.png and appends a table to
+results.md here (or in --out).
+
+  /usr/bin/python3 bench/flow/poiseuille_error_time.py [--fine] [--lmp ...] [--plugin ...]
+"""
+
+import argparse
+import importlib.util
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+here = os.path.dirname(os.path.abspath(__file__))
+root = os.path.normpath(os.path.join(here, "..", ".."))
+example = os.path.join(root, "examples", "flow-poiseuille")
+sys.path.insert(0, os.path.join(root, "tools"))
+from lammps_dump import read_frames  # noqa: E402
+
+spec = importlib.util.spec_from_file_location("poiseuille", os.path.join(example, "analyse.py"))
+poiseuille = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(poiseuille)
+
+
+def run(args, workdir, n, kernel, hdx):
+    cmd = [args.lmp, "-in", os.path.join(example, "in.poiseuille"), "-var", "plugin", args.plugin,
+           "-var", "n", str(n), "-var", "ncol", str(n // 5), "-var", "kernel", kernel,
+           "-var", "hdx", str(hdx), "-var", "out", "p.dump", "-log", "none", "-screen", "none"]
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    subprocess.run(cmd, cwd=workdir, check=True, env=dict(os.environ, OMP_NUM_THREADS="1"))
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = after.ru_utime - before.ru_utime
+    worst = 0.0
+    for t in poiseuille.TIMES:
+        c = read_frames(os.path.join(workdir, f"p.dump.t{t}"))[-1][1]
+        worst = max(worst, 100 * np.abs(c["vx"] - poiseuille.exact(c["y"], t)).max() / poiseuille.UMAX)
+    return cpu, worst
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--lmp", default=os.path.join(root, "build", "lmp"))
+    p.add_argument("--plugin", default=os.path.join(root, "build", "sphthermalplugin.so"))
+    p.add_argument("--fine", action="store_true", help="also 80 across (several minutes)")
+    p.add_argument("--out", default=here)
+    args = p.parse_args()
+    workdir = tempfile.mkdtemp(prefix="sphpoiseuille")
+    sizes = [10, 20, 40] + ([80] if args.fine else [])
+    rows = []
+    for kernel, hdx in [("quintic", 1.0), ("wendland", 2.0)]:
+        for n in sizes:
+            cpu, err = run(args, workdir, n, kernel, hdx)
+            rows.append((kernel, hdx, n, cpu, err))
+            print(f"{kernel} h = {hdx} dx, {n} across: {cpu:.1f} s, max error {err:.3f} % of u_max")
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(5.6, 4.2))
+    for kernel, hdx in [("quintic", 1.0), ("wendland", 2.0)]:
+        pts = [(r[3], r[4], r[2]) for r in rows if r[0] == kernel]
+        ax.loglog([q[0] for q in pts], [q[1] for q in pts], "o-", label=f"{kernel}, h = {hdx} dx")
+        for cpu, err, n in pts:
+            ax.annotate(str(n), (cpu, err), fontsize=7)
+    ax.set_xlabel("CPU time (s)")
+    ax.set_ylabel("max error over 4 times (% of u_max)")
+    ax.set_title("Poiseuille Re = 65.2: error against run time", fontsize=9)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    png = os.path.join(args.out, "poiseuille_error_time.png")
+    fig.savefig(png, dpi=120)
+    with open(os.path.join(args.out, "results.md"), "a") as f:
+        f.write("\n## Poiseuille: error against run time\n\n")
+        f.write("`poiseuille_error_time.py`: examples/flow-poiseuille (Re = 65.2, to t = 1200 s), "
+                "largest error over t = 100, 300, 600, 1200 s in % of u_max; serial CPU time.\n\n")
+        f.write("| kernel | particles across | CPU time (s) | max error |\n|---|---|---|---|\n")
+        for kernel, hdx, n, cpu, err in rows:
+            f.write(f"| {kernel}, h = {hdx} dx | {n} | {cpu:.1f} | {err:.3f} % |\n")
+        f.write("\n![error against run time](poiseuille_error_time.png)\n")
+    print("wrote", png)
+
+
+if __name__ == "__main__":
+    main()
