@@ -7,8 +7,12 @@
      acoustic  C_c h / (c_i + |v_i|)        (seed 000 eq 5, 003 eq 18, 004 eq 21)
      force     C_f sqrt(h / |a_i|)           (003 eq 18, 004 eq 20)
      viscous   C_v h^2 rho_i / mu_i          (003 eq 18, 004 eq 22)
-     thermal   C_t h^2 rho_i cv_i / k_i      (000 eq 7, 003 eq 18, 004 eqs 23-25)
-   clamped to [dtmin, dtmax]. It is set at the setup of every run and then
+     thermal   C_t / lambda_i                (000 eq 7, 003 eq 18, 004 eqs 23-25)
+   clamped to [dtmin, dtmax]. lambda_i is the rate at which pair
+   sph/cleary/heat relaxes T_i towards its neighbours, with the conductance
+   the pair uses (either mean, any kernel, material ratio and disorder):
+   the explicit update of T is then a convex combination of the old
+   temperatures for C_t <= 1, so it is stable and overshoots nowhere. It is set at the setup of every run and then
    every N steps at the end of the step, the way fix dt/reset does it, so
    that the elapsed time (thermo keyword time) stays the sum of the steps.
 ------------------------------------------------------------------------- */
@@ -23,6 +27,7 @@
 #include "integrate.h"
 #include "modify.h"
 #include "pair.h"
+#include "sph_checks.h"
 #include "sph_eos.h"
 #include "sph_kernels.h"
 #include "sph_material_laws.h"
@@ -37,6 +42,12 @@ using namespace FixConst;
 
 static const char cmd[] = "fix sph/dt/reset";
 
+static const char *limit_name(int active)
+{
+  static const char *const names[] = {"no", "acoustic", "force", "viscous", "thermal", "bound"};
+  return names[active];
+}
+
 // "no limit": larger than any timestep, finite so that thermo can print it
 static constexpr double BIG = 1.0e300;
 
@@ -47,7 +58,7 @@ static const char *const sph_pairs[] = {"sph/harmonic/visc", "sph/cleary/heat"};
 
 FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), dtmin(0.0), dtmax(BIG), h_user(0.0), h(0.0), active(0), respa_flag(0),
-    warned(0), materials(nullptr)
+    warned(0), bound_warned(0), materials(nullptr), relax_rate(nullptr)
 {
   if (!atom->rho_flag || !atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Fix sph/dt/reset requires atom style sph (rho, esph, cv)");
@@ -59,11 +70,12 @@ FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR, "Illegal {} command: N must be a positive integer, not '{}'", cmd, arg[3]);
   nevery = (int) n;
 
-  // defaults: seed 003 eq 18 for the flow limits, Cleary's zeta = 0.1 (seed 000 eq 7)
-  coeff[ACOUSTIC] = 0.25;
+  // defaults: stable on every example of the package (doc: Stability);
+  // seed 003 eq 18 for the force and viscous limits
+  coeff[ACOUSTIC] = 0.1;
   coeff[FORCE] = 0.25;
   coeff[VISCOUS] = 0.125;
-  coeff[THERMAL] = 0.1;
+  coeff[THERMAL] = 0.5;
 
   static const char *const names[NLIMITS] = {"acoustic", "force", "viscous", "thermal"};
   int iarg = 4;
@@ -83,6 +95,11 @@ FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
     iarg += 2;
   }
+  if (coeff[THERMAL] > 1.0 && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix sph/dt/reset: thermal {} is above 1, where the explicit conduction update "
+                   "is no longer sure to be stable",
+                   coeff[THERMAL]);
   if (dtmin > dtmax)
     error->all(FLERR, "Illegal {} command: min {} is larger than max {}", cmd, dtmin, dtmax);
   if (coeff[ACOUSTIC] == 0.0 && coeff[FORCE] == 0.0 && coeff[VISCOUS] == 0.0 &&
@@ -161,8 +178,18 @@ void FixSPHDtReset::init()
 
   // the hub is needed only by the limits that read material properties
   materials = nullptr;
-  if (coeff[ACOUSTIC] > 0.0 || coeff[VISCOUS] > 0.0 || coeff[THERMAL] > 0.0)
+  if (coeff[ACOUSTIC] > 0.0 || coeff[VISCOUS] > 0.0)
     materials = FixSPHMaterials::find(lmp, "Fix sph/dt/reset");
+
+  // the thermal limit is the conduction pair's own relaxation rate
+  relax_rate = nullptr;
+  Pair *heat = force->pair_match("^sph/cleary/heat", 0);
+  if (coeff[THERMAL] > 0.0 && heat) {
+    int dim;
+    *(int *) heat->extract("relax_rate_wanted", dim) = 1;
+    relax_rate = (double **) heat->extract("relax_rate", dim);
+  }
+  bound_warned = 0;
 
   respa_flag = utils::strmatch(update->integrate_style, "^respa") ? 1 : 0;
 }
@@ -228,46 +255,53 @@ void FixSPHDtReset::choose_dt()
   const double hsq = h * h;
 
   double local[NLIMITS];
-  for (int k = 0; k < NLIMITS; k++) local[k] = BIG;
+  int bad[NLIMITS];
+  for (int k = 0; k < NLIMITS; k++) local[k] = BIG, bad[k] = 0;
+  // a limit of 0 or not a number (zero rho, overflow, ...) is an error
+  auto take = [&](int k, double dt) {
+    if (!(dt > 0.0))
+      bad[k] = 1;
+    else if (dt < local[k])
+      local[k] = dt;
+  };
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const int itype = type[i];
     const double vsq = v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2];
     const double fsq = f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2];
-    const double temperature = (cv[i] > 0.0) ? esph[i] / cv[i] : 0.0;
+    const double temperature = esph[i] / cv[i];
 
     // a limit whose property the type lacks does not apply to the particle
     if (coeff[ACOUSTIC] > 0.0) {
       const sphe_eos *eos = materials->eos(itype);
       if (eos) {
         const double dt = coeff[ACOUSTIC] * h / (sphe_sound_speed(eos, rho[i]) + sqrt(vsq));
-        if (dt < local[ACOUSTIC]) local[ACOUSTIC] = dt;
+        take(ACOUSTIC, dt);
       }
     }
     if (coeff[FORCE] > 0.0 && fsq > 0.0) {
       const double m = rmass ? rmass[i] : mass[itype];
       const double accel = ftm2v * sqrt(fsq) / m;
       const double dt = coeff[FORCE] * sqrt(h / accel);
-      if (dt < local[FORCE]) local[FORCE] = dt;
+      take(FORCE, dt);
     }
     if (coeff[VISCOUS] > 0.0) {
-      const sphm_law *law = materials->viscosity(itype);
-      const double mu = law ? sphm_law_eval(law, temperature) : 0.0;
+      const double mu = materials->viscosity(itype)
+          ? materials->viscosity_at(itype, temperature, "Fix sph/dt/reset")
+          : 0.0;
       if (mu > 0.0) {
         const double dt = coeff[VISCOUS] * hsq * rho[i] / mu;
-        if (dt < local[VISCOUS]) local[VISCOUS] = dt;
+        take(VISCOUS, dt);
       }
     }
-    if (coeff[THERMAL] > 0.0) {
-      const sphm_law *law = materials->conductivity(itype);
-      const double k = law ? sphm_law_eval(law, temperature) : 0.0;
-      if (k > 0.0) {
-        const double dt = coeff[THERMAL] * hsq * rho[i] * cv[i] / k;
-        if (dt < local[THERMAL]) local[THERMAL] = dt;
-      }
+    if (relax_rate && (*relax_rate)[i] > 0.0) {
+      const double dt = coeff[THERMAL] / (*relax_rate)[i];
+      take(THERMAL, dt);
     }
   }
+  for (int k = 0; k < NLIMITS; k++)
+    if (bad[k]) bad_limit(k);
 
   // minima are exact, so every rank count that gives the same per-atom
   // state gives the same dt and the same active limit
@@ -290,6 +324,12 @@ void FixSPHDtReset::choose_dt()
       dt = update->dt;
   }
   if (dt < dtmin) {
+    if (!bound_warned && comm->me == 0)
+      error->warning(FLERR,
+                     "Fix sph/dt/reset: min {} overrides the {} limit {} (ratio {:.3g}) at step {}: "
+                     "the run may be unstable",
+                     dtmin, limit_name(active), dt, dtmin / dt, update->ntimestep);
+    bound_warned = 1;
     dt = dtmin;
     active = BOUND;
   } else if (dt > dtmax) {
@@ -306,6 +346,48 @@ void FixSPHDtReset::choose_dt()
   if (respa_flag) update->integrate->reset_dt();
   if (force->pair) force->pair->reset_dt();
   for (int i = 0; i < modify->nfix; i++) modify->fix[i]->reset_dt();
+}
+
+/* ----------------------------------------------------------------------
+   a limit of some owned atom is 0 or not a number: name the atom and what
+   its limit reads (the first such atom; on this rank)
+------------------------------------------------------------------------- */
+
+void FixSPHDtReset::bad_limit(int k)
+{
+  const double *const *const v = atom->v;
+  const double *const *const f = atom->f;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const int itype = atom->type[i];
+    double dt = BIG;
+    std::string state;
+    if (k == ACOUSTIC && materials->eos(itype)) {
+      const double speed = sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+      dt = coeff[k] * h / (sphe_sound_speed(materials->eos(itype), atom->rho[i]) + speed);
+      state = fmt::format("rho = {}, |v| = {}", atom->rho[i], speed);
+    } else if (k == FORCE) {
+      const double m = atom->rmass ? atom->rmass[i] : atom->mass[itype];
+      const double fsq = f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2];
+      if (fsq > 0.0 || !std::isfinite(fsq)) dt = coeff[k] * sqrt(h * m / (force->ftm2v * sqrt(fsq)));
+      state = fmt::format("|f| = {}, mass = {}", sqrt(fsq), m);
+    } else if (k == VISCOUS && materials->viscosity(itype)) {
+      const double T = atom->esph[i] / atom->cv[i];
+      const double mu = sphm_law_eval(materials->viscosity(itype), T);
+      if (mu > 0.0 || !std::isfinite(mu)) dt = coeff[k] * h * h * atom->rho[i] / mu;
+      state = fmt::format("rho = {}, viscosity = {} at T = {}", atom->rho[i], mu, T);
+    } else if (k == THERMAL && relax_rate) {
+      dt = coeff[k] / (*relax_rate)[i];
+      state = fmt::format("relaxation rate = {}, rho = {}, cv = {}", (*relax_rate)[i],
+                          atom->rho[i], atom->cv[i]);
+    }
+    if (!(dt > 0.0))
+      SPHCheck::stop(lmp,
+                     fmt::format("Fix sph/dt/reset: {} limit of atom {} (type {}) is {} at step {} "
+                                 "({})",
+                                 limit_name(k + 1), atom->tag[i], itype, dt, update->ntimestep,
+                                 state));
+  }
 }
 
 /* ---------------------------------------------------------------------- */

@@ -41,11 +41,16 @@ class FixSPHDtReset : public Fix {
   int active;               // 1..4 a limit, 5 the min/max bound, 0 none computed yet
   int respa_flag;
   int warned;    // the fix-order warning was given
+  int bound_warned;    // the warning that 'min' overrides a limit was given (per run)
+  // per-atom relaxation rate of pair sph/cleary/heat (the thermal limit),
+  // nullptr when the run has no conduction
+  double **relax_rate;
   class FixSPHMaterials *materials;
 
   double parse_value(int, int, char **, bool);
   double smoothing_length();
   void choose_dt();
+  void bad_limit(int);
 };
 
 }    // namespace LAMMPS_NS

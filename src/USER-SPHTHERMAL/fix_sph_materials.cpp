@@ -15,6 +15,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "potential_file_reader.h"
+#include "sph_checks.h"
 #include "tokenizer.h"
 #include "update.h"
 
@@ -38,6 +39,7 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
     memset(&conductivity_laws[i].law, 0, sizeof(sphm_law));
     memset(&viscosity_laws[i].law, 0, sizeof(sphm_law));
     conductivity_laws[i].set = viscosity_laws[i].set = 0;
+    conductivity_laws[i].warned = viscosity_laws[i].warned = 0;
   }
   eos_type = new sphe_eos[ntypes + 1];
   memset(eos_type, 0, (ntypes + 1) * sizeof(sphe_eos));
@@ -67,7 +69,7 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
       if (iword + 1 >= words.size())
         error->all(FLERR, "Illegal {} command: missing atom type after 'type'", cmd);
       int ilo, ihi;
-      utils::bounds(FLERR, words[iword + 1], 1, ntypes, ilo, ihi, error);
+      type_range(words[iword + 1], ilo, ihi);
       const std::string where = fmt::format("{} command, type {}", cmd, words[iword + 1]);
       iword += 2;
       if (iword >= words.size() || words[iword] == "type" || words[iword] == "file")
@@ -83,7 +85,7 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
       iword += 2;
       while (iword + 1 < words.size() && words[iword] != "type" && words[iword] != "file") {
         int ilo, ihi;
-        utils::bounds(FLERR, words[iword + 1], 1, ntypes, ilo, ihi, error);
+        type_range(words[iword + 1], ilo, ihi);
         for (int i = ilo; i <= ihi; i++) {
           names.push_back(words[iword]);
           types.push_back(i);
@@ -124,6 +126,57 @@ FixSPHMaterials::~FixSPHMaterials()
 int FixSPHMaterials::setmask()
 {
   return 0;
+}
+
+/* ----------------------------------------------------------------------
+   every run warns again about temperatures outside a table
+------------------------------------------------------------------------- */
+
+void FixSPHMaterials::init()
+{
+  for (int i = 0; i <= ntypes; i++) conductivity_laws[i].warned = viscosity_laws[i].warned = 0;
+}
+
+/* ----------------------------------------------------------------------
+   a law left its range at T (sphm_value_valid, sphm_law_covers): a value
+   that is no conductivity or viscosity stops the run; a table evaluated
+   beyond its ends is held at its end value, which may be intended
+------------------------------------------------------------------------- */
+
+void FixSPHMaterials::out_of_range(MaterialLaw &slot, int type, double T, double value,
+                                   const char *who, const char *property)
+{
+  const char *law = sphm_law_name(slot.law.kind);
+  if (!sphm_value_valid(value))
+    SPHCheck::stop(lmp,
+                   fmt::format("{}: {} of atom type {} is {} at T = {} ({} law of fix "
+                               "sph/materials); it must be finite and >= 0",
+                               who, property, type, value, T, law));
+  if (!slot.warned) {
+    slot.warned = 1;
+    error->warning(FLERR,
+                   "{}: T = {} of an atom of type {} is outside its {} table ({} to {}); the "
+                   "{} is held at the end value {}",
+                   who, T, type, property, slot.law.table_t[0],
+                   slot.law.table_t[slot.law.ntable - 1], property, value);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   atom types I, I*J, *J, I*, *: an empty range is named as such
+------------------------------------------------------------------------- */
+
+void FixSPHMaterials::type_range(const std::string &word, int &ilo, int &ihi)
+{
+  const size_t star = word.find('*');
+  if (star != std::string::npos && star > 0 && star + 1 < word.size()) {
+    const int lo = utils::inumeric(FLERR, word.substr(0, star).c_str(), false, lmp);
+    const int hi = utils::inumeric(FLERR, word.substr(star + 1).c_str(), false, lmp);
+    if (lo > hi)
+      error->all(FLERR, "Illegal {} command: atom type range {} is empty (first type {} > last {})",
+                 cmd, word, lo, hi);
+  }
+  utils::bounds(FLERR, word, 1, ntypes, ilo, ihi, error);
 }
 
 /* ----------------------------------------------------------------------
@@ -310,7 +363,12 @@ void FixSPHMaterials::read_file(const std::string &file, const std::vector<std::
   std::string path = utils::get_potential_file_path(file);
   if (path.empty()) error->all(FLERR, "Illegal {} command: cannot open material file {}", cmd, file);
   const std::string units = utils::get_potential_units(path, "sph/materials");
-  if (!units.empty() && units != update->unit_style)
+  if (units.empty())
+    error->all(FLERR,
+               "Illegal {} command: material file {} has no '# DATE: ... UNITS: ...' first line, so "
+               "its units cannot be checked against this run's {} units",
+               cmd, file, update->unit_style);
+  if (units != update->unit_style)
     error->all(FLERR, "Illegal {} command: material file {} is in {} units, not {} units", cmd, file,
                units, update->unit_style);
 

@@ -40,6 +40,19 @@ class FixSPHMaterials : public Fix {
   // 1 when every type with the property has a constant law
   int conductivity_constant() const { return constant(conductivity_laws); }
   int viscosity_constant() const { return constant(viscosity_laws); }
+  // a law evaluated at T for an atom, checked: an error (on this rank)
+  // naming 'who', the type, T and the value when it is not finite or is
+  // negative; a warning, once per type and run, when T is outside a table
+  double conductivity_at(int type, double T, const char *who)
+  {
+    return checked(conductivity_laws[type], type, T, who, "conductivity");
+  }
+  double viscosity_at(int type, double T, const char *who)
+  {
+    return checked(viscosity_laws[type], type, T, who, "viscosity");
+  }
+  void init() override;
+
   // equation of state of a type (rho0 filled in), nullptr when none was given
   const sphe_eos *eos(int type) const { return eos_set[type] ? &eos_type[type] : nullptr; }
   // specific heat, reference density, expansion coefficient; -1 when not given
@@ -53,6 +66,7 @@ class FixSPHMaterials : public Fix {
     sphm_law law;
     std::vector<double> table_t, table_p;
     int set;
+    int warned;    // the out-of-table warning of this run was given
   };
   int ntypes;
   std::vector<MaterialLaw> conductivity_laws, viscosity_laws;    // index: type
@@ -65,6 +79,16 @@ class FixSPHMaterials : public Fix {
     return laws[type].set ? &laws[type].law : nullptr;
   }
   static int constant(const std::vector<MaterialLaw> &laws);
+  double checked(MaterialLaw &slot, int type, double T, const char *who, const char *property)
+  {
+    const double value = sphm_law_eval(&slot.law, T);
+    if (!sphm_value_valid(value) || !sphm_law_covers(&slot.law, T))
+      out_of_range(slot, type, T, value, who, property);
+    return value;
+  }
+  void out_of_range(MaterialLaw &slot, int type, double T, double value, const char *who,
+                    const char *property);
+  void type_range(const std::string &word, int &ilo, int &ihi);
   int parse_property(int ilo, int ihi, const std::vector<std::string> &words, size_t iword,
                      const std::string &where);
   int parse_law(std::vector<MaterialLaw> &laws, int ilo, int ihi,

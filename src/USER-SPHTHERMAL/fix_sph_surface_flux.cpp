@@ -13,6 +13,7 @@
 #include "domain.h"
 #include "error.h"
 #include "force.h"
+#include "sph_checks.h"
 #include "update.h"
 
 #include <cmath>
@@ -81,7 +82,7 @@ FixSPHSurfaceFlux::FixSPHSurfaceFlux(LAMMPS *lmp, int narg, char **arg) :
 
 int FixSPHSurfaceFlux::setmask()
 {
-  return POST_FORCE;
+  return PRE_FORCE;
 }
 
 /* ----------------------------------------------------------------------
@@ -96,24 +97,29 @@ void FixSPHSurfaceFlux::reset_dt()
 
 void FixSPHSurfaceFlux::init()
 {
+  SPHCheck::group_of_kind(lmp, this, {"sph/wall/dirichlet"}, true, true);
+  SPHCheck::atom_state(lmp, "Fix sph/surface/flux", groupbit, SPHCheck::CV | SPHCheck::ESPH);
   reset_dt();
   area = pow(spacing, domain->dimension - 1);
 }
 
-void FixSPHSurfaceFlux::setup(int /*vflag*/)
+void FixSPHSurfaceFlux::setup_pre_force(int /*vflag*/)
 {
   add_flux(1);
 }
 
-void FixSPHSurfaceFlux::post_force(int /*vflag*/)
+void FixSPHSurfaceFlux::pre_force(int /*vflag*/)
 {
   add_flux(0);
 }
 
 /* ----------------------------------------------------------------------
-   desph_i += q_i A / m_i; the heat added is tallied with the half-step
-   weights of fix sph and fix sph/stationary (see fix sph/wall/isothermal),
-   so it equals the change of sum(m esph) it causes
+   desph_i += q_i A / m_i, before the pair styles add theirs (desph is
+   cleared before pre_force): a fix that acts after the forces, such as
+   fix sph/wall/isothermal, sees the flux in any order of the fixes. The
+   heat added is tallied with the half-step weights of fix sph and fix
+   sph/stationary (see fix sph/wall/isothermal), so it equals the change
+   of sum(m esph) it causes
 ------------------------------------------------------------------------- */
 
 void FixSPHSurfaceFlux::add_flux(int first)

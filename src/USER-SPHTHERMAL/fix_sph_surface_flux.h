@@ -22,8 +22,8 @@ class FixSPHSurfaceFlux : public Fix {
   int setmask() override;
   void init() override;
   void reset_dt() override;
-  void setup(int) override;
-  void post_force(int) override;
+  void setup_pre_force(int) override;
+  void pre_force(int) override;
   double compute_scalar() override;
   void write_restart(FILE *) override;
   void restart(char *) override;

@@ -24,6 +24,7 @@
 #include "neigh_request.h"
 #include "neighbor.h"
 #include "pair.h"
+#include "sph_checks.h"
 #include "sph_kernels.h"
 
 #include <cmath>
@@ -74,6 +75,7 @@ void FixSPHWallAdami::init()
   materials = FixSPHMaterials::find(lmp, "Fix sph/wall/adami");
   if (!comm->ghost_velocity)
     error->all(FLERR, "Fix sph/wall/adami requires ghost velocities (comm_modify vel yes)");
+  SPHCheck::group_of_kind(lmp, this, {"sph/wall/adami"}, false, false);
 
   wall_groupbit = 0;
   for (int ifix = 0; ifix < modify->nfix; ifix++)

@@ -22,6 +22,7 @@
 #include "neigh_request.h"
 #include "neighbor.h"
 #include "pair.h"
+#include "sph_checks.h"
 #include "sph_kernels.h"
 
 #include <cmath>
@@ -59,6 +60,9 @@ void FixSPHWallDirichlet::init()
   int dim;
   kernel_kind = *(int *) pair->extract("kernel_kind", dim);
   cutoff = *(double *) pair->extract("cutoff", dim);
+  SPHCheck::group_of_kind(
+      lmp, this, {"sph/wall/isothermal", "sph/wall/dirichlet", "sph/surface/flux"}, false, false);
+  SPHCheck::atom_state(lmp, "Fix sph/wall/dirichlet", groupbit, SPHCheck::CV);
 
   dummy_groupbit = 0;
   for (int ifix = 0; ifix < modify->nfix; ifix++)

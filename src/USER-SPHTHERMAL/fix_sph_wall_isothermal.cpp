@@ -15,6 +15,7 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "sph_checks.h"
 #include "update.h"
 
 #include <cmath>
@@ -98,6 +99,8 @@ void FixSPHWallIsothermal::reset_dt()
 
 void FixSPHWallIsothermal::init()
 {
+  SPHCheck::group_of_kind(lmp, this, {"sph/wall/isothermal", "sph/wall/dirichlet"}, false, true);
+  SPHCheck::atom_state(lmp, "Fix sph/wall/isothermal", groupbit, SPHCheck::CV);
   reset_dt();
   // the wall is at its temperature before the first force evaluation
   const double *const cv = atom->cv;

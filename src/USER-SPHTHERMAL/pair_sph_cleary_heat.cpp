@@ -18,7 +18,9 @@
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "sph_checks.h"
 #include "sph_conduction.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
@@ -30,8 +32,10 @@ using namespace LAMMPS_NS;
 PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     PairSPHKernel(lmp, "sph/cleary/heat", "conductivities come from fix sph/materials"),
     mean(SPHC_HARMONIC), eta2(0.0), materials(nullptr), conductivity_varies(0),
-    conductance(nullptr), conductivity(nullptr), nmax(0)
+    conductance(nullptr), conductivity(nullptr), nmax(0), relax_wanted(0), relax_rate(nullptr),
+    nmax_relax(0)
 {
+  comm_reverse = 1;    // relax_rate, when wanted
 }
 
 /* ---------------------------------------------------------------------- */
@@ -40,6 +44,7 @@ PairSPHClearyHeat::~PairSPHClearyHeat()
 {
   memory->destroy(conductance);
   memory->destroy(conductivity);
+  memory->destroy(relax_rate);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -48,6 +53,16 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (conductivity_varies) update_conductivity();
+  if (update->setupflag) check_neighbours();
+  if (relax_wanted) {
+    if (atom->nmax > nmax_relax) {
+      nmax_relax = atom->nmax;
+      memory->destroy(relax_rate);
+      memory->create(relax_rate, nmax_relax, "pair:relax_rate");
+    }
+    const int nall = atom->nlocal + atom->nghost;
+    for (int i = 0; i < nall; i++) relax_rate[i] = 0.0;
+  }
 
   switch (kernel_kind) {
     case SPHK_LUCY:
@@ -63,6 +78,13 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
       eval_kernel<SPHK_WENDLAND>();
       break;
   }
+  check_rates(atom->desph, "desph");
+
+  if (relax_wanted) {
+    if (force->newton_pair) comm->reverse_comm_pair(this);
+    const double *const cv = atom->cv;
+    for (int i = 0; i < atom->nlocal; i++) relax_rate[i] /= cv[i];
+  }
 }
 
 template <int KERNEL> void PairSPHClearyHeat::eval_kernel()
@@ -75,17 +97,25 @@ template <int KERNEL> void PairSPHClearyHeat::eval_kernel()
 
 template <int KERNEL, int MEAN> void PairSPHClearyHeat::eval_mean()
 {
-  const int flags = (conductivity_varies ? 4 : 0) | (force->newton_pair ? 2 : 0) |
-      ((atom->rmass_flag && atom->rmass) ? 1 : 0);
+  const int flags = (relax_wanted ? 8 : 0) | (conductivity_varies ? 4 : 0) |
+      (force->newton_pair ? 2 : 0) | ((atom->rmass_flag && atom->rmass) ? 1 : 0);
   switch (flags) {
-    case 0: eval<KERNEL, MEAN, 0, 0, 0>(); break;
-    case 1: eval<KERNEL, MEAN, 0, 0, 1>(); break;
-    case 2: eval<KERNEL, MEAN, 0, 1, 0>(); break;
-    case 3: eval<KERNEL, MEAN, 0, 1, 1>(); break;
-    case 4: eval<KERNEL, MEAN, 1, 0, 0>(); break;
-    case 5: eval<KERNEL, MEAN, 1, 0, 1>(); break;
-    case 6: eval<KERNEL, MEAN, 1, 1, 0>(); break;
-    case 7: eval<KERNEL, MEAN, 1, 1, 1>(); break;
+    case 0: eval<KERNEL, MEAN, 0, 0, 0, 0>(); break;
+    case 1: eval<KERNEL, MEAN, 0, 0, 1, 0>(); break;
+    case 2: eval<KERNEL, MEAN, 0, 1, 0, 0>(); break;
+    case 3: eval<KERNEL, MEAN, 0, 1, 1, 0>(); break;
+    case 4: eval<KERNEL, MEAN, 1, 0, 0, 0>(); break;
+    case 5: eval<KERNEL, MEAN, 1, 0, 1, 0>(); break;
+    case 6: eval<KERNEL, MEAN, 1, 1, 0, 0>(); break;
+    case 7: eval<KERNEL, MEAN, 1, 1, 1, 0>(); break;
+    case 8: eval<KERNEL, MEAN, 0, 0, 0, 1>(); break;
+    case 9: eval<KERNEL, MEAN, 0, 0, 1, 1>(); break;
+    case 10: eval<KERNEL, MEAN, 0, 1, 0, 1>(); break;
+    case 11: eval<KERNEL, MEAN, 0, 1, 1, 1>(); break;
+    case 12: eval<KERNEL, MEAN, 1, 0, 0, 1>(); break;
+    case 13: eval<KERNEL, MEAN, 1, 0, 1, 1>(); break;
+    case 14: eval<KERNEL, MEAN, 1, 1, 0, 1>(); break;
+    case 15: eval<KERNEL, MEAN, 1, 1, 1, 1>(); break;
   }
 }
 
@@ -113,7 +143,7 @@ void PairSPHClearyHeat::update_conductivity()
     double temperature = esph[i] / cv[i];
     for (const auto &wall : dummy_walls)
       if (mask[i] & wall.first) temperature = wall.second;
-    conductivity[i] = sphm_law_eval(materials->conductivity(type[i]), temperature);
+    conductivity[i] = materials->conductivity_at(type[i], temperature, "Pair style sph/cleary/heat");
   }
 }
 
@@ -122,7 +152,7 @@ void PairSPHClearyHeat::update_conductivity()
    kernel support (sph_conduction.h); T = esph / cv
 ------------------------------------------------------------------------- */
 
-template <int KERNEL, int MEAN, int VARYING_K, int NEWTON_PAIR, int RMASS>
+template <int KERNEL, int MEAN, int VARYING_K, int NEWTON_PAIR, int RMASS, int RELAX>
 void PairSPHClearyHeat::eval()
 {
   const double *const *const x = atom->x;
@@ -157,7 +187,7 @@ void PairSPHClearyHeat::eval()
     const double *const conductance_i = conductance[itype];
     const int *const jlist = firstneigh[i];
     const int jnum = numneigh[i];
-    double desph_i = 0.0;
+    double desph_i = 0.0, relax_i = 0.0;
 
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
@@ -176,8 +206,15 @@ void PairSPHClearyHeat::eval()
           sphc_cleary_pair(conductance_ij, temp_i - esph[j] / cv[j], rho_i, rho[j], r, dwdr, eta2);
       desph_i += (RMASS ? rmass[j] : mass[jtype]) * f_ij;
       if (NEWTON_PAIR || j < nlocal) desph[j] -= mass_i * f_ij;
+      if (RELAX) {
+        // F_ij per unit temperature difference (dW/dr <= 0, so it is <= 0)
+        const double g_ij = sphc_cleary_pair(conductance_ij, 1.0, rho_i, rho[j], r, dwdr, eta2);
+        relax_i -= (RMASS ? rmass[j] : mass[jtype]) * g_ij;
+        if (NEWTON_PAIR || j < nlocal) relax_rate[j] -= mass_i * g_ij;
+      }
     }
     desph[i] += desph_i;
+    if (RELAX) relax_rate[i] += relax_i;
   }
 }
 
@@ -202,6 +239,11 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
   eta_factor = 0.1;
   mean = SPHC_HARMONIC;
   while (iarg < narg) {
+    if (strcmp(arg[iarg], "eta") != 0 && strcmp(arg[iarg], "mean") != 0)
+      error->all(FLERR,
+                 "Illegal pair_style sph/cleary/heat command: unknown keyword '{}' (after the "
+                 "kernel and cutoff: eta or mean)",
+                 arg[iarg]);
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal pair_style sph/cleary/heat command: missing value after '{}'",
                  arg[iarg]);
@@ -220,9 +262,7 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
                    "Illegal pair_style sph/cleary/heat command: unknown mean '{}' "
                    "(harmonic or arithmetic)",
                    arg[iarg + 1]);
-    } else
-      error->all(FLERR, "Illegal pair_style sph/cleary/heat command: unknown keyword '{}'",
-                 arg[iarg]);
+    }
     iarg += 2;
   }
 }
@@ -242,6 +282,9 @@ void PairSPHClearyHeat::init_style()
                  "sph/materials",
                  i);
   conductivity_varies = !materials->conductivity_constant();
+  relax_wanted = 0;    // set again by the styles that want it, at their init
+  SPHCheck::atom_state(lmp, "Pair style sph/cleary/heat", 0,
+                       SPHCheck::RHO | SPHCheck::CV | SPHCheck::ESPH);
 
   dummy_walls.clear();
   for (int ifix = 0; ifix < modify->nfix; ifix++)
@@ -295,5 +338,44 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
 
 double PairSPHClearyHeat::memory_usage()
 {
-  return Pair::memory_usage() + (double) nmax * sizeof(double);
+  return Pair::memory_usage() + (double) (nmax + nmax_relax) * sizeof(double);
+}
+
+/* ----------------------------------------------------------------------
+   relax_rate: per-atom array (owned atoms valid after compute()), filled
+   from the next compute() on once relax_rate_wanted is set to 1
+------------------------------------------------------------------------- */
+
+void *PairSPHClearyHeat::extract(const char *name, int &dim)
+{
+  dim = 0;
+  if (strcmp(name, "relax_rate_wanted") == 0) return (void *) &relax_wanted;
+  if (strcmp(name, "relax_rate") == 0) {
+    dim = 1;
+    return (void *) &relax_rate;
+  }
+  return PairSPHKernel::extract(name, dim);
+}
+
+int PairSPHClearyHeat::pack_reverse_comm(int n, int first, double *buf)
+{
+  for (int k = 0; k < n; k++) buf[k] = relax_rate[first + k];
+  return n;
+}
+
+void PairSPHClearyHeat::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  for (int k = 0; k < n; k++) relax_rate[list[k]] += buf[k];
+}
+
+/* ----------------------------------------------------------------------
+   beyond the state every SPH pair reads: the conductivity of atom i
+------------------------------------------------------------------------- */
+
+std::string PairSPHClearyHeat::diagnose(int i)
+{
+  std::string why = PairSPHKernel::diagnose(i);
+  if (why.empty() && conductivity_varies && !std::isfinite(conductivity[i]))
+    why = fmt::format("its conductivity is {}", conductivity[i]);
+  return why;
 }

@@ -30,6 +30,9 @@ class PairSPHClearyHeat : public PairSPHKernel {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   double memory_usage() override;
+  void *extract(const char *, int &) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
 
  protected:
   int mean;                   // SPHC_HARMONIC or SPHC_ARITHMETIC of sph_conduction.h
@@ -39,6 +42,13 @@ class PairSPHClearyHeat : public PairSPHKernel {
   double **conductance;       // per type pair, when no conductivity varies
   double *conductivity;       // per atom (owned and ghost), when some varies
   int nmax;
+  // per atom: the rate at which T relaxes towards the neighbours,
+  //   lambda_i = sum_j m_j |F_ij / T_ij| / cv_i
+  // (F_ij of sph_conduction.h), the diagonal of the explicit conduction
+  // update; computed only when a style asks for it (fix sph/dt/reset)
+  int relax_wanted;
+  double *relax_rate;
+  int nmax_relax;
   // dummy particles of fix sph/wall/dirichlet: group bit and wall temperature
   std::vector<std::pair<int, double>> dummy_walls;
 
@@ -46,7 +56,9 @@ class PairSPHClearyHeat : public PairSPHKernel {
   void update_conductivity();
   template <int KERNEL> void eval_kernel();
   template <int KERNEL, int MEAN> void eval_mean();
-  template <int KERNEL, int MEAN, int VARYING_K, int NEWTON_PAIR, int RMASS> void eval();
+  template <int KERNEL, int MEAN, int VARYING_K, int NEWTON_PAIR, int RMASS, int RELAX>
+  void eval();
+  std::string diagnose(int) override;
 };
 
 }    // namespace LAMMPS_NS

@@ -22,6 +22,7 @@
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "sph_checks.h"
 #include "sph_flow.h"
 #include "update.h"
 
@@ -62,6 +63,7 @@ void PairSPHHarmonicVisc::compute(int eflag, int vflag)
   // ghosts: refresh them, or results depend on newton and the rank count
   if (update->setupflag) comm->forward_comm_pair(this);
   update_atom_state();
+  if (update->setupflag) check_neighbours();
 
   switch (kernel_kind) {
     case SPHK_LUCY:
@@ -77,6 +79,8 @@ void PairSPHHarmonicVisc::compute(int eflag, int vflag)
       eval_kernel<SPHK_WENDLAND>();
       break;
   }
+  check_rates3(atom->f, "force");
+  check_rates(atom->drho, "drho");
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
@@ -150,8 +154,8 @@ void PairSPHHarmonicVisc::update_atom_state()
   const int nall = atom->nlocal + atom->nghost;
   for (int i = 0; i < nall; i++) {
     pressure[i] = sphe_pressure(materials->eos(type[i]), rho[i]);
-    viscosity[i] = sphm_law_eval(materials->viscosity(type[i]),
-                                 viscosity_varies ? esph[i] / cv[i] : 0.0);
+    viscosity[i] = materials->viscosity_at(type[i], viscosity_varies ? esph[i] / cv[i] : 0.0,
+                                           "Pair style sph/harmonic/visc");
   }
   if (atom->rmass_flag && atom->rmass)
     memcpy(mass_of, atom->rmass, nall * sizeof(double));
@@ -302,6 +306,7 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
   pressure_form = SPHF_P_AVERAGED;
   viscosity_form = SPHF_V_ADAMI;
   xi = SPHF_XI_CLEARY;
+  xi_given = 0;
   eta_factor = -1.0;    // the default depends on the viscosity form
   delta = 0.1;    // seed 003: "not a tunable parameter", 0.1 for all flows
   hydrostatic = 0;
@@ -324,6 +329,7 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
                    cmd, value);
     } else if (strcmp(arg[iarg], "xi") == 0) {
       xi = utils::numeric(FLERR, value, false, lmp);
+      xi_given = 1;
       if (xi <= 0.0) error->all(FLERR, "Illegal {} command: xi {} must be > 0", cmd, value);
     } else if (strcmp(arg[iarg], "eta") == 0) {
       eta_factor = utils::numeric(FLERR, value, false, lmp);
@@ -343,6 +349,16 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
     iarg += 2;
   }
+  if (xi_given && viscosity_form != SPHF_V_CLEARY)
+    error->all(FLERR,
+               "Illegal {} command: xi is a factor of the cleary viscosity form only; viscosity {} "
+               "does not use it",
+               cmd, sphf_viscosity_name(viscosity_form));
+  if (hydrostatic && gravity[0] == 0.0 && gravity[1] == 0.0 && gravity[2] == 0.0)
+    error->all(FLERR,
+               "Illegal {} command: fourtakas 0 0 0 is Molteni's diffusion: give the gravity "
+               "vector, or leave fourtakas out",
+               cmd);
   // Cleary's xi was calibrated with eta = 0.1 h; the consistent forms only
   // need eta against r -> 0, and 0.1 h would lower their viscosity by 1-4 %
   if (eta_factor < 0.0) eta_factor = (viscosity_form == SPHF_V_CLEARY) ? 0.1 : 0.01;
@@ -372,6 +388,22 @@ void PairSPHHarmonicVisc::init_style()
                  i);
   }
   viscosity_varies = !materials->viscosity_constant();
+  SPHCheck::atom_state(lmp, "Pair style sph/harmonic/visc", 0,
+                       SPHCheck::RHO | (viscosity_varies ? SPHCheck::CV | SPHCheck::ESPH : 0));
+
+  // the hydrostatic diffusion assumes the body force of the run
+  if (hydrostatic) {
+    int body_force = 0;
+    for (int ifix = 0; ifix < modify->nfix; ifix++)
+      if (utils::strmatch(modify->fix[ifix]->style, "^gravity") ||
+          utils::strmatch(modify->fix[ifix]->style, "^addforce"))
+        body_force = 1;
+    if (!body_force)
+      error->warning(FLERR,
+                     "Pair style sph/harmonic/visc: fourtakas {} {} {} assumes gravity, but no fix "
+                     "gravity or addforce is defined",
+                     gravity[0], gravity[1], gravity[2]);
+  }
 
   wall_groupbit = 0;
   for (int ifix = 0; ifix < modify->nfix; ifix++)
@@ -393,6 +425,7 @@ double PairSPHHarmonicVisc::init_one(int, int)
 void PairSPHHarmonicVisc::write_restart_settings(FILE *fp)
 {
   const int ints[4] = {kernel_kind, pressure_form, viscosity_form, hydrostatic};
+  // xi_given only checks the command line
   const double doubles[7] = {cut_global, xi, eta_factor, delta, gravity[0], gravity[1], gravity[2]};
   fwrite(ints, sizeof(int), 4, fp);
   fwrite(doubles, sizeof(double), 7, fp);

@@ -35,6 +35,7 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   int pressure_form;      // SPHF_P_* of sph_flow.h (also selects the continuity form)
   int viscosity_form;     // SPHF_V_* of sph_flow.h
   double xi;              // factor of the cleary viscosity
+  int xi_given;           // xi was given (only the cleary form reads it)
   double delta;           // density diffusion (seed 003 eq 5), 0: none
   int hydrostatic;        // 1: Fourtakas's diffusion (seed 004 eq 39) with gravity below
   double gravity[3];

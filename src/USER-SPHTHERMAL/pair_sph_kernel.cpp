@@ -11,8 +11,13 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "force.h"
 #include "memory.h"
+#include "neigh_list.h"
+#include "sph_checks.h"
+#include "update.h"
 
+#include <cmath>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -66,6 +71,39 @@ int PairSPHKernel::parse_kernel(int narg, char **arg)
 
 double PairSPHKernel::init_kernel()
 {
+  // a support beyond the whole box is a typo (e.g. 1e10 for 1e-2), not a
+  // kernel: say so here, not as a neighbour-binning error at 'run'
+  double extent = 0.0;
+  for (int d = 0; d < domain->dimension; d++) extent = MAX(extent, domain->prd[d]);
+  if (cut_global > extent)
+    error->all(FLERR,
+               "Pair style {}: cutoff {} is larger than the simulation box (largest extent {}); the "
+               "cutoff is the kernel support, a few particle spacings",
+               style, cut_global, extent);
+
+  // in hybrid/overlay: no type pair twice in this style (its heat or force
+  // would count twice); the flow pair with the heat pair's kernel
+  for (int n = 2;; n++) {
+    PairSPHKernel *other = (PairSPHKernel *) force->pair_match(style, 1, n);
+    if (!other || other == force->pair_match(style, 1, n - 1)) break;
+    if (other == this) continue;
+    for (int i = 1; i <= atom->ntypes; i++)
+      for (int j = i; j <= atom->ntypes; j++)
+        if (setflag[i][j] && other->setflag && other->setflag[i][j])
+          error->all(FLERR,
+                     "Pair style {} is used twice in pair_style {} for atom types {} {}: its rates "
+                     "would be counted twice",
+                     style, force->pair_style, i, j);
+  }
+  PairSPHKernel *flow = (PairSPHKernel *) force->pair_match("sph/harmonic/visc", 1);
+  if (strcmp(style, "sph/cleary/heat") == 0 && flow &&
+      (flow->kernel_kind != kernel_kind || flow->cut_global != cut_global))
+    error->warning(FLERR,
+                   "Pair styles sph/cleary/heat ({} kernel, cutoff {}) and sph/harmonic/visc ({} "
+                   "kernel, cutoff {}) differ: the flow and the heat see different neighbourhoods",
+                   sphk_name(kernel_kind), cut_global, sphk_name(flow->kernel_kind),
+                   flow->cut_global);
+
   kernel = sphk_make(kernel_kind, domain->dimension, cut_global);
   const double eta = eta_factor * kernel.h;
   return eta * eta;
@@ -124,4 +162,90 @@ void *PairSPHKernel::extract(const char *name, int &dim)
   if (strcmp(name, "cutoff") == 0) return (void *) &cut_global;
   if (strcmp(name, "eta_factor") == 0) return (void *) &eta_factor;
   return nullptr;
+}
+
+/* ----------------------------------------------------------------------
+   at a run's setup: pairs of particles within the cutoff, against atoms
+------------------------------------------------------------------------- */
+
+void PairSPHKernel::check_neighbours()
+{
+  const double *const *const x = atom->x;
+  const double cutsq_kernel = cut_global * cut_global;
+  bigint local = 0, pairs;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *const jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      if (dx * dx + dy * dy + dz * dz < cutsq_kernel) local++;
+    }
+  }
+  MPI_Allreduce(&local, &pairs, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  // a half list holds each pair once with newton on, on both of its ranks with newton off
+  if (!force->newton_pair && comm->nprocs > 1) pairs /= 2;
+  if (comm->me == 0 && atom->natoms > 1 && 2 * pairs < atom->natoms)
+    error->warning(FLERR,
+                   "Pair style {}: cutoff {} gives {} pairs of particles in range for {} atoms "
+                   "(less than one neighbour each): is it below the particle spacing?",
+                   style, cut_global, pairs, atom->natoms);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairSPHKernel::check_rates(const double *rate, const char *quantity)
+{
+  const int i = SPHCheck::first_nonfinite(rate, atom->nlocal);
+  if (i >= 0)
+    SPHCheck::nonfinite(lmp, fmt::format("Pair style {}", style).c_str(), quantity, i, rate[i],
+                        diagnose(i));
+}
+
+void PairSPHKernel::check_rates3(double *const *rate, const char *quantity)
+{
+  const int i = SPHCheck::first_nonfinite3(rate, atom->nlocal);
+  if (i >= 0)
+    SPHCheck::nonfinite(lmp, fmt::format("Pair style {}", style).c_str(), quantity, i,
+                        rate[i][0] + rate[i][1] + rate[i][2], diagnose(i));
+}
+
+/* ----------------------------------------------------------------------
+   the state every SPH pair reads: rho and, when the atom has them, cv and
+   esph; of atom i, then of the atoms within the cutoff (also a neighbour
+   at distance 0 when eta = 0)
+------------------------------------------------------------------------- */
+
+std::string PairSPHKernel::diagnose(int i)
+{
+  auto state = [this](int j) -> std::string {
+    if (!(atom->rho[j] > 0.0 && std::isfinite(atom->rho[j])))
+      return fmt::format("its rho is {}", atom->rho[j]);
+    if (atom->cv && !(atom->cv[j] > 0.0 && std::isfinite(atom->cv[j])))
+      return fmt::format("its cv is {}", atom->cv[j]);
+    if (atom->esph && !std::isfinite(atom->esph[j]))
+      return fmt::format("its esph is {}", atom->esph[j]);
+    if (!std::isfinite(atom->x[j][0] + atom->x[j][1] + atom->x[j][2]))
+      return "its position is not finite";
+    if (atom->v && !std::isfinite(atom->v[j][0] + atom->v[j][1] + atom->v[j][2]))
+      return "its velocity is not finite";
+    return "";
+  };
+  std::string why = state(i);
+  if (!why.empty()) return why;
+  const double *const *const x = atom->x;
+  const double cutsq_kernel = cut_global * cut_global;
+  const int nall = atom->nlocal + atom->nghost;
+  for (int j = 0; j < nall; j++) {
+    if (j == i) continue;
+    const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+    const double rsq = dx * dx + dy * dy + dz * dz;
+    if (!(rsq < cutsq_kernel)) continue;
+    why = state(j);
+    if (!why.empty())
+      return fmt::format("its neighbour atom {} (type {}): {}", atom->tag[j], atom->type[j], why);
+    if (rsq == 0.0 && eta_factor == 0.0)
+      return fmt::format("atom {} lies at distance 0 and eta is 0 (give eta > 0)", atom->tag[j]);
+  }
+  return "";
 }

@@ -9,6 +9,8 @@
 #include "pair.h"
 #include "sph_kernels.h"
 
+#include <string>
+
 namespace LAMMPS_NS {
 
 // What the package's SPH pair styles share (not a style itself): the kernel
@@ -36,8 +38,18 @@ class PairSPHKernel : public Pair {
   virtual void allocate();
   // kernel and cutoff from arg[0], arg[1]; returns the index of the next argument
   int parse_kernel(int narg, char **arg);
-  // the kernel of this run's dimension; returns eta^2
+  // the kernel of this run's dimension; returns eta^2. Also the checks of
+  // the cutoff against the box and of the other SPH pair styles of a hybrid
   double init_kernel();
+  // at a run's setup: a warning when the cutoff leaves the particles
+  // fewer than one neighbour each on average (no interaction to speak of)
+  void check_neighbours();
+  // after the pair loop: the first owned atom with a non-finite rate stops
+  // the run, naming it and, by diagnose(), why
+  void check_rates(const double *rate, const char *quantity);
+  void check_rates3(double *const *rate, const char *quantity);
+  // what makes atom i's rate non-finite: its own state or a neighbour's
+  virtual std::string diagnose(int i);
 };
 
 }    // namespace LAMMPS_NS

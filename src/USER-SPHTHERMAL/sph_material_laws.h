@@ -12,6 +12,7 @@
 #ifndef SPH_MATERIAL_LAWS_H
 #define SPH_MATERIAL_LAWS_H
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -76,6 +77,21 @@ static inline double sphm_law_eval(const sphm_law *law, double T)
     default:
       return 0.0;
   }
+}
+
+/* 1 when T lies inside the law's range of validity (a table: its first to
+   last temperature; the other laws: any T) */
+static inline int sphm_law_covers(const sphm_law *law, double T)
+{
+  if (law->kind != SPHM_TABLE) return 1;
+  return T >= law->table_t[0] && T <= law->table_t[law->ntable - 1];
+}
+
+/* 1 when a conductivity or viscosity is a physical value: finite and >= 0
+   (a linear law turns negative, an exponential one overflows) */
+static inline int sphm_value_valid(double p)
+{
+  return p >= 0.0 && p <= DBL_MAX;
 }
 
 #endif

@@ -4,6 +4,9 @@
           T, desph, rho, drho with a stored reference (--generate writes it)
   same    run an input through two drivers (or rank counts) and compare them
   error   run one case of an error-case file and expect its LAMMPS error
+          (or, with '## warning:', its WARNING and a run that goes on)
+  branches  the error cases are at least as many as the error and warning
+          branches of the package's sources
   styles  load the plugin and check that 'plugin list' shows every style
           the package's headers declare
   exports check that the plugin exports lammpsplugin_init and no LAMMPS symbol
@@ -118,13 +121,13 @@ def read_error_cases(path):
     preamble, cases, current = [], {}, None
     with open(path) as f:
         for line in f.read().splitlines():
-            m = re.match(r"##\s*(name|expect|preamble):\s*(.*)$", line)
+            m = re.match(r"##\s*(name|expect|warning|preamble):\s*(.*)$", line)
             if m and m.group(1) == "name":
-                current = {"expect": None, "preamble": True, "lines": []}
+                current = {"expect": None, "warning": None, "preamble": True, "lines": []}
                 cases[m.group(2).strip()] = current
             elif m and current is not None:
-                if m.group(1) == "expect":
-                    current["expect"] = m.group(2).strip()
+                if m.group(1) in ("expect", "warning"):
+                    current[m.group(1)] = m.group(2).strip()
                 else:
                     current["preamble"] = m.group(2).strip() != "no"
             elif current is None:
@@ -140,7 +143,8 @@ def cmd_error(a):
         print("\n".join(cases))
         return 0
     case = cases[a.name]
-    defines = [f"variable plugin index {a.plugin}", f"variable potentials index {a.potentials}"]
+    defines = [f"variable plugin index {a.plugin}", f"variable potentials index {a.potentials}",
+               f"variable cases_dir index {os.path.dirname(os.path.abspath(a.cases))}"]
     lines = defines + preamble if case["preamble"] else defines
     script = "\n".join(lines + case["lines"]) + "\n"
     with tempfile.NamedTemporaryFile("w", suffix=".in") as f:
@@ -150,6 +154,16 @@ def cmd_error(a):
                               capture_output=True, env=mpi_env())
     output = proc.stdout + proc.stderr
     errors = [line for line in output.splitlines() if line.startswith("ERROR")]
+    if case["warning"]:
+        # a misuse that can be legitimate: the run goes on, with this warning
+        warnings = [line for line in output.splitlines() if line.startswith("WARNING")]
+        found = [w for w in warnings if re.search(case["warning"], w)]
+        if errors or proc.returncode != 0 or not found:
+            print(output)
+            print(f"FAIL {a.name}: expected a WARNING /{case['warning']}/ and a run without error")
+            return 1
+        print(f"ok {a.name}: {found[0]}")
+        return 0
     if not errors:
         print(output)
         print(f"FAIL {a.name}: no LAMMPS error, expected /{case['expect']}/")
@@ -160,6 +174,21 @@ def cmd_error(a):
         return 1
     print(f"ok {a.name}: {errors[0]}")
     return 0
+
+
+def cmd_branches(a):
+    """Every error and warning branch of the package's sources has a test:
+    the error cases of the case files are at least as many."""
+    calls = 0
+    for name in sorted(os.listdir(a.package)):
+        if name.endswith(".cpp"):
+            with open(os.path.join(a.package, name)) as f:
+                calls += len(re.findall(r"error->(?:all|one|warning)\(", f.read()))
+    cases = sum(len(read_error_cases(path)[1]) for path in a.cases)
+    ok = calls > 0 and cases >= calls
+    print(f"{'ok' if ok else 'FAIL'}: {cases} error and warning cases in {len(a.cases)} files for "
+          f"{calls} error and warning branches in {a.package}")
+    return 0 if ok else 1
 
 
 def declared_styles(pkg_dir):
@@ -319,9 +348,13 @@ def main():
     s.add_argument("--var", action="append", default=[])
     s.add_argument("--rtol", type=float, default=1e-12)
 
+    s = sub.add_parser("branches")
+    s.add_argument("--package", required=True)
+    s.add_argument("--cases", nargs="+", required=True)
+
     a = p.parse_args()
     return {"state": cmd_state, "same": cmd_same, "error": cmd_error, "styles": cmd_styles,
-            "exports": cmd_exports, "eq6": cmd_eq6}[a.cmd](a)
+            "exports": cmd_exports, "eq6": cmd_eq6, "branches": cmd_branches}[a.cmd](a)
 
 
 if __name__ == "__main__":

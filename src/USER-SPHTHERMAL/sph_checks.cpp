@@ -1,0 +1,164 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   The checks every style of the package shares (sph_checks.h).
+------------------------------------------------------------------------- */
+
+#include "sph_checks.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix.h"
+#include "group.h"
+#include "modify.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+/* ---------------------------------------------------------------------- */
+
+void SPHCheck::atom_state(LAMMPS *lmp, const char *who, int groupbit, int needs)
+{
+  Atom *atom = lmp->atom;
+  const int *const mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  // the first bad quantity of an atom: 0 none, 1 rho, 2 cv, 3 esph
+  tagint bad_tag = MAXTAGINT;
+  double bad[3] = {0.0, 0.0, 0.0};    // quantity, type, value
+  for (int i = 0; i < nlocal; i++) {
+    if (groupbit && !(mask[i] & groupbit)) continue;
+    int quantity = 0;
+    double value = 0.0;
+    if ((needs & RHO) && !(std::isfinite(atom->rho[i]) && atom->rho[i] > 0.0))
+      quantity = 1, value = atom->rho[i];
+    else if ((needs & CV) && !(std::isfinite(atom->cv[i]) && atom->cv[i] > 0.0))
+      quantity = 2, value = atom->cv[i];
+    else if ((needs & ESPH) && !std::isfinite(atom->esph[i]))
+      quantity = 3, value = atom->esph[i];
+    if (quantity && atom->tag[i] < bad_tag) {
+      bad_tag = atom->tag[i];
+      bad[0] = quantity;
+      bad[1] = atom->type[i];
+      bad[2] = value;
+    }
+  }
+  tagint first;
+  MPI_Allreduce(&bad_tag, &first, 1, MPI_LMP_TAGINT, MPI_MIN, lmp->world);
+  if (first == MAXTAGINT) return;
+  // the owner tells every rank, so that the error is collective
+  double mine[3] = {0.0, 0.0, 0.0}, all[3];
+  if (bad_tag == first)
+    for (int k = 0; k < 3; k++) mine[k] = bad[k];
+  MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_SUM, lmp->world);
+  static const char *const names[] = {"", "rho", "cv", "esph"};
+  static const char *const wants[] = {"", "finite and > 0", "finite and > 0", "finite"};
+  const int quantity = (int) all[0];
+  lmp->error->all(FLERR, "{}: {} of atom {} (type {}) is {}; it must be {}", who, names[quantity],
+                  first, (int) all[1], all[2], wants[quantity]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+int SPHCheck::first_nonfinite(const double *values, int n)
+{
+  for (int i = 0; i < n; i++)
+    if (!std::isfinite(values[i])) return i;
+  return -1;
+}
+
+int SPHCheck::first_nonfinite3(double *const *values, int n)
+{
+  for (int i = 0; i < n; i++)
+    if (!std::isfinite(values[i][0] + values[i][1] + values[i][2])) return i;
+  return -1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void SPHCheck::stop(LAMMPS *lmp, const std::string &message)
+{
+  // one rank: a clean stop with the output flushed
+  if (lmp->comm->nprocs == 1) lmp->error->all(FLERR, message);
+  // error->one prints on rank 0 only and may abort before stdout is
+  // flushed: stderr is unbuffered
+  fmt::print(stderr, "ERROR on proc {}: {}\n", lmp->comm->me, message);
+  lmp->error->one(FLERR, message);
+}
+
+void SPHCheck::nonfinite(LAMMPS *lmp, const char *who, const char *quantity, int i, double value,
+                         const std::string &why)
+{
+  stop(lmp,
+       fmt::format("{}: {} of atom {} (type {}) is {} at step {}{}{}", who, quantity,
+                   lmp->atom->tag[i], lmp->atom->type[i], value, lmp->update->ntimestep,
+                   why.empty() ? "" : ": ", why));
+}
+
+/* ---------------------------------------------------------------------- */
+
+int SPHCheck::groups_overlap(LAMMPS *lmp, int groupbit1, int groupbit2)
+{
+  const int *const mask = lmp->atom->mask;
+  int local = 0, any;
+  for (int i = 0; i < lmp->atom->nlocal && !local; i++)
+    if ((mask[i] & groupbit1) && (mask[i] & groupbit2)) local = 1;
+  MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_MAX, lmp->world);
+  return any;
+}
+
+bigint SPHCheck::group_count(LAMMPS *lmp, int groupbit)
+{
+  const int *const mask = lmp->atom->mask;
+  bigint local = 0, all;
+  for (int i = 0; i < lmp->atom->nlocal; i++)
+    if (mask[i] & groupbit) local++;
+  MPI_Allreduce(&local, &all, 1, MPI_LMP_BIGINT, MPI_SUM, lmp->world);
+  return all;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void SPHCheck::group_of_kind(LAMMPS *lmp, Fix *fix, std::initializer_list<const char *> exclusive,
+                             bool every_ok, bool moving_ok)
+{
+  Error *error = lmp->error;
+  const char *group = lmp->group->names[fix->igroup];
+  const bigint count = group_count(lmp, fix->groupbit);
+  if (count == 0)
+    error->all(FLERR, "Fix {} (style {}): group {} has no atoms", fix->id, fix->style, group);
+  if (!every_ok && count == lmp->atom->natoms)
+    error->all(FLERR,
+               "Fix {} (style {}): group {} holds every atom, so no particle is left for the medium "
+               "it bounds",
+               fix->id, fix->style, group);
+
+  Modify *modify = lmp->modify;
+  for (int i = 0; i < modify->nfix; i++) {
+    Fix *other = modify->fix[i];
+    if (other == fix) continue;
+    bool clash = false;
+    for (const char *style : exclusive) clash = clash || strcmp(other->style, style) == 0;
+    if (clash && groups_overlap(lmp, fix->groupbit, other->groupbit))
+      error->all(FLERR,
+                 "Fix {} (style {}) and fix {} (style {}) share atoms of groups {} and {}: a "
+                 "particle can be one of them only",
+                 fix->id, fix->style, other->id, other->style, group,
+                 lmp->group->names[other->igroup]);
+    if (strcmp(other->style, "sph") == 0 && groups_overlap(lmp, fix->groupbit, other->groupbit)) {
+      if (!moving_ok)
+        error->all(FLERR,
+                   "Fix {} (style {}): atoms of group {} are also moved by fix {} (style sph); "
+                   "integrate them with fix sph/stationary, or not at all",
+                   fix->id, fix->style, group, other->id);
+      else if (lmp->comm->me == 0)
+        error->warning(FLERR,
+                       "Fix {} (style {}): atoms of group {} are also moved by fix {} (style sph)",
+                       fix->id, fix->style, group, other->id);
+    }
+  }
+}

@@ -1,0 +1,59 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SPH_CHECKS_H
+#define LMP_SPH_CHECKS_H
+
+#include "lmptype.h"
+
+#include <initializer_list>
+#include <string>
+
+namespace LAMMPS_NS {
+
+class LAMMPS;
+class Fix;
+
+// The package's one place for the checks that keep a run from going on
+// silently with a value that makes no sense: per-atom state at the start of
+// a run, rates after they are computed, and overlapping groups of styles.
+namespace SPHCheck {
+
+  // what a style needs of every owned atom of a group: finite esph, and a
+  // finite positive rho and cv when asked; a collective error naming the
+  // first offending atom (lowest ID), its type and the quantity
+  enum { RHO = 1, CV = 2, ESPH = 4 };
+  void atom_state(LAMMPS *lmp, const char *who, int groupbit, int needs);
+
+  // stop for a problem this rank alone has found (no communication): the
+  // message reaches the output whichever rank finds it
+  void stop(LAMMPS *lmp, const std::string &message);
+
+  // the first owned atom whose value of 'values' is not finite, or -1
+  int first_nonfinite(const double *values, int n);
+  int first_nonfinite3(double *const *values, int n);
+
+  // stop (on this rank: no communication) naming the owned atom i, its type,
+  // the quantity and the step; 'why' says what made it so, may be empty
+  void nonfinite(LAMMPS *lmp, const char *who, const char *quantity, int i,
+                 double value, const std::string &why);
+
+  // the group of a fix that stands for particles of a kind (a wall, a
+  // heated surface), at its init: an error when it is empty, or holds every
+  // atom (unless every_ok), or shares atoms with a fix of one of the styles
+  // 'exclusive' (a particle can be one kind of wall only); integrated by
+  // fix sph (moving with the flow) an error, or a warning when moving_ok
+  void group_of_kind(LAMMPS *lmp, Fix *fix, std::initializer_list<const char *> exclusive,
+                     bool every_ok, bool moving_ok);
+
+  // 1 when some atom is in both groups (collective)
+  int groups_overlap(LAMMPS *lmp, int groupbit1, int groupbit2);
+  // number of atoms of a group (collective)
+  bigint group_count(LAMMPS *lmp, int groupbit);
+
+}    // namespace SPHCheck
+}    // namespace LAMMPS_NS
+
+#endif
