@@ -12,8 +12,9 @@
    sph/cleary/heat relaxes T_i towards its neighbours, with the conductance
    the pair uses (either mean, any kernel, material ratio and disorder):
    the explicit update of T is then a convex combination of the old
-   temperatures for C_t <= 1, so it is stable and overshoots nowhere. It is set at the setup of every run and then
-   every N steps at the end of the step, the way fix dt/reset does it, so
+   temperatures for C_t <= 1, so it is stable and overshoots nowhere.
+   dt is set at the setup of every run and then every N steps at the end
+   of the step, the way fix dt/reset does it, so
    that the elapsed time (thermo keyword time) stays the sum of the steps.
 ------------------------------------------------------------------------- */
 
@@ -70,8 +71,9 @@ FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR, "Illegal {} command: N must be a positive integer, not '{}'", cmd, arg[3]);
   nevery = (int) n;
 
-  // defaults: stable on every example of the package (doc: Stability);
-  // seed 003 eq 18 for the force and viscous limits
+  // defaults: the acoustic one stable for the package's flows under
+  // gravity, seed 003 eq 18 for the force and viscous limits, the thermal
+  // one half the limit that is sure to be stable (see the doc)
   coeff[ACOUSTIC] = 0.1;
   coeff[FORCE] = 0.25;
   coeff[VISCOUS] = 0.125;
@@ -280,7 +282,7 @@ void FixSPHDtReset::choose_dt()
         take(ACOUSTIC, dt);
       }
     }
-    if (coeff[FORCE] > 0.0 && fsq > 0.0) {
+    if (coeff[FORCE] > 0.0 && fsq != 0.0) {    // a non-finite force counts
       const double m = rmass ? rmass[i] : mass[itype];
       const double accel = ftm2v * sqrt(fsq) / m;
       const double dt = coeff[FORCE] * sqrt(h / accel);

@@ -42,10 +42,10 @@ class FixSPHDtReset : public Fix {
   int respa_flag;
   int warned;    // the fix-order warning was given
   int bound_warned;    // the warning that 'min' overrides a limit was given (per run)
+  class FixSPHMaterials *materials;
   // per-atom relaxation rate of pair sph/cleary/heat (the thermal limit),
   // nullptr when the run has no conduction
   double **relax_rate;
-  class FixSPHMaterials *materials;
 
   double parse_value(int, int, char **, bool);
   double smoothing_length();
