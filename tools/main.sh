@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The main job: install prerequisites, build LAMMPS 29Sep2021 and the
-# USER-SPHTHERMAL plugin, run the flagship example (erf slab, seed 000
+# USER-SPHTHERMAL plugin, run the flagship example (erf slab, Cleary 1998,
 # section 3.1) and print its error against the exact solution.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

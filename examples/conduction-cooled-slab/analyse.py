@@ -1,4 +1,4 @@
-"""Errors of the slab cooled at one face (seed 003 section 4.1) against the
+"""Errors of the slab cooled at one face (Ng et al. 2020, section 4.1) against the
 exact series (reference/analytic.md, case 3); writes cooled-slab.png.
 
 Slab 0 <= y <= L (L = 2 cm), alpha = k / (rho cv) = 1e-6 m^2/s, initially at
@@ -6,7 +6,7 @@ T_H = 200 C, the face y = L held at T_C = 0 C, the face y = 0 adiabatic. With
 s = L - y the distance from the held face (case 3 with its L = 2 L):
   T = T_C + (T_H - T_C) (4/pi) sum_{m>=0} sin(lambda_m s) / (2m+1) exp(-alpha lambda_m^2 t),
   lambda_m = (2m+1) pi / (2L).
-Seed 003 eq 21 prints a prefactor -800/pi; with its cos(lambda_n y), y from the
+Ng et al. 2020, eq 21, prints a prefactor -800/pi; with its cos(lambda_n y), y from the
 adiabatic face, it is this series with +800/pi = 4 (T_H - T_C) / pi (the
 printed sign gives T < 0 everywhere).
 Errors over the slab's particles in % of T_H - T_C: max and L2
@@ -37,7 +37,7 @@ def exact(y, t, terms=400):
 
 
 def eq21_as_printed(y, t, terms=400):
-    """Seed 003 eq 21 as printed (y from the lower, adiabatic face)."""
+    """Ng et al. 2020, eq 21, as printed (y from the lower, adiabatic face)."""
     n = np.arange(1, terms + 1)[:, None]
     lam = (2 * n - 1) * math.pi / (2 * L)
     y = np.asarray(y, dtype=float)[None, :]
@@ -121,7 +121,7 @@ def main():
     ax.axvline(100 * L, color="k", lw=0.5)
     ax.set_xlabel("y (cm); held face at y = 2 cm, adiabatic face at y = 0")
     ax.set_ylabel("T* = (T - T_C) / (T_H - T_C)")
-    ax.set_title("slab cooled at one face (seed 003 section 4.1)", fontsize=9)
+    ax.set_title("slab cooled at one face (Ng et al. 2020, section 4.1)", fontsize=9)
     ax.legend(fontsize=7)
     for j, (label, runs) in enumerate(results.items()):
         ns = [n for n, _ in runs]

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Slab cooled at one face (seed 003 section 4.1) against the exact series.
+# Slab cooled at one face (Ng et al. 2020, section 4.1) against the exact series.
 #   ./run.sh          n = 10, 20, 40, 80 particles across, cubic kernel with h = 1.3 dx:
 #                     the cold face by extrapolated dummy particles (fix sph/wall/dirichlet)
 #                     and by wall particles held at T_C (fix sph/wall/isothermal); dummy

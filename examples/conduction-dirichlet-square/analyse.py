@@ -1,4 +1,4 @@
-"""Convergence of the Dirichlet square (seed 004 section 3.1) against the exact
+"""Convergence of the Dirichlet square (Reece et al. 2024, section 3.1) against the exact
 series (reference/analytic.md, case 4); writes square.png.
 
 T = T1 sum_{n odd} 4/(n pi) sin(n pi y) sinh(n pi x) / sinh(n pi) on [0,1]^2,

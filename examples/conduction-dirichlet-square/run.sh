@@ -1,5 +1,5 @@
 #!/bin/sh
-# Convergence study of the steady Dirichlet square (seed 004 section 3.1).
+# Convergence study of the steady Dirichlet square (Reece et al. 2024, section 3.1).
 #   ./run.sh          n = 10, 20, 40, 80 particles across; cubic (h = dx) and Wendland
 #                     (h = 1.3 dx) with extrapolated dummy walls, cubic with isothermal
 #                     wall particles for comparison (about 2 minutes)

@@ -1,4 +1,4 @@
-"""Conduction in a disc (seed 000 section 3.5) against the Bessel series
+"""Conduction in a disc (Cleary 1998, section 3.5) against the Bessel series
 (reference/analytic.md, case 8); writes disc.png.
 
 Arguments: label:prefix ... (one per run; <prefix>.dump with id type x y c_T,

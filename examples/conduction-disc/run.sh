@@ -1,5 +1,5 @@
 #!/bin/sh
-# Conduction in a disc, correct against naive boundary set-up (seed 000 section 3.5).
+# Conduction in a disc, correct against naive boundary set-up (Cleary 1998, section 3.5).
 #   ./run.sh          the disc 30 particles across (R = 15 dx), cubic h = 1.3 dx: Cleary's set-up
 #                     (tools/sph_boundary.py, eps = 0.42, one wall ring), the naive set-up
 #                     (4- and 8-connected outermost lattice points), 2 and 3 wall rings,

@@ -1,7 +1,7 @@
 """Error of the erf example against the exact solution; writes erf.png.
 
 T = (TL + TR)/2 + (TR - TL)/2 erf((x - x0) / sqrt(4 alpha t))
-(seed 000 eq 11 with its erratum: the similarity variable is x'/(2 sqrt(alpha t))).
+(Cleary 1998, eq 11, with its erratum: the similarity variable is x'/(2 sqrt(alpha t))).
 Errors are in % of the temperature jump TR - TL = 1.
 """
 

@@ -1,6 +1,6 @@
 #!/bin/sh
 # Run the erf slab example and print its error against the exact solution.
-#   ./run.sh          80 x 20 particles, as in seed 000 section 3.1, then the same
+#   ./run.sh          80 x 20 particles, as in Cleary 1998, section 3.1, then the same
 #                     particles with LAMMPS's pair sph/heatconduction for comparison
 #   ./run.sh quick    40 x 10 particles (the CI validation test)
 # Environment: LMP (LAMMPS binary), PLUGIN (sphthermalplugin.so), NP (MPI

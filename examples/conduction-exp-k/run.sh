@@ -1,6 +1,6 @@
 #!/bin/sh
 # Run the k = exp(4 T) example and print its error.
-#   ./run.sh          80 x 20 particles, as in seed 000 section 3.3 (about 2 minutes)
+#   ./run.sh          80 x 20 particles, as in Cleary 1998, section 3.3 (about 2 minutes)
 #   ./run.sh quick    40 x 4 particles (the CI test conduction.validation.exp_k_40x4)
 # Environment: LMP, PLUGIN, NP (MPI ranks), OUT (default ./out), PYTHON.
 set -e

@@ -4,7 +4,7 @@ Exact (reference/analytic.md, case 5): with isothermal sides at T = 0 a
 distance l apart, T = sin(pi x'/l) exp(-(pi/l)^2 alpha t) and the heat flux
 through each side per unit length of side is q = k (pi/l) exp(-(pi/l)^2 alpha t).
 SPH: the heat taken up by each isothermal wall per unit time (energy method,
-seed 000 eq 10, fix sph/wall/isothermal) and the direct estimate from the
+Cleary 1998, eq 10, fix sph/wall/isothermal) and the direct estimate from the
 temperature gradient at the wall particles (eq 9, compute sph/heatflux/atom),
 divided by the side's length.
 Errors are relative to the exact flux at the same time.

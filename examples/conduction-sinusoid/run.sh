@@ -1,6 +1,6 @@
 #!/bin/sh
 # Run the sinusoid example and print the wall heat flux error.
-#   ./run.sh          40 x 40 particles, as in seed 000 section 3.4
+#   ./run.sh          40 x 40 particles, as in Cleary 1998, section 3.4
 #   ./run.sh quick    20 x 20 particles (the CI test conduction.validation.sinusoid_20)
 # Environment: LMP, PLUGIN, NP (MPI ranks), OUT (default ./out), PYTHON.
 set -e

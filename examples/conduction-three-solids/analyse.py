@@ -1,4 +1,4 @@
-"""Errors of the three-solids example (seed 003 section 4.2); writes <prefix>.png.
+"""Errors of the three-solids example (Ng et al. 2020, section 4.2); writes <prefix>.png.
 
 Solids 0 < x < 1 m (k = 10), 1 m < x < 3 m (k = 2), 3 m < x < 4 m (k = 10),
 rho = 1, cv = 1e3, initially at T_C = 300 K; T_C held at x = 0, T_H = 420 K at
@@ -98,7 +98,7 @@ def main():
         ax.axvline(xi, color="grey", lw=0.5)
     ax.set_xlabel("x (m)")
     ax.set_ylabel("T* = (T - T_C) / (T_H - T_C)")
-    ax.set_title(f"three solids (seed 003 section 4.2), {a.label}", fontsize=9)
+    ax.set_title(f"three solids (Ng et al. 2020, section 4.2), {a.label}", fontsize=9)
     ax.legend(fontsize=6)
     r = np.array(rows)
     bx.semilogy(r[:, 0], r[:, 1], "o-", ms=3, label="max error against finite volume")

@@ -1,7 +1,7 @@
 #!/bin/sh
-# Three solids to steady state (seed 003 section 4.2) against the composite-wall
+# Three solids to steady state (Ng et al. 2020, section 4.2) against the composite-wall
 # solution and a fine 1-D finite-volume transient.
-#   ./run.sh          80 x 20 (s = 0.05 m, as in the seed), cubic kernel h = dx, to t = 3000 s:
+#   ./run.sh          80 x 20 (s = 0.05 m, as in the paper), cubic kernel h = dx, to t = 3000 s:
 #                     dummy walls (fix sph/wall/dirichlet), then wall particles held at the
 #                     wall temperatures (fix sph/wall/isothermal), then dummy walls with
 #                     h = 1.3 dx (about 2 minutes)

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Run the two-materials example (seed 000 section 3.2) and print its errors.
+# Run the two-materials example (Cleary 1998, section 3.2) and print its errors.
 #   ./run.sh          80 x 20: k ratio 3 and rho ratio 0.5 with pair sph/cleary/heat and
 #                     with LAMMPS's pair sph/heatconduction, then air/water (about 2 minutes)
 #   ./run.sh quick    40 x 10, k ratio 3 and rho ratio 0.5 only (the CI test)

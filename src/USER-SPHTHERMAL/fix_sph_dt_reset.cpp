@@ -4,10 +4,10 @@
 
    fix sph/dt/reset: adaptive timestep of weakly compressible, thermal SPH,
    the minimum over the particles of the group of four limits
-     acoustic  C_c h / (c_i + |v_i|)        (seed 000 eq 5, 003 eq 18, 004 eq 21)
-     force     C_f sqrt(h / |a_i|)           (003 eq 18, 004 eq 20)
-     viscous   C_v h^2 rho_i / mu_i          (003 eq 18, 004 eq 22)
-     thermal   C_t / lambda_i                (000 eq 7, 003 eq 18, 004 eqs 23-25)
+     acoustic  C_c h / (c_i + |v_i|)        (Cleary eq 5, Ng eq 18, Reece eq 21)
+     force     C_f sqrt(h / |a_i|)           (Ng eq 18, Reece eq 20)
+     viscous   C_v h^2 rho_i / mu_i          (Ng eq 18, Reece eq 22)
+     thermal   C_t / lambda_i                (Cleary eq 7, Ng eq 18, Reece eqs 23-25)
    clamped to [dtmin, dtmax]. lambda_i is the rate at which pair
    sph/cleary/heat relaxes T_i towards its neighbours, with the conductance
    the pair uses (either mean, any kernel, material ratio and disorder):
@@ -16,6 +16,8 @@
    dt is set at the setup of every run and then every N steps at the end
    of the step, the way fix dt/reset does it, so
    that the elapsed time (thermo keyword time) stays the sum of the steps.
+   Cleary: Cleary 1998; Ng: Ng et al. 2020; Reece: Reece et al. 2024
+   (doc/src/Bibliography_sphthermal.rst).
 ------------------------------------------------------------------------- */
 
 #include "fix_sph_dt_reset.h"
@@ -72,7 +74,7 @@ FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
   nevery = (int) n;
 
   // defaults: the acoustic one stable for the package's flows under
-  // gravity, seed 003 eq 18 for the force and viscous limits, the thermal
+  // gravity, Ng et al. 2020, eq 18, for the force and viscous limits, the thermal
   // one half the limit that is sure to be stable (see the doc)
   coeff[ACOUSTIC] = 0.1;
   coeff[FORCE] = 0.25;

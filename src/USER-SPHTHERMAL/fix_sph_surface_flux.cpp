@@ -3,7 +3,8 @@
    This software is distributed under the GNU General Public License.
 
    fix sph/surface/flux: a prescribed heat flux into a group of surface
-   particles (Xu, seed 002), or a convective one, q = h (T_inf - T).
+   particles (Xu, LS-DYNA conference paper), or a convective one,
+   q = h (T_inf - T).
 ------------------------------------------------------------------------- */
 
 #include "fix_sph_surface_flux.h"

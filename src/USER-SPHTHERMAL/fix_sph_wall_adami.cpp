@@ -4,7 +4,8 @@
 
    fix sph/wall/adami: wall particles of weakly compressible flow with the
    pressure and no-slip velocity extrapolated from the fluid (Adami, Hu &
-   Adams 2012; seed 003 eqs 8-9, with the body-force term of Adami kept):
+   Adams 2012; Ng et al. 2020, eqs 8-9, with the body-force term of Adami
+   kept):
      P_w = (sum_f P_f W_wf + (g - a_w) . sum_f rho_f r_wf W_wf) / sum_f W_wf
      rho_w from P_w by the wall type's equation of state
      vest_w = 2 v_w - sum_f v_f W_wf / sum_f W_wf   (v_w: the wall's own v)

@@ -3,11 +3,13 @@
    This software is distributed under the GNU General Public License.
 
    pair sph/harmonic/visc: continuity and momentum of weakly compressible
-   SPH in one pass per pair (sph_flow.h): the pressure forms of seeds 000,
-   003 and 004 with their continuity equations, viscosity with a harmonic
-   (000 eq 4, 003 eq 7) or arithmetic (004 eq 12) mean of the per-type,
-   optionally temperature-dependent viscosities, equations of state and
-   materials from fix sph/materials; optional density diffusion (003 eq 5).
+   SPH in one pass per pair (sph_flow.h): the pressure forms of Cleary 1998,
+   Ng et al. 2020 and Reece et al. 2024 with their continuity equations,
+   viscosity with a harmonic (Cleary 1998, eq 4; Ng et al. 2020, eq 7) or
+   arithmetic (Reece et al. 2024, eq 12) mean of the per-type, optionally
+   temperature-dependent viscosities, equations of state and materials from
+   fix sph/materials; optional density diffusion (Ng et al. 2020, eq 5).
+   References: doc/src/Bibliography_sphthermal.rst.
 ------------------------------------------------------------------------- */
 
 #include "pair_sph_harmonic_visc.h"
@@ -241,12 +243,12 @@ void PairSPHHarmonicVisc::eval()
 }
 
 /* ----------------------------------------------------------------------
-   density diffusion of Molteni & Colagrossi (seed 003 eqs 5-6), or of
-   Fourtakas et al. (seed 004 eq 39), which diffuses only the departure from
-   the hydrostatic density difference rho^H_ba = rho(P_b + rho0 g . r_ba) -
-   rho0 (by the equation of state of a), so that a column at rest under
-   gravity stays at rest; not across walls (the seeds set rho_b = rho_a for
-   wall particles)
+   density diffusion of Molteni & Colagrossi (Ng et al. 2020, eqs 5-6), or
+   of Fourtakas et al. (Reece et al. 2024, eq 39), which diffuses only the
+   departure from the hydrostatic density difference rho^H_ba =
+   rho(P_b + rho0 g . r_ba) - rho0 (by the equation of state of a), so that
+   a column at rest under gravity stays at rest; not across walls (the
+   papers set rho_b = rho_a for wall particles)
 ------------------------------------------------------------------------- */
 
 template <int KERNEL, int NEWTON_PAIR, int HYDROSTATIC> void PairSPHHarmonicVisc::eval_diffusion()
@@ -308,7 +310,7 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
   xi = SPHF_XI_CLEARY;
   xi_given = 0;
   eta_factor = -1.0;    // the default depends on the viscosity form
-  delta = 0.1;    // seed 003: "not a tunable parameter", 0.1 for all flows
+  delta = 0.1;    // Ng et al. 2020: "not a tunable parameter", 0.1 for all flows
   hydrostatic = 0;
   gravity[0] = gravity[1] = gravity[2] = 0.0;
   while (iarg < narg) {

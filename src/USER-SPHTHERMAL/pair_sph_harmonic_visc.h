@@ -36,8 +36,8 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   int viscosity_form;     // SPHF_V_* of sph_flow.h
   double xi;              // factor of the cleary viscosity
   int xi_given;           // xi was given (only the cleary form reads it)
-  double delta;           // density diffusion (seed 003 eq 5), 0: none
-  int hydrostatic;        // 1: Fourtakas's diffusion (seed 004 eq 39) with gravity below
+  double delta;           // density diffusion (Ng et al. 2020, eq 5), 0: none
+  int hydrostatic;        // 1: Fourtakas's diffusion (Reece et al. 2024, eq 39) with gravity below
   double gravity[3];
   double eta2;            // eta^2, regularises r -> 0
   class FixSPHMaterials *materials;

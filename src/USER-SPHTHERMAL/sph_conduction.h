@@ -12,10 +12,12 @@
 
 /* The conductance is twice a mean of the two conductivities, so that both
    reduce to 2 k for a single material.
-   Harmonic (seed 000 eq 6, 003 eq 10, 004 eq 9): 4 k_a k_b / (k_a + k_b),
+   Harmonic (Cleary 1998, eq 6; Ng et al. 2020, eq 10;
+   Reece et al. 2024, eq 9): 4 k_a k_b / (k_a + k_b),
    0 when both are 0 (an adiabatic k = 0 material); keeps the heat flux
    continuous across interfaces.
-   Arithmetic (seed 002 eq 11 with its erratum, Brookshaw): k_a + k_b. */
+   Arithmetic (Xu (LS-DYNA), eq 11 with its erratum, Brookshaw): k_a + k_b.
+   References: doc/src/Bibliography_sphthermal.rst. */
 static inline double sphc_harmonic_conductance(double k_a, double k_b)
 {
   const double sum = k_a + k_b;
@@ -36,12 +38,13 @@ static inline double sphc_conductance(int mean, double k_a, double k_b)
                                    : sphc_harmonic_conductance(k_a, k_b);
 }
 
-/* Cleary 1998 (seed 000) eq 6:
+/* Cleary 1998, eq 6:
      F_ab = conductance / (rho_a rho_b) * T_ab * r dW/dr / (r^2 + eta^2)
    with a conductance above, T_ab = T_a - T_b, r dW/dr = r_ab . grad_a W_ab,
    and eta^2 = 0.01 h^2 keeping the term finite as r -> 0. The variants of
-   the other seeds differ only in the mean and in eta: 003 eq 10 is the
-   same; 004 eq 9 and 002 eq 11 have eta = 0. */
+   the other papers differ only in the mean and in eta: Ng et al. 2020,
+   eq 10, is the same; Reece et al. 2024, eq 9, and Xu (LS-DYNA), eq 11,
+   have eta = 0. */
 static inline double sphc_cleary_pair(double conductance, double T_ab, double rho_a, double rho_b,
                                       double r, double dwdr, double eta2)
 {

@@ -4,8 +4,8 @@
    An EOS is a name and its coefficients, with the reference density rho0
    of the material:
      tait    P = B ((rho / rho0)^gamma - 1) + P_b,  B = rho0 c0^2 / gamma
-             (seed 004 eq 11; seed 000 eq 8 with P0 = B)
-     linear  P = c0^2 (rho - rho0) + P_b            (seed 003 eq 4)
+             (Reece et al. 2024, eq 11; Cleary 1998, eq 8 with P0 = B)
+     linear  P = c0^2 (rho - rho0) + P_b            (Ng et al. 2020, eq 4)
    c0 is the speed of sound at rho0 and P_b a background pressure (default 0).
 ------------------------------------------------------------------------- */
 

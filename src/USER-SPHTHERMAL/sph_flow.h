@@ -10,19 +10,19 @@
    P = pressure, mu = dynamic viscosity, eta2 = eta^2 regularises r -> 0.
 
    Pressure (the paper's continuity equation goes with each form):
-     symmetric  seed 000 eq 4: -m_a m_b (P_a / rho_a^2 + P_b / rho_b^2) grad W;
+     symmetric  Cleary 1998, eq 4: -m_a m_b (P_a / rho_a^2 + P_b / rho_b^2) grad W;
                 eq 3: drho_a = sum m_b v_ab . grad W
-     sum        seed 004 eq 8: -m_a m_b (P_a + P_b) / (rho_a rho_b) grad W;
+     sum        Reece et al. 2024, eq 8: -m_a m_b (P_a + P_b) / (rho_a rho_b) grad W;
                 eq 7: drho_a = rho_a sum V_b v_ab . grad W
-     averaged   seed 003 eq 7: -(V_a^2 + V_b^2) (P_a rho_b + P_b rho_a) /
+     averaged   Ng et al. 2020, eq 7: -(V_a^2 + V_b^2) (P_a rho_b + P_b rho_a) /
                 (rho_a + rho_b) grad W, V = m / rho (stable for large density
-                ratios); eq 5: as 004 eq 7
+                ratios); eq 5: as Reece et al. 2024, eq 7
    Viscosity:
-     cleary     seed 000 eq 4: xi m_a m_b / (rho_a rho_b) 4 mu_a mu_b /
+     cleary     Cleary 1998, eq 4: xi m_a m_b / (rho_a rho_b) 4 mu_a mu_b /
                 (mu_a + mu_b) (v_ab . r_ab) / (r^2 + eta^2) grad W
-     adami      seed 003 eq 7: (V_a^2 + V_b^2) 2 mu_a mu_b / (mu_a + mu_b)
+     adami      Ng et al. 2020, eq 7: (V_a^2 + V_b^2) 2 mu_a mu_b / (mu_a + mu_b)
                 v_ab dW/dr r / (r^2 + eta^2)   (harmonic mean)
-     morris     seed 004 eq 12 (the form of eq 14 with a consistent
+     morris     Reece et al. 2024, eq 12 (the form of eq 14 with a consistent
                 operator): m_a m_b 2 (nu_a + nu_b) / (rho_a + rho_b)
                 v_ab dW/dr r / (r^2 + eta^2), nu = mu / rho (arithmetic mean)
 ------------------------------------------------------------------------- */
@@ -35,7 +35,7 @@
 enum sphf_pressure_form { SPHF_P_SYMMETRIC = 0, SPHF_P_SUM, SPHF_P_AVERAGED, SPHF_P_NFORMS };
 enum sphf_viscosity_form { SPHF_V_CLEARY = 0, SPHF_V_ADAMI, SPHF_V_MORRIS, SPHF_V_NFORMS };
 
-/* xi of seed 000 eq 4, calibrated by Cleary on transient Couette flow */
+/* xi of Cleary 1998, eq 4, calibrated by Cleary on transient Couette flow */
 #define SPHF_XI_CLEARY 4.96333
 
 static inline const char *sphf_pressure_name(int form)
@@ -106,7 +106,7 @@ static inline double sphf_continuity_pair(int form, double m_b, double rho_a, do
   return rho_a * m_b / rho_b * dwdr_r;
 }
 
-/* density diffusion of Molteni & Colagrossi (seed 003 eqs 5-6):
+/* density diffusion of Molteni & Colagrossi (Ng et al. 2020, eqs 5-6):
    drho_a/dt += 2 delta h c0 sum (rho_b - rho_a) V_b (r_ba . grad_a W) / r^2
              =  s (rho_b - rho_a) with s = -2 delta h c0 V_b dW/dr / r */
 static inline double sphf_diffusion_pair(double delta_h_c0, double m_b, double rho_b,

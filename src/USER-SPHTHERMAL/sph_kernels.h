@@ -7,9 +7,9 @@
    and vanishes for q >= q_max (its support). LAMMPS's SPH pair styles take
    the support radius as the pair cutoff, so h = cutoff / q_max:
      lucy      q_max = 1  (h = cutoff, as in LAMMPS's SPH package)
-     cubic     q_max = 2  (cubic B-spline, Monaghan 1992; seed 002 eq 4)
-     quintic   q_max = 3  (quintic spline, Morris et al. 1997; seed 003)
-     wendland  q_max = 2  (Wendland C2, seed 004 eq 10)
+     cubic     q_max = 2  (cubic B-spline, Monaghan 1992; Xu (LS-DYNA), eq 4)
+     quintic   q_max = 3  (quintic spline, Morris et al. 1997; Ng et al. 2020)
+     wendland  q_max = 2  (Wendland C2, Reece et al. 2024, eq 10)
    Wendland C2 uses the 2-D/3-D polynomial in 1-D as well (still positive
    and non-increasing); its 1-D constant normalises that polynomial.
 ------------------------------------------------------------------------- */

@@ -4,7 +4,7 @@
    A law is a name, up to a few coefficients and an optional table:
      constant     p = c0
      linear       p = c0 + c1 (T - c2)
-     exponential  p = c0 exp(c1 T)          (seed 000 section 3.3: k = exp(4 T))
+     exponential  p = c0 exp(c1 T)          (Cleary 1998, section 3.3: k = exp(4 T))
      table        p linear in T between (T_n, p_n), constant beyond the ends
    The same laws serve conductivity and, later, viscosity.
 ------------------------------------------------------------------------- */

@@ -24,7 +24,7 @@ int main(void)
   expect_near(sphm_law_eval(&law, 300.0), 2.0, 1e-15, "linear at T0");
   expect_near(sphm_law_eval(&law, 310.0), 7.0, 1e-14, "linear slope");
 
-  law.kind = SPHM_EXPONENTIAL; /* seed 000 section 3.3: k = exp(4 T) */
+  law.kind = SPHM_EXPONENTIAL; /* Cleary 1998, section 3.3: k = exp(4 T) */
   law.c[0] = 1.0, law.c[1] = 4.0;
   expect_near(sphm_law_eval(&law, 0.0), 1.0, 1e-15, "exponential at 0");
   expect_near(sphm_law_eval(&law, 1.0), exp(4.0), 1e-12, "exponential at 1");

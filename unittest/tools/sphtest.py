@@ -10,7 +10,7 @@
   styles  load the plugin and check that 'plugin list' shows every style
           the package's headers declare
   exports check that the plugin exports lammpsplugin_init and no LAMMPS symbol
-  eq6     recompute desph of in.rates at step 0 from seed 000 eq 6 in plain
+  eq6     recompute desph of in.rates at step 0 from Cleary 1998, eq 6, in plain
           Python (an independent oracle for the pair style)
 """
 
@@ -291,7 +291,7 @@ def cmd_eq6(a):
         scale = max(scale, abs(rate))
     ok = scale > 0 and worst <= a.rtol * scale
     print(f"{'ok' if ok else 'FAIL'} {a.kernel}, {a.mean} mean, eta {a.eta}, {a.laws} k: desph against "
-          f"seed 000 eq 6 in Python: largest deviation {worst:.3e} of max |desph| = {scale:.6g}"
+          f"Cleary 1998 eq 6 in Python: largest deviation {worst:.3e} of max |desph| = {scale:.6g}"
           f" (tolerance {a.rtol:.1e})")
     return 0 if ok else 1
 

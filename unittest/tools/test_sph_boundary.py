@@ -32,7 +32,7 @@ def ring_spacing(p):
     return np.linalg.norm(np.roll(q, -1, axis=0) - q, axis=1)
 
 
-# disc, 30 particles across (R = 15 dx), as in the seed
+# disc, 30 particles across (R = 15 dx), as in Cleary 1998, section 3.5
 dx, R, eps = 1.0 / 30, 0.5, 0.42
 s = sb.disc(R, dx, eps=eps)
 wall, inner = s.x[s.layer == 0], s.x[s.interior]
