@@ -353,6 +353,25 @@ def conduction_map(args, runner):
 
 # ---------------------------------------------------------------- flow: Poiseuille
 
+# the end of the channel inputs: halt on a velocity beyond its bounds (NaN
+# compares false) or at the end time, thermo for the parser
+CHANNEL_MONITOR = """variable        speed2 atom vx*vx+vy*vy
+compute         v2max fluid reduce max v_speed2
+variable        vmax equal sqrt(c_v2max)
+variable        vysq atom vy*vy
+compute         vy2max fluid reduce max v_vysq
+variable        vymax equal sqrt(c_vy2max)
+# NaN compares false: halt unless both are within bounds
+variable        ok equal (v_vmax<={vlim})&&(v_vymax<={vylim})
+fix             blowup all halt 10 v_ok == 0 error continue
+variable        done equal time>={t_end}
+fix             tend all halt 10 v_done == 1 error continue
+thermo_style    custom step time dt v_vmax v_vymax {dtcols}
+thermo_modify   format float %.17g
+thermo          500
+run             {steps}
+"""
+
 POISEUILLE_INPUT = """# Poiseuille stability case Re = {Re}, {what}
 plugin load {plugin}
 units           si
@@ -383,22 +402,7 @@ fix             integrate fluid sph
 fix             drive fluid addforce {fdrive} 0.0 0.0
 timestep        {dt}
 {dtfix}
-variable        speed2 atom vx*vx+vy*vy
-compute         v2max fluid reduce max v_speed2
-variable        vmax equal sqrt(c_v2max)
-variable        vysq atom vy*vy
-compute         vy2max fluid reduce max v_vysq
-variable        vymax equal sqrt(c_vy2max)
-# NaN compares false: halt unless both are within bounds
-variable        ok equal (v_vmax<={vlim})&&(v_vymax<={vylim})
-fix             blowup all halt 10 v_ok == 0 error continue
-variable        done equal time>={t_end}
-fix             tend all halt 10 v_done == 1 error continue
-thermo_style    custom step time dt v_vmax v_vymax {dtcols}
-thermo_modify   format float %.17g
-thermo          500
-run             {steps}
-"""
+""" + CHANNEL_MONITOR
 
 
 def poiseuille_params(Re, n):
@@ -670,21 +674,7 @@ fix             integrate fluid sph
 velocity        lid set {V0} 0.0 0.0 units box
 timestep        {dt}
 {dtfix}
-variable        speed2 atom vx*vx+vy*vy
-compute         v2max fluid reduce max v_speed2
-variable        vmax equal sqrt(c_v2max)
-variable        vysq atom vy*vy
-compute         vy2max fluid reduce max v_vysq
-variable        vymax equal sqrt(c_vy2max)
-variable        ok equal (v_vmax<={vlim})&&(v_vymax<={vylim})
-fix             blowup all halt 10 v_ok == 0 error continue
-variable        done equal time>={t_end}
-fix             tend all halt 10 v_done == 1 error continue
-thermo_style    custom step time dt v_vmax v_vymax {dtcols}
-thermo_modify   format float %.17g
-thermo          500
-run             {steps}
-"""
+""" + CHANNEL_MONITOR
 
 
 def couette_params(case):

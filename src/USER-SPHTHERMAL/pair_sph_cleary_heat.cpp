@@ -202,14 +202,19 @@ void PairSPHClearyHeat::eval()
       const double dwdr = dw_scale * sphk_df(KERNEL, r * inv_h);
       const double conductance_ij =
           VARYING_K ? sphc_conductance(MEAN, k_i, conductivity[j]) : conductance_i[jtype];
-      const double f_ij =
-          sphc_cleary_pair(conductance_ij, temp_i - esph[j] / cv[j], rho_i, rho[j], r, dwdr, eta2);
-      desph_i += (RMASS ? rmass[j] : mass[jtype]) * f_ij;
+      const double temp_ij = temp_i - esph[j] / cv[j];
+      const double mass_j = RMASS ? rmass[j] : mass[jtype];
+      // with RELAX, F_ij per unit temperature difference (<= 0, as dW/dr) is
+      // needed too: one evaluation serves both
+      const double g_ij = RELAX ? sphc_cleary_pair(conductance_ij, 1.0, rho_i, rho[j], r, dwdr, eta2)
+                                : 0.0;
+      const double f_ij = RELAX
+          ? g_ij * temp_ij
+          : sphc_cleary_pair(conductance_ij, temp_ij, rho_i, rho[j], r, dwdr, eta2);
+      desph_i += mass_j * f_ij;
       if (NEWTON_PAIR || j < nlocal) desph[j] -= mass_i * f_ij;
       if (RELAX) {
-        // F_ij per unit temperature difference (dW/dr <= 0, so it is <= 0)
-        const double g_ij = sphc_cleary_pair(conductance_ij, 1.0, rho_i, rho[j], r, dwdr, eta2);
-        relax_i -= (RMASS ? rmass[j] : mass[jtype]) * g_ij;
+        relax_i -= mass_j * g_ij;
         if (NEWTON_PAIR || j < nlocal) relax_rate[j] -= mass_i * g_ij;
       }
     }

@@ -15,9 +15,10 @@ different ones, the run is made with the fixes in both orders. Checked:
 import argparse
 import os
 import re
-import subprocess
 import sys
-import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from sphtest import run_script  # noqa: E402
 
 FIXES = {
     "iso": "fix {id} {group} sph/wall/isothermal 350.0",
@@ -88,14 +89,9 @@ def run(lmp, plugin, order, pair):
                         tally_prints=" ".join(f"{kind} $(f_{fid}:%.17g)" for fid, kind in tallied))
     if not any(kind in ("iso", "dir") for kind, _, _ in fixes):
         text = text.replace("group walls union left\ngroup medium subtract all walls", "group medium union all")
-    with tempfile.TemporaryDirectory() as tmp:
-        path = os.path.join(tmp, "in.books")
-        with open(path, "w") as f:
-            f.write(text)
-        proc = subprocess.run([lmp, "-log", "none", "-in", path], cwd=tmp, capture_output=True, text=True)
-    out = proc.stdout + proc.stderr
+    returncode, out = run_script(lmp, text)
     m = re.search(r"^BOOKS (.*)$", out, re.M)
-    if proc.returncode != 0 or not m:
+    if returncode != 0 or not m:
         print(out)
         sys.exit(f"FAIL {pair} ({order}): the run did not finish")
     words = m.group(1).split()

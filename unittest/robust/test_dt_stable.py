@@ -13,9 +13,10 @@ can fail.
 import argparse
 import os
 import re
-import subprocess
 import sys
-import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from sphtest import run_script  # noqa: E402
 
 CASES = {
     # name: (mean, k2 / k1, rho2 cv2 / (rho1 cv1), jitter in spacings)
@@ -76,13 +77,7 @@ def run(a, case, dtargs):
     rho2, cv2 = (1000.0 * rhocv2, 1.0) if rhocv2 < 1.0 else (1000.0, rhocv2)
     text = INPUT.format(plugin=a.plugin, jitter=jitter * 0.01, mass2=0.1 * rho2 / 1000.0,
                         rho2=rho2, cv2=cv2, cv2m1=cv2 - 1.0, k2=k2, mean=mean, dtargs=dtargs)
-    with tempfile.TemporaryDirectory() as tmp:
-        path = os.path.join(tmp, "in.stable")
-        with open(path, "w") as f:
-            f.write(text)
-        proc = subprocess.run([a.lmp, "-log", "none", "-in", path], cwd=tmp, capture_output=True,
-                              text=True)
-    out = proc.stdout + proc.stderr
+    _, out = run_script(a.lmp, text)
     m = re.search(r"^RANGE (\S+) (\S+) (\S+) (\S+)$", out, re.M)
     if m:
         lo, hi, tmin, tmax = map(float, m.groups())

@@ -43,6 +43,17 @@ def mpi_env():
     return env
 
 
+def run_script(lmp, text):
+    """Run an input given as text in a scratch directory; (return code, output)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "in.script")
+        with open(path, "w") as f:
+            f.write(text)
+        proc = subprocess.run([lmp, "-log", "none", "-in", path], cwd=tmp, capture_output=True,
+                              text=True, env=mpi_env())
+    return proc.returncode, proc.stdout + proc.stderr
+
+
 def run_state(driver, input_file, lmp_vars, np_=1, mpirun="mpirun"):
     """Run the driver; return {column: [values]} sorted by atom id."""
     fd, out = tempfile.mkstemp(suffix=".state")
