@@ -9,9 +9,20 @@
 #include "lammpsplugin.h"
 #include "version.h"
 
+#include "command.h"
+#include "comm.h"
 #include "compute.h"
+#include "error.h"
 #include "fix.h"
+#include "force.h"
+#include "input.h"
+#include "modify.h"
 #include "pair.h"
+#include "utils.h"
+
+#include <cstring>
+#include <string>
+#include <vector>
 
 #include "sphthermal_styles.h"    // class definitions
 
@@ -33,6 +44,11 @@ template <typename T> Compute *compute_creator(LAMMPS *lmp, int narg, char **arg
   return new T(lmp, narg, arg);
 }
 
+template <typename T> Command *command_creator(LAMMPS *lmp)
+{
+  return new T(lmp);
+}
+
 void register_style(lammpsplugin_regfunc register_plugin, void *lmp, void *handle,
                     const char *style, const char *name, lammpsplugin_factory1 *v1,
                     lammpsplugin_factory2 *v2)
@@ -50,12 +66,58 @@ void register_style(lammpsplugin_regfunc register_plugin, void *lmp, void *handl
   plugin.handle = handle;
   (*register_plugin)(&plugin, lmp);
 }
+std::string join(const std::vector<std::string> &words)
+{
+  std::string text;
+  for (const auto &word : words) text += (text.empty() ? "" : ", ") + word;
+  return text;
+}
 }    // namespace
 
-extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *lmp, void *handle,
+extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *ptr, void *handle,
                                                                          void *regfunc)
 {
   lammpsplugin_regfunc reg = (lammpsplugin_regfunc) regfunc;
+  LAMMPS *lmp = (LAMMPS *) ptr;
+
+  // LAMMPS logs a line per registered style; one line per load is enough:
+  // the registrations are silenced and summarised below. A style of the
+  // same name already present is reported first, since the host's warning
+  // would be silenced with the rest.
+  std::vector<std::string> names, clashes;
+#define PAIR_CLASS
+#define PairStyle(key, Class)                                                  \
+  names.push_back("pair " #key);                                               \
+  if (lmp->force->pair_map->count(#key)) clashes.push_back("pair style " #key);
+#define FIX_CLASS
+#define FixStyle(key, Class)                                                   \
+  names.push_back("fix " #key);                                                \
+  if (lmp->modify->fix_map->count(#key)) clashes.push_back("fix style " #key);
+#define COMPUTE_CLASS
+#define ComputeStyle(key, Class)                                               \
+  names.push_back("compute " #key);                                            \
+  if (lmp->modify->compute_map->count(#key)) clashes.push_back("compute style " #key);
+#define COMMAND_CLASS
+#define CommandStyle(key, Class)                                               \
+  names.push_back(#key);                                                       \
+  if (lmp->input->command_map->count(#key)) clashes.push_back("command " #key);
+#include "sphthermal_styles.h"
+#undef PairStyle
+#undef FixStyle
+#undef ComputeStyle
+#undef CommandStyle
+#undef PAIR_CLASS
+#undef FIX_CLASS
+#undef COMPUTE_CLASS
+#undef COMMAND_CLASS
+  if (!clashes.empty() && lmp->comm->me == 0)
+    lmp->error->warning(FLERR,
+                        "USER-SPHTHERMAL plugin: this LAMMPS already has {}: the plugin "
+                        "replaces it (is the package also built in?)",
+                        join(clashes));
+
+  FILE *screen = lmp->screen, *logfile = lmp->logfile;
+  lmp->screen = lmp->logfile = nullptr;
 
 #define PAIR_CLASS
 #define PairStyle(key, Class)                                                                    \
@@ -80,4 +142,23 @@ extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *l
 #include "sphthermal_styles.h"
 #undef ComputeStyle
 #undef COMPUTE_CLASS
+
+#define COMMAND_CLASS
+#define CommandStyle(key, Class)                                                          \
+  register_style(reg, lmp, handle, "command", #key,                                      \
+                 (lammpsplugin_factory1 *) &command_creator<Class>, nullptr);
+#include "sphthermal_styles.h"
+#undef CommandStyle
+#undef COMMAND_CLASS
+
+  lmp->screen = screen;
+  lmp->logfile = logfile;
+  if (lmp->comm->me == 0) {
+    std::string line = fmt::format("Loading plugin: USER-SPHTHERMAL, thermal SPH ({} styles: {})",
+                                   names.size(), join(names));
+    if (strcmp(LAMMPS_VERSION, lmp->version) != 0)
+      line += fmt::format("; compiled for LAMMPS {}, loaded into LAMMPS {}", LAMMPS_VERSION,
+                          lmp->version);
+    utils::logmesg(lmp, line + "\n");
+  }
 }

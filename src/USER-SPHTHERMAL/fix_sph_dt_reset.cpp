@@ -30,6 +30,7 @@
 #include "integrate.h"
 #include "modify.h"
 #include "pair.h"
+#include "sph_body_force.h"
 #include "sph_checks.h"
 #include "sph_eos.h"
 #include "sph_kernels.h"
@@ -61,7 +62,7 @@ static const char *const sph_pairs[] = {"sph/harmonic/visc", "sph/cleary/heat"};
 
 FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), dtmin(0.0), dtmax(BIG), h_user(0.0), h(0.0), active(0), respa_flag(0),
-    warned(0), bound_warned(0), materials(nullptr), relax_rate(nullptr)
+    warned(0), bound_warned(0), materials(nullptr), relax_rate(nullptr), body_force(nullptr)
 {
   if (!atom->rho_flag || !atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Fix sph/dt/reset requires atom style sph (rho, esph, cv)");
@@ -169,8 +170,10 @@ void FixSPHDtReset::init()
   if (coeff[FORCE] > 0.0 && !warned) {
     warned = 1;
     const int me_index = modify->find_fix(id);
+    int dim;
     for (int i = me_index + 1; i < modify->nfix; i++)
-      if ((modify->fmask[i] & POST_FORCE) && comm->me == 0)
+      if ((modify->fmask[i] & POST_FORCE) && !modify->fix[i]->extract("gvec", dim) &&
+          comm->me == 0)
         error->warning(FLERR,
                        "Fix sph/dt/reset: fix {} (style {}) is defined after it and acts after "
                        "the forces; if it changes forces, define fix sph/dt/reset after it so "
@@ -179,6 +182,7 @@ void FixSPHDtReset::init()
   }
 
   h = smoothing_length();
+  body_force = SPHBodyForce::find(lmp, "Fix sph/dt/reset");
 
   // the hub is needed only by the limits that read material properties
   materials = nullptr;
@@ -303,6 +307,13 @@ void FixSPHDtReset::choose_dt()
       const double dt = coeff[THERMAL] / (*relax_rate)[i];
       take(THERMAL, dt);
     }
+  }
+  // the body force alone, as read from its fix: it counts from the first
+  // step even when that fix adds it after this one has looked at the forces
+  if (coeff[FORCE] > 0.0 && body_force) {
+    const double g = ftm2v * sqrt(body_force[0] * body_force[0] + body_force[1] * body_force[1] +
+                                  body_force[2] * body_force[2]);
+    if (g > 0.0) take(FORCE, coeff[FORCE] * sqrt(h / g));
   }
   for (int k = 0; k < NLIMITS; k++)
     if (bad[k]) bad_limit(k);

@@ -46,6 +46,7 @@ class FixSPHDtReset : public Fix {
   // per-atom relaxation rate of pair sph/cleary/heat (the thermal limit),
   // nullptr when the run has no conduction
   double **relax_rate;
+  const double *body_force;    // the run's body force (fix gravity), nullptr when none
 
   double parse_value(int, int, char **, bool);
   double smoothing_length();

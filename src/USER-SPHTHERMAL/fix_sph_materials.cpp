@@ -19,6 +19,8 @@
 #include "tokenizer.h"
 #include "update.h"
 
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -49,16 +51,17 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
   memory->create(expansion_type, ntypes + 1, "sph/materials:expansion");
   for (int i = 0; i <= ntypes; i++) {
     eos_set[i] = 0;
-    cv_type[i] = rho0_type[i] = expansion_type[i] = -1.0;
+    cv_type[i] = rho0_type[i] = -1.0;
+    expansion_type[i] = 0.0;
   }
 
   if (narg < 4)
     error->all(FLERR, "Illegal {} command: expected 'type <I> <property> ...' or 'file ...'", cmd);
 
-  // global array, one row per type: rho0, cv (for input scripts: masses, set sph/cv)
+  // global array, one row per type: every property, for input scripts
   array_flag = 1;
   size_array_rows = ntypes;
-  size_array_cols = 2;
+  size_array_cols = 6;
   extarray = 0;
   global_freq = 1;
 
@@ -180,12 +183,41 @@ void FixSPHMaterials::type_range(const std::string &word, int &ilo, int &ihi)
 }
 
 /* ----------------------------------------------------------------------
-   row = type - 1; column 0: rho0, 1: cv (-1 when not given)
+   row = type - 1; columns: rho0, cv, expansion, speed of sound, then the
+   conductivity and viscosity (the value of a constant law, the first
+   coefficient k0 or mu0 of the others, the first value of a table); -1
+   when not given (0 for the expansion)
 ------------------------------------------------------------------------- */
 
 double FixSPHMaterials::compute_array(int row, int column)
 {
-  return (column == 0) ? rho0_type[row + 1] : cv_type[row + 1];
+  const int type = row + 1;
+  auto law_value = [](const MaterialLaw &slot) {
+    if (!slot.set) return -1.0;
+    return (slot.law.kind == SPHM_TABLE) ? slot.law.table_p[0] : slot.law.c[0];
+  };
+  switch (column) {
+    case 0: return rho0_type[type];
+    case 1: return cv_type[type];
+    case 2: return expansion_type[type];
+    case 3: return eos_set[type] ? eos_type[type].c0 : -1.0;
+    case 4: return law_value(conductivity_laws[type]);
+    default: return law_value(viscosity_laws[type]);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   per-type arrays (index: type) for other styles and the library interface
+------------------------------------------------------------------------- */
+
+void *FixSPHMaterials::extract(const char *name, int &dim)
+{
+  dim = 1;
+  if (strcmp(name, "rho0") == 0) return (void *) rho0_type;
+  if (strcmp(name, "cv") == 0) return (void *) cv_type;
+  if (strcmp(name, "expansion") == 0) return (void *) expansion_type;
+  dim = 0;
+  return nullptr;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -350,6 +382,69 @@ double FixSPHMaterials::positive(const std::string &word, const std::string &wha
 }
 
 /* ----------------------------------------------------------------------
+   where a material file is looked for, as LAMMPS does for potential files:
+   the name as given (relative to the working directory), then by its file
+   name in each directory of $LAMMPS_POTENTIALS, the directory of the input
+   script (-in), the package's own potentials/ (plugin builds) and the
+   potentials directory of Debian's LAMMPS; 'tried' lists every place
+------------------------------------------------------------------------- */
+
+std::string FixSPHMaterials::find_material_file(const std::string &file,
+                                                std::vector<std::string> &tried)
+{
+  std::vector<std::string> candidates = {file};
+  const std::string name = utils::path_basename(file);
+  if (const char *env = getenv("LAMMPS_POTENTIALS"))
+    for (const auto &dir : Tokenizer(env, ":").as_vector())
+      candidates.push_back(utils::path_join(dir, name) + "  (LAMMPS_POTENTIALS)");
+  const std::string input_dir = input_script_dir();
+  if (!input_dir.empty() && !file.empty() && file[0] != '/')
+    candidates.push_back(utils::path_join(input_dir, file) + "  (directory of the input script)");
+#ifdef SPHTHERMAL_POTENTIALS_DIR
+  candidates.push_back(utils::path_join(SPHTHERMAL_POTENTIALS_DIR, name) +
+                       "  (potentials of USER-SPHTHERMAL)");
+#endif
+  candidates.push_back(utils::path_join("/usr/share/lammps/potentials", name) +
+                       "  (Debian's LAMMPS potentials)");
+  for (const auto &candidate : candidates) {
+    const std::string path = candidate.substr(0, candidate.find("  ("));
+    tried.push_back(candidate);
+    if (utils::file_is_readable(path)) return path;
+  }
+  return "";
+}
+
+/* ----------------------------------------------------------------------
+   directory of the input script given with -in (or -i); empty when read
+   from standard input or when the command line is not readable (Linux's
+   /proc only)
+------------------------------------------------------------------------- */
+
+std::string FixSPHMaterials::input_script_dir()
+{
+  FILE *fp = fopen("/proc/self/cmdline", "rb");
+  if (!fp) return "";
+  std::string cmdline;
+  char buffer[4096];
+  size_t n;
+  while ((n = fread(buffer, 1, sizeof(buffer), fp)) > 0) cmdline.append(buffer, n);
+  fclose(fp);
+  std::vector<std::string> args;
+  for (size_t start = 0; start < cmdline.size();) {
+    const size_t end = cmdline.find('\0', start);
+    args.push_back(cmdline.substr(start, end == std::string::npos ? std::string::npos : end - start));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  for (size_t k = 0; k + 1 < args.size(); k++)
+    if (args[k] == "-in" || args[k] == "-i") {
+      const std::string dir = utils::path_dirname(args[k + 1]);
+      return dir.empty() ? std::string(".") : dir;
+    }
+  return "";
+}
+
+/* ----------------------------------------------------------------------
    material file: '# DATE: ... UNITS: ...' header, then lines
      <material> <property> <values>
    with the properties and values of the command. Rank 0 reads, every
@@ -360,8 +455,14 @@ void FixSPHMaterials::read_file(const std::string &file, const std::vector<std::
                                 const std::vector<int> &types)
 {
   // checked here, collectively: an error on rank 0 alone may never be printed
-  std::string path = utils::get_potential_file_path(file);
-  if (path.empty()) error->all(FLERR, "Illegal {} command: cannot open material file {}", cmd, file);
+  std::vector<std::string> tried;
+  const std::string path = find_material_file(file, tried);
+  if (path.empty()) {
+    std::string where;
+    for (const auto &place : tried) where += "\n  " + place;
+    error->all(FLERR, "Illegal {} command: cannot open material file {}; looked for:{}", cmd, file,
+               where);
+  }
   const std::string units = utils::get_potential_units(path, "sph/materials");
   if (units.empty())
     error->all(FLERR,
@@ -374,7 +475,7 @@ void FixSPHMaterials::read_file(const std::string &file, const std::vector<std::
 
   std::string text;
   if (comm->me == 0) {
-    PotentialFileReader reader(lmp, file, "sph/materials");
+    PotentialFileReader reader(lmp, path, "sph/materials");
     char *line;
     while ((line = reader.next_line())) {
       text += line;

@@ -30,6 +30,7 @@ class FixSPHMaterials : public Fix {
   ~FixSPHMaterials() override;
   int setmask() override;
   double compute_array(int, int) override;
+  void *extract(const char *, int &) override;
 
   // the hub of this run: error (naming 'who') when there is none or several
   static FixSPHMaterials *find(class LAMMPS *, const char *who);
@@ -55,7 +56,8 @@ class FixSPHMaterials : public Fix {
 
   // equation of state of a type (rho0 filled in), nullptr when none was given
   const sphe_eos *eos(int type) const { return eos_set[type] ? &eos_type[type] : nullptr; }
-  // specific heat, reference density, expansion coefficient; -1 when not given
+  // specific heat, reference density (-1 when not given), expansion
+  // coefficient (0 when not given: no buoyancy)
   double cv(int type) const { return cv_type[type]; }
   double rho0(int type) const { return rho0_type[type]; }
   double expansion(int type) const { return expansion_type[type]; }
@@ -95,6 +97,8 @@ class FixSPHMaterials : public Fix {
                 const std::vector<std::string> &words, size_t iword, const std::string &where);
   int parse_eos(int ilo, int ihi, const std::vector<std::string> &words, size_t iword,
                 const std::string &where);
+  std::string find_material_file(const std::string &file, std::vector<std::string> &tried);
+  static std::string input_script_dir();
   void read_file(const std::string &file, const std::vector<std::string> &names,
                  const std::vector<int> &types);
   double positive(const std::string &word, const std::string &what, const std::string &where,

@@ -25,6 +25,7 @@
 #include "neigh_request.h"
 #include "neighbor.h"
 #include "pair.h"
+#include "sph_body_force.h"
 #include "sph_checks.h"
 #include "sph_kernels.h"
 
@@ -39,7 +40,7 @@ static const char cmd[] = "fix sph/wall/adami";
 /* ---------------------------------------------------------------------- */
 
 FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), wall_groupbit(0), kernel_kind(0), cutoff(0.0), materials(nullptr),
+    Fix(lmp, narg, arg), body_given(0), body_force(nullptr), wall_groupbit(0), kernel_kind(0), cutoff(0.0), materials(nullptr),
     list(nullptr)
 {
   if (!atom->rho_flag || !atom->vest_flag)
@@ -51,6 +52,7 @@ FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
       if (iarg + 3 >= narg)
         error->all(FLERR, "Illegal {} command: 'body' needs 3 values (gx gy gz)", cmd);
       for (int k = 0; k < 3; k++) body[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
+      body_given = 1;
       iarg += 4;
     } else
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
@@ -77,6 +79,8 @@ void FixSPHWallAdami::init()
   if (!comm->ghost_velocity)
     error->all(FLERR, "Fix sph/wall/adami requires ghost velocities (comm_modify vel yes)");
   SPHCheck::group_of_kind(lmp, this, {"sph/wall/adami"}, false, false);
+  // without 'body', the fluid's body force is the run's (a resting wall)
+  body_force = body_given ? nullptr : SPHBodyForce::find(lmp, "Fix sph/wall/adami");
 
   wall_groupbit = 0;
   for (int ifix = 0; ifix < modify->nfix; ifix++)
@@ -116,6 +120,9 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
   const sphk_kernel kernel = sphk_make(kernel_kind, domain->dimension, cutoff);
   const double cutsq = cutoff * cutoff;
   int below_eos = 0;
+  // fix gravity may vary its acceleration in time
+  if (!body_given)
+    for (int k = 0; k < 3; k++) body[k] = body_force ? body_force[k] : 0.0;
 
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];

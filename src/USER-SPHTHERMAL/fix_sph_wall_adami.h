@@ -28,7 +28,9 @@ class FixSPHWallAdami : public Fix {
   void unpack_forward_comm(int, int, double *) override;
 
  protected:
-  double body[3];         // body acceleration of the fluid minus that of the wall
+  double body[3];            // body acceleration of the fluid minus that of the wall
+  int body_given;            // 1: 'body' in the command; 0: the run's body force
+  const double *body_force;  // the run's body force (fix gravity), nullptr when none
   int wall_groupbit;      // particles of every sph/wall/adami fix
   int kernel_kind;
   double cutoff;

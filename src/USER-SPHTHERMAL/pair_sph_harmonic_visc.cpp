@@ -24,6 +24,7 @@
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "sph_body_force.h"
 #include "sph_checks.h"
 #include "sph_flow.h"
 #include "update.h"
@@ -41,7 +42,7 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     PairSPHKernel(lmp, "sph/harmonic/visc",
                   "viscosities and equations of state come from fix sph/materials"),
     pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI), xi(SPHF_XI_CLEARY), delta(0.1),
-    hydrostatic(0), eta2(0.0), materials(nullptr), viscosity_varies(0), wall_groupbit(0),
+    diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr), eta2(0.0), materials(nullptr), viscosity_varies(0), wall_groupbit(0),
     pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr), nmax(0)
 {
   comm_forward = 3;
@@ -66,6 +67,11 @@ void PairSPHHarmonicVisc::compute(int eflag, int vflag)
   if (update->setupflag) comm->forward_comm_pair(this);
   update_atom_state();
   if (update->setupflag) check_neighbours();
+  // fix gravity may vary its acceleration in time
+  if (diffusion_form == DIFFUSION_BODY_FORCE && body_force) {
+    for (int k = 0; k < 3; k++) gravity[k] = body_force[k];
+    hydrostatic = (gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0);
+  }
 
   switch (kernel_kind) {
     case SPHK_LUCY:
@@ -299,7 +305,7 @@ template <int KERNEL, int NEWTON_PAIR, int HYDROSTATIC> void PairSPHHarmonicVisc
 /* ----------------------------------------------------------------------
    pair_style sph/harmonic/visc kernel cutoff [pressure symmetric|sum|averaged]
      [viscosity cleary|adami|morris] [xi value] [eta f] [delta value]
-     [fourtakas gx gy gz]
+     [diffusion fourtakas|molteni] [fourtakas gx gy gz]
 ------------------------------------------------------------------------- */
 
 void PairSPHHarmonicVisc::settings(int narg, char **arg)
@@ -311,6 +317,9 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
   xi_given = 0;
   eta_factor = -1.0;    // the default depends on the viscosity form
   delta = 0.1;    // Ng et al. 2020: "not a tunable parameter", 0.1 for all flows
+  // Fourtakas's form equals Molteni's without gravity and keeps a column at
+  // rest with it (examples/flow-hydrostatic): the default
+  diffusion_form = DIFFUSION_BODY_FORCE;
   hydrostatic = 0;
   gravity[0] = gravity[1] = gravity[2] = 0.0;
   while (iarg < narg) {
@@ -337,9 +346,21 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
       eta_factor = utils::numeric(FLERR, value, false, lmp);
       if (eta_factor < 0.0)
         error->all(FLERR, "Illegal {} command: eta {} must be >= 0", cmd, value);
+    } else if (strcmp(arg[iarg], "diffusion") == 0) {
+      if (strcmp(value, "fourtakas") == 0)
+        diffusion_form = DIFFUSION_BODY_FORCE;
+      else if (strcmp(value, "molteni") == 0)
+        diffusion_form = DIFFUSION_MOLTENI;
+      else
+        error->all(FLERR, "Illegal {} command: unknown diffusion '{}' (fourtakas or molteni)", cmd,
+                   value);
     } else if (strcmp(arg[iarg], "fourtakas") == 0) {
       if (iarg + 3 >= narg)
-        error->all(FLERR, "Illegal {} command: 'fourtakas' needs 3 values (gx gy gz)", cmd);
+        error->all(FLERR,
+                   "Illegal {} command: 'fourtakas' needs 3 values (gx gy gz); without them, "
+                   "'diffusion fourtakas' (the default) reads fix gravity",
+                   cmd);
+      diffusion_form = DIFFUSION_GIVEN;
       hydrostatic = 1;
       for (int k = 0; k < 3; k++) gravity[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
       iarg += 4;
@@ -356,10 +377,11 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
                "Illegal {} command: xi is a factor of the cleary viscosity form only; viscosity {} "
                "does not use it",
                cmd, sphf_viscosity_name(viscosity_form));
-  if (hydrostatic && gravity[0] == 0.0 && gravity[1] == 0.0 && gravity[2] == 0.0)
+  if (diffusion_form == DIFFUSION_GIVEN && gravity[0] == 0.0 && gravity[1] == 0.0 &&
+      gravity[2] == 0.0)
     error->all(FLERR,
                "Illegal {} command: fourtakas 0 0 0 is Molteni's diffusion: give the gravity "
-               "vector, or leave fourtakas out",
+               "vector, or use 'diffusion molteni'",
                cmd);
   // Cleary's xi was calibrated with eta = 0.1 h; the consistent forms only
   // need eta against r -> 0, and 0.1 h would lower their viscosity by 1-4 %
@@ -393,18 +415,29 @@ void PairSPHHarmonicVisc::init_style()
   SPHCheck::atom_state(lmp, "Pair style sph/harmonic/visc", 0,
                        SPHCheck::RHO | (viscosity_varies ? SPHCheck::CV | SPHCheck::ESPH : 0));
 
-  // the hydrostatic diffusion assumes the body force of the run
-  if (hydrostatic) {
-    int body_force = 0;
+  // the hydrostatic diffusion reads the body force of the run, or assumes one
+  body_force = SPHBodyForce::find(lmp, "Pair style sph/harmonic/visc");
+  if (diffusion_form == DIFFUSION_MOLTENI) {
+    hydrostatic = 0;
+  } else if (diffusion_form == DIFFUSION_BODY_FORCE) {
+    for (int k = 0; k < 3; k++) gravity[k] = body_force ? body_force[k] : 0.0;
+    hydrostatic = (gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0);
+  } else {
+    int other_force = 0;
     for (int ifix = 0; ifix < modify->nfix; ifix++)
-      if (utils::strmatch(modify->fix[ifix]->style, "^gravity") ||
-          utils::strmatch(modify->fix[ifix]->style, "^addforce"))
-        body_force = 1;
-    if (!body_force)
+      if (utils::strmatch(modify->fix[ifix]->style, "^addforce")) other_force = 1;
+    if (!body_force && !other_force)
       error->warning(FLERR,
                      "Pair style sph/harmonic/visc: fourtakas {} {} {} assumes gravity, but no fix "
                      "gravity or addforce is defined",
                      gravity[0], gravity[1], gravity[2]);
+    else if (body_force && (body_force[0] != gravity[0] || body_force[1] != gravity[1] ||
+                            body_force[2] != gravity[2]))
+      error->warning(FLERR,
+                     "Pair style sph/harmonic/visc: fourtakas {} {} {} differs from the body "
+                     "force of fix gravity ({} {} {}); 'diffusion fourtakas' (the default) reads it",
+                     gravity[0], gravity[1], gravity[2], body_force[0], body_force[1],
+                     body_force[2]);
   }
 
   wall_groupbit = 0;
@@ -426,7 +459,7 @@ double PairSPHHarmonicVisc::init_one(int, int)
 
 void PairSPHHarmonicVisc::write_restart_settings(FILE *fp)
 {
-  const int ints[4] = {kernel_kind, pressure_form, viscosity_form, hydrostatic};
+  const int ints[4] = {kernel_kind, pressure_form, viscosity_form, diffusion_form};
   // xi_given only checks the command line
   const double doubles[7] = {cut_global, xi, eta_factor, delta, gravity[0], gravity[1], gravity[2]};
   fwrite(ints, sizeof(int), 4, fp);
@@ -443,7 +476,9 @@ void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
   }
   MPI_Bcast(ints, 4, MPI_INT, 0, world);
   MPI_Bcast(doubles, 7, MPI_DOUBLE, 0, world);
-  hydrostatic = ints[3];
+  // the body force is read again from fix gravity at init
+  diffusion_form = ints[3];
+  hydrostatic = (diffusion_form == DIFFUSION_GIVEN);
   for (int k = 0; k < 3; k++) gravity[k] = doubles[4 + k];
   kernel_kind = ints[0];
   pressure_form = ints[1];

@@ -37,8 +37,14 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   double xi;              // factor of the cleary viscosity
   int xi_given;           // xi was given (only the cleary form reads it)
   double delta;           // density diffusion (Ng et al. 2020, eq 5), 0: none
-  int hydrostatic;        // 1: Fourtakas's diffusion (Reece et al. 2024, eq 39) with gravity below
-  double gravity[3];
+  // the density diffusion: Fourtakas's (Reece et al. 2024, eq 39) with the
+  // run's body force (the default), Molteni's (Ng et al. 2020, eq 5: no
+  // gravity), or Fourtakas's with a vector given in the command
+  enum { DIFFUSION_BODY_FORCE, DIFFUSION_MOLTENI, DIFFUSION_GIVEN };
+  int diffusion_form;
+  int hydrostatic;              // 1: the diffusion leaves the hydrostatic gradient of 'gravity' alone
+  double gravity[3];            // the acceleration of the hydrostatic diffusion
+  const double *body_force;     // the run's body force (fix gravity), nullptr when none
   double eta2;            // eta^2, regularises r -> 0
   class FixSPHMaterials *materials;
   int viscosity_varies;    // 1 when some viscosity depends on T

@@ -86,4 +86,34 @@ static inline double sphe_sound_speed(const sphe_eos *eos, double rho)
   return eos->c0;
 }
 
+/* a column at rest under gravity g (> 0), as a Lagrangian column: the
+   particle whose depth below the free surface is d0 when every particle has
+   the density rho0 carries the weight of the mass above it, rho0 g d0 per
+   unit area, so its pressure is P_b + rho0 g d0 and its density is that of
+   the EOS at that pressure. Compressed, it sits at the depth
+   d = int_0^d0 rho0 / rho(s) ds (closed forms below). d0 <= 0 (above the
+   surface) gives rho0 and d = d0. */
+static inline void sphe_hydrostatic(const sphe_eos *eos, double g, double d0, double *rho,
+                                    double *d)
+{
+  if (d0 <= 0.0) {
+    *rho = eos->rho0;
+    *d = d0;
+    return;
+  }
+  const double c2 = eos->c0 * eos->c0;
+  if (eos->kind == SPHE_TAIT) {
+    /* rho / rho0 = (1 + a s)^(1/gamma), a = gamma g / c0^2 */
+    const double a = eos->gamma * g / c2;
+    const double expo = 1.0 - 1.0 / eos->gamma;
+    *rho = eos->rho0 * pow(1.0 + a * d0, 1.0 / eos->gamma);
+    *d = (pow(1.0 + a * d0, expo) - 1.0) / (a * expo);
+  } else {
+    /* rho / rho0 = 1 + a s, a = g / c0^2 */
+    const double a = g / c2;
+    *rho = eos->rho0 * (1.0 + a * d0);
+    *d = log1p(a * d0) / a;
+  }
+}
+
 #endif

@@ -63,6 +63,32 @@ static void check_eos(void)
   for (int kind = 0; kind < SPHE_NKINDS; kind++)
     expect(sphe_lookup(sphe_name(kind)) == kind, "eos name and lookup agree", kind, kind);
   expect(sphe_lookup("ideal") == -1, "unknown eos", -1, -1);
+
+  /* hydrostatic column: the EOS pressure at the density equals P_b plus the
+     weight above, rho0 g d0, and the compressed depth is the integral of
+     rho0 / rho over the mass coordinate (midpoint rule, 1e5 cells) */
+  const double g = 9.81;
+  for (int e = 0; e < 2; e++) {
+    const sphe_eos *eos = eoses[e];
+    const double d0 = 0.3 * eos->c0 * eos->c0 / g; /* strongly compressed: 30 % of c0^2/g */
+    double rho, d;
+    sphe_hydrostatic(eos, g, d0, &rho, &d);
+    const double weight = eos->rho0 * g * d0;
+    expect(near(sphe_pressure(eos, rho) - eos->p_background, weight, 1e-12),
+           "hydrostatic: P(rho) - P_b = rho0 g d0", sphe_pressure(eos, rho) - eos->p_background,
+           weight);
+    const int cells = 100000;
+    double integral = 0.0;
+    for (int k = 0; k < cells; k++) {
+      double rho_s, d_s;
+      sphe_hydrostatic(eos, g, (k + 0.5) * d0 / cells, &rho_s, &d_s);
+      integral += eos->rho0 / rho_s * d0 / cells;
+    }
+    expect(near(d, integral, 1e-9), "hydrostatic: compressed depth = int rho0/rho", d, integral);
+    expect(d < d0, "hydrostatic: the column is compressed", d, d0);
+    sphe_hydrostatic(eos, g, -0.1, &rho, &d);
+    expect(rho == eos->rho0 && d == -0.1, "hydrostatic: above the surface, rho0", rho, d);
+  }
 }
 
 /* every term gives equal and opposite forces: s(a, b) = s(b, a), since

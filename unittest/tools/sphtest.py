@@ -207,7 +207,7 @@ def declared_styles(pkg_dir):
     for name in sorted(os.listdir(pkg_dir)):
         if name.endswith(".h"):
             with open(os.path.join(pkg_dir, name)) as f:
-                for m in re.finditer(r"^(Pair|Fix|Compute)Style\(([^,]+),", f.read(), re.M):
+                for m in re.finditer(r"^(Pair|Fix|Compute|Command)Style\(([^,]+),", f.read(), re.M):
                     styles.append((m.group(1).lower(), m.group(2).strip()))
     return styles
 

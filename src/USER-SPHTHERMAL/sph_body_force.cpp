@@ -1,0 +1,52 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   The body force of the run, read from the fix that applies it
+   (sph_body_force.h).
+------------------------------------------------------------------------- */
+
+#include "sph_body_force.h"
+
+#include "error.h"
+#include "fix.h"
+#include "lammps.h"
+#include "modify.h"
+
+using namespace LAMMPS_NS;
+
+/* ---------------------------------------------------------------------- */
+
+const double *SPHBodyForce::find(LAMMPS *lmp, const char *who)
+{
+  const double *gvec = nullptr;
+  Fix *source = nullptr;
+  for (int i = 0; i < lmp->modify->nfix; i++) {
+    Fix *fix = lmp->modify->fix[i];
+    int dim = 0;
+    const double *g = (const double *) fix->extract("gvec", dim);
+    if (!g || dim != 1) continue;
+    if (gvec && (g[0] != gvec[0] || g[1] != gvec[1] || g[2] != gvec[2]))
+      lmp->error->all(FLERR,
+                      "{}: fix {} (style {}) and fix {} (style {}) give different body "
+                      "accelerations ({} {} {} and {} {} {}); the package reads one",
+                      who, source->id, source->style, fix->id, fix->style, gvec[0], gvec[1],
+                      gvec[2], g[0], g[1], g[2]);
+    if (!gvec) {
+      gvec = g;
+      source = fix;
+    }
+  }
+  return gvec;
+}
+
+/* ---------------------------------------------------------------------- */
+
+const double *SPHBodyForce::require(LAMMPS *lmp, const char *who, const char *why)
+{
+  const double *gvec = find(lmp, who);
+  if (!gvec)
+    lmp->error->all(FLERR, "{} needs the body force for {}: define it with fix gravity first",
+                    who, why);
+  return gvec;
+}

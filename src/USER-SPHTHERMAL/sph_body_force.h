@@ -1,0 +1,32 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SPH_BODY_FORCE_H
+#define LMP_SPH_BODY_FORCE_H
+
+namespace LAMMPS_NS {
+
+class LAMMPS;
+
+// The body force of a run is given once, as a fix that exposes its
+// acceleration as extract("gvec") (LAMMPS's fix gravity). Every style that
+// needs it (the wall pressure of fix sph/wall/adami, the hydrostatic density
+// diffusion of pair sph/harmonic/visc, the force limit of fix sph/dt/reset,
+// the hydrostatic start of sph/set) reads it here.
+namespace SPHBodyForce {
+
+  // the acceleration vector of the body-force fix, valid for the fix's
+  // lifetime and updated by it when it varies in time; nullptr when there
+  // is none. Several such fixes (e.g. on two groups) must agree: otherwise
+  // an error naming 'who' and both fixes.
+  const double *find(LAMMPS *lmp, const char *who);
+
+  // the same, as an error naming 'who' and 'why' when there is none
+  const double *require(LAMMPS *lmp, const char *who, const char *why);
+
+}    // namespace SPHBodyForce
+}    // namespace LAMMPS_NS
+
+#endif
