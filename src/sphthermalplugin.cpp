@@ -28,6 +28,11 @@
 
 using namespace LAMMPS_NS;
 
+// of the host's PLUGIN package (plugin.h is not in every include path)
+namespace LAMMPS_NS {
+int plugin_find(const char *style, const char *name);
+}
+
 namespace {
 template <typename T> Pair *pair_creator(LAMMPS *lmp)
 {
@@ -85,22 +90,33 @@ extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *p
   // same name already present is reported first, since the host's warning
   // would be silenced with the rest.
   std::vector<std::string> names, clashes;
+  int loaded = 0;    // styles this plugin (or another) has already registered
+  auto clash = [&](const char *style, const char *name, size_t exists) {
+    if (!exists) return false;
+    if (plugin_find(style, name) >= 0) {
+      loaded++;
+      return false;
+    }
+    return true;
+  };
 #define PAIR_CLASS
 #define PairStyle(key, Class)                                                  \
   names.push_back("pair " #key);                                               \
-  if (lmp->force->pair_map->count(#key)) clashes.push_back("pair style " #key);
+  if (clash("pair", #key, lmp->force->pair_map->count(#key))) clashes.push_back("pair style " #key);
 #define FIX_CLASS
 #define FixStyle(key, Class)                                                   \
   names.push_back("fix " #key);                                                \
-  if (lmp->modify->fix_map->count(#key)) clashes.push_back("fix style " #key);
+  if (clash("fix", #key, lmp->modify->fix_map->count(#key))) clashes.push_back("fix style " #key);
 #define COMPUTE_CLASS
 #define ComputeStyle(key, Class)                                               \
   names.push_back("compute " #key);                                            \
-  if (lmp->modify->compute_map->count(#key)) clashes.push_back("compute style " #key);
+  if (clash("compute", #key, lmp->modify->compute_map->count(#key)))                \
+    clashes.push_back("compute style " #key);
 #define COMMAND_CLASS
 #define CommandStyle(key, Class)                                               \
   names.push_back(#key);                                                       \
-  if (lmp->input->command_map->count(#key)) clashes.push_back("command " #key);
+  if (clash("command", #key, lmp->input->command_map->count(#key)))                 \
+    clashes.push_back("command " #key);
 #include "sphthermal_styles.h"
 #undef PairStyle
 #undef FixStyle
@@ -110,6 +126,11 @@ extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *p
 #undef FIX_CLASS
 #undef COMPUTE_CLASS
 #undef COMMAND_CLASS
+  if (loaded == (int) names.size()) {
+    if (lmp->comm->me == 0)
+      lmp->error->warning(FLERR, "USER-SPHTHERMAL plugin is already loaded: plugin load ignored");
+    return;
+  }
   if (!clashes.empty() && lmp->comm->me == 0)
     lmp->error->warning(FLERR,
                         "USER-SPHTHERMAL plugin: this LAMMPS already has {}: the plugin "

@@ -36,7 +36,6 @@ static const char cmd[] = "sph/set";
 
 void SPHSet::command(int narg, char **arg)
 {
-  if (!domain->box_exist) error->all(FLERR, "{} command before the simulation box is defined", cmd);
   if (!atom->rho_flag || !atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "{} command requires atom style sph (rho, esph, cv)", cmd);
   if (narg < 2)
@@ -248,7 +247,7 @@ void SPHSet::set_hydrostatic(double level, bool move)
   if (!(g > 0.0))
     error->all(FLERR, "{} hydrostatic: the body force of fix gravity is zero: no hydrostatic state",
                cmd);
-  const double up[3] = {-gvec[0] / g, -gvec[1] / g, -gvec[2] / g};
+  const double up[3] = {-gvec[0] / g + 0.0, -gvec[1] / g + 0.0, -gvec[2] / g + 0.0};
 
   const int ntypes = atom->ntypes;
   std::vector<int> present(ntypes + 1, 0);

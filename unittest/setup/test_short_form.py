@@ -26,6 +26,9 @@ from lammps_dump import read_frames  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
+PRINTED = {}
+
+
 def state(a, script, form, tmp):
     out = os.path.join(tmp, f"{form}.dump")
     proc = subprocess.run([a.lmp, "-log", "none", "-in", os.path.join(HERE, script), "-var", "plugin",
@@ -34,6 +37,9 @@ def state(a, script, form, tmp):
     if proc.returncode != 0 or not os.path.exists(out):
         print(proc.stdout + proc.stderr)
         sys.exit(f"FAIL: the {form} form of {script} did not run")
+    for line in proc.stdout.splitlines():
+        if line.startswith("PROPERTIES "):
+            PRINTED["properties"] = [float(w) for w in line.split()[1:]]
     return read_frames(out)[-1][1]
 
 
@@ -58,6 +64,11 @@ def main():
                 print(f"{column:6s} largest relative difference {err:.2e}")
                 if err > 1e-15:
                     failures.append(column)
+            # fix sph/materials exposes the properties of the material file
+            want = [276.1e-6, -1.0, 14.9, 1652e-6]
+            print(f"properties {PRINTED.get('properties')}, expected {want}")
+            if PRINTED.get("properties") != want:
+                failures.append("properties")
             # the state is the materials' (a check of both forms at once)
             steel = short["type"] == 2
             temperature = short["c_e"] / short["c_cv"]
