@@ -172,8 +172,10 @@ void FixSPHDtReset::init()
     const int me_index = modify->find_fix(id);
     int dim;
     for (int i = me_index + 1; i < modify->nfix; i++)
+      // the body force counts by itself (below); this package's fixes
+      // acting then tally or hold energies, not forces
       if ((modify->fmask[i] & POST_FORCE) && !modify->fix[i]->extract("gvec", dim) &&
-          comm->me == 0)
+          !utils::strmatch(modify->fix[i]->style, "^sph/") && comm->me == 0)
         error->warning(FLERR,
                        "Fix sph/dt/reset: fix {} (style {}) is defined after it and acts after "
                        "the forces; if it changes forces, define fix sph/dt/reset after it so "

@@ -80,6 +80,15 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
   }
   check_rates(atom->desph, "desph");
 
+  if (!flows.empty()) {
+    switch (kernel_kind) {
+      case SPHK_LUCY: tally_flows<SPHK_LUCY>(); break;
+      case SPHK_CUBIC: tally_flows<SPHK_CUBIC>(); break;
+      case SPHK_QUINTIC: tally_flows<SPHK_QUINTIC>(); break;
+      case SPHK_WENDLAND: tally_flows<SPHK_WENDLAND>(); break;
+    }
+  }
+
   if (relax_wanted) {
     if (force->newton_pair) comm->reverse_comm_pair(this);
     const double *const cv = atom->cv;
@@ -223,6 +232,68 @@ void PairSPHClearyHeat::eval()
   }
 }
 
+/* ----------------------------------------------------------------------
+   the heat flows asked for: the pair terms of eval() between atoms of the
+   two groups, with the energy each side receives (the j side only where
+   eval() gives it to an atom of this rank), summed over the ranks
+------------------------------------------------------------------------- */
+
+int PairSPHClearyHeat::request_heat_flow(int to_groupbit, int from_groupbit)
+{
+  flows.push_back({to_groupbit, from_groupbit, 0.0});
+  return (int) flows.size() - 1;
+}
+
+template <int KERNEL> void PairSPHClearyHeat::tally_flows()
+{
+  const double *const *const x = atom->x;
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+  const double *const rho = atom->rho;
+  const double *const mass = atom->mass;
+  const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const int newton = force->newton_pair;
+  const double cutsq_kernel = cut_global * cut_global;
+  int either = 0;
+  for (const auto &flow : flows) either |= flow.to | flow.from;
+
+  std::vector<double> local(flows.size(), 0.0);
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    if (!(mask[i] & either)) continue;
+    const int *const jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (!(mask[j] & either)) continue;
+      const double delx = x[i][0] - x[j][0];
+      const double dely = x[i][1] - x[j][1];
+      const double delz = x[i][2] - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      if (rsq >= cutsq_kernel) continue;
+      const double r = sqrt(rsq);
+      const double dwdr = kernel.dw_scale * sphk_df(KERNEL, r * kernel.inv_h);
+      const double conductance_ij = conductivity_varies
+          ? sphc_conductance(mean, conductivity[i], conductivity[j])
+          : conductance[type[i]][type[j]];
+      const double f_ij = sphc_cleary_pair(conductance_ij, esph[i] / cv[i] - esph[j] / cv[j],
+                                           rho[i], rho[j], r, dwdr, eta2);
+      const double energy = (rmass ? rmass[i] : mass[type[i]]) *
+          (rmass ? rmass[j] : mass[type[j]]) * f_ij;    // into i, out of j
+      for (size_t k = 0; k < flows.size(); k++) {
+        if ((mask[i] & flows[k].to) && (mask[j] & flows[k].from)) local[k] += energy;
+        if ((mask[j] & flows[k].to) && (mask[i] & flows[k].from) && (newton || j < nlocal))
+          local[k] -= energy;
+      }
+    }
+  }
+  std::vector<double> total(flows.size(), 0.0);
+  MPI_Allreduce(local.data(), total.data(), (int) flows.size(), MPI_DOUBLE, MPI_SUM, world);
+  for (size_t k = 0; k < flows.size(); k++) flows[k].power = total[k];
+}
+
 /* ---------------------------------------------------------------------- */
 
 void PairSPHClearyHeat::allocate()
@@ -280,6 +351,7 @@ void PairSPHClearyHeat::init_style()
     error->all(FLERR, "Pair style sph/cleary/heat requires atom style sph (esph, desph, cv, rho)");
 
   materials = FixSPHMaterials::find(lmp, "Pair style sph/cleary/heat");
+  flows.clear();    // the fixes that want them ask again at their init
   for (int i = 1; i <= atom->ntypes; i++)
     if (!materials->conductivity(i))
       error->all(FLERR,

@@ -34,6 +34,13 @@ class PairSPHClearyHeat : public PairSPHKernel {
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
 
+  // heat flows between two groups, tallied in compute() on request (fix
+  // sph/heatflow, after this style's init): the index of the flow into the
+  // group 'to' from the group 'from'
+  int request_heat_flow(int to_groupbit, int from_groupbit);
+  // power into 'to' from 'from' at the last force evaluation (every rank)
+  double heat_flow(int index) const { return flows[index].power; }
+
  protected:
   int mean;                   // SPHC_HARMONIC or SPHC_ARITHMETIC of sph_conduction.h
   double eta2;                // eta^2, regularises r -> 0
@@ -51,6 +58,11 @@ class PairSPHClearyHeat : public PairSPHKernel {
   int nmax_relax;
   // dummy particles of fix sph/wall/dirichlet: group bit and wall temperature
   std::vector<std::pair<int, double>> dummy_walls;
+  struct HeatFlow {
+    int to, from;    // group bits
+    double power;
+  };
+  std::vector<HeatFlow> flows;
 
   void allocate() override;
   void update_conductivity();
@@ -58,6 +70,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   template <int KERNEL, int MEAN> void eval_mean();
   template <int KERNEL, int MEAN, int VARYING_K, int NEWTON_PAIR, int RMASS, int RELAX>
   void eval();
+  template <int KERNEL> void tally_flows();
   std::string diagnose(int) override;
 };
 

@@ -1,0 +1,75 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   compute sph/thermal: thermal energy E = sum m e, heat capacity
+   C = sum m cv, mean temperature E / C and heating rate sum m de/dt of a
+   group (e = cv T: E / C is the temperature the group would reach if its
+   heat were spread evenly).
+------------------------------------------------------------------------- */
+
+#include "compute_sph_thermal.h"
+
+#include "atom.h"
+#include "error.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+
+/* ---------------------------------------------------------------------- */
+
+ComputeSPHThermal::ComputeSPHThermal(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg)
+{
+  if (narg != 3)
+    error->all(FLERR, "Illegal compute sph/thermal command: it takes no arguments after the style");
+  if (!atom->esph_flag || !atom->cv_flag)
+    error->all(FLERR, "Compute sph/thermal requires atom style sph (esph, desph, cv)");
+  scalar_flag = 1;    // the mean temperature
+  extscalar = 0;
+  vector_flag = 1;
+  size_vector = 4;
+  extvector = 0;    // intensive: thermo does not divide by the atom count
+  vector = new double[size_vector];
+  sums[0] = sums[1] = sums[2] = 0.0;
+}
+
+ComputeSPHThermal::~ComputeSPHThermal()
+{
+  delete[] vector;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double ComputeSPHThermal::compute_scalar()
+{
+  invoked_scalar = update->ntimestep;
+  compute_vector();
+  scalar = vector[2];
+  return scalar;
+}
+
+/* ----------------------------------------------------------------------
+   1 thermal energy, 2 heat capacity, 3 mean temperature, 4 heating rate
+------------------------------------------------------------------------- */
+
+void ComputeSPHThermal::compute_vector()
+{
+  invoked_vector = update->ntimestep;
+  const double *const mass = atom->mass;
+  const double *const rmass = atom->rmass;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  double local[3] = {0.0, 0.0, 0.0};
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double m = rmass ? rmass[i] : mass[type[i]];
+    local[0] += m * atom->esph[i];
+    local[1] += m * atom->cv[i];
+    local[2] += m * atom->desph[i];
+  }
+  MPI_Allreduce(local, sums, 3, MPI_DOUBLE, MPI_SUM, world);
+  vector[0] = sums[0];
+  vector[1] = sums[1];
+  vector[2] = (sums[1] > 0.0) ? sums[0] / sums[1] : 0.0;
+  vector[3] = sums[2];
+}

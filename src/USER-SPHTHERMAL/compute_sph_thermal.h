@@ -1,0 +1,36 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+------------------------------------------------------------------------- */
+
+#ifdef COMPUTE_CLASS
+// clang-format off
+ComputeStyle(sph/thermal,ComputeSPHThermal);
+// clang-format on
+#else
+
+#ifndef LMP_COMPUTE_SPH_THERMAL_H
+#define LMP_COMPUTE_SPH_THERMAL_H
+
+#include "compute.h"
+
+namespace LAMMPS_NS {
+
+// The thermal books of a group: its thermal energy, heat capacity,
+// heat-capacity-weighted mean temperature and heating rate, for thermo.
+class ComputeSPHThermal : public Compute {
+ public:
+  ComputeSPHThermal(class LAMMPS *, int, char **);
+  ~ComputeSPHThermal() override;
+  void init() override {}
+  double compute_scalar() override;
+  void compute_vector() override;
+
+ protected:
+  double sums[3];    // sum m e, sum m cv, sum m de/dt over the group
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
