@@ -1,9 +1,9 @@
 """Errors of the slab cooled at one face (Ng et al. 2020, section 4.1) against the
-exact series (reference/analytic.md, case 3); writes cooled-slab.png.
+exact series (Ng et al. 2020, eq 21, with its sign corrected); writes cooled-slab.png.
 
 Slab 0 <= y <= L (L = 2 cm), alpha = k / (rho cv) = 1e-6 m^2/s, initially at
 T_H = 200 C, the face y = L held at T_C = 0 C, the face y = 0 adiabatic. With
-s = L - y the distance from the held face (case 3 with its L = 2 L):
+s = L - y the distance from the held face:
   T = T_C + (T_H - T_C) (4/pi) sum_{m>=0} sin(lambda_m s) / (2m+1) exp(-alpha lambda_m^2 t),
   lambda_m = (2m+1) pi / (2L).
 Ng et al. 2020, eq 21, prints a prefactor -800/pi; with its cos(lambda_n y), y from the

@@ -1,5 +1,5 @@
 """Convergence of the Dirichlet square (Reece et al. 2024, section 3.1) against the exact
-series (reference/analytic.md, case 4); writes square.png.
+series (Reece et al. 2024, eq 30); writes square.png.
 
 T = T1 sum_{n odd} 4/(n pi) sin(n pi y) sinh(n pi x) / sinh(n pi) on [0,1]^2,
 hot side x = 1 at T1 = 100, the other sides at 0. Errors over the interior

@@ -1,4 +1,5 @@
-"""Exact conduction in a disc (reference/analytic.md, case 8), numpy only.
+"""Exact conduction in a disc, numpy only: the infinite cylinder with its surface
+held at a constant temperature (Carslaw & Jaeger 1959, Conduction of Heat in Solids).
 
 Disc of radius R at T0, rim held at Tw from t = 0, Fo = alpha t / R^2, j_n the
 zeros of J0:
@@ -78,7 +79,7 @@ def fo_centre_half():
 
 
 def check():
-    """Spot values of reference/analytic.md case 8; returns the largest relative deviation."""
+    """Check values at Fo = 0.1 (centre, r = R/2, mean, Q'/k); returns the largest relative deviation."""
     got = [theta(np.array([0.0]), 0.1)[0], theta(np.array([0.5]), 0.1)[0], mean_theta(0.1), float(heat_flow(0.1))]
     want = [0.848355, 0.610247, 0.394176, 7.65161]
     return max(abs(g / w - 1.0) for g, w in zip(got, want)), got

@@ -2,10 +2,11 @@
 
 References: a fine 1-D finite-volume solution of the slab with its ends held
 at 0 and 1 (tools/fv1d.py, its own error printed) up to t = 20 s, and the
-exact steady profile T = ln(1 + (e^4 - 1) x / L) / 4 (Kirchhoff transform,
-reference/analytic.md case 7) at t = 60 s, when the slowest mode has decayed
-below 1e-6 (the finite-volume solution changes by less than that after). Errors are in % of the
-temperature difference between the ends, over the slab's particles.
+exact steady profile T = ln(1 + (e^4 - 1) x / L) / 4 (by the Kirchhoff
+transform: the steady flux k dT/dx = d(e^(4T)/4)/dx is uniform, so e^(4T) is
+linear in x) at t = 60 s, when the slowest mode has decayed below 1e-6 (the
+finite-volume solution changes by less than that after). Errors are in % of
+the temperature difference between the ends, over the slab's particles.
 """
 
 import argparse

@@ -1,8 +1,9 @@
 """Wall heat flux of the sinusoid example against the exact solution; writes sinusoid.png.
 
-Exact (reference/analytic.md, case 5): with isothermal sides at T = 0 a
-distance l apart, T = sin(pi x'/l) exp(-(pi/l)^2 alpha t) and the heat flux
-through each side per unit length of side is q = k (pi/l) exp(-(pi/l)^2 alpha t).
+Exact solution of the heat equation (one decaying Fourier mode): with
+isothermal sides at T = 0 a distance l apart, T = sin(pi x'/l) exp(-(pi/l)^2 alpha t)
+solves dT/dt = alpha d2T/dx'2 with T = 0 on both sides, and the heat flux
+through each side per unit length of side is q = k dT/dx' = k (pi/l) exp(-(pi/l)^2 alpha t).
 SPH: the heat taken up by each isothermal wall per unit time (energy method,
 Cleary 1998, eq 10, fix sph/wall/isothermal) and the direct estimate from the
 temperature gradient at the wall particles (eq 9, compute sph/heatflux/atom),

@@ -3,7 +3,8 @@
 Solids 0 < x < 1 m (k = 10), 1 m < x < 3 m (k = 2), 3 m < x < 4 m (k = 10),
 rho = 1, cv = 1e3, initially at T_C = 300 K; T_C held at x = 0, T_H = 420 K at
 x = 4 m. References:
-  * steady state, the composite wall (reference/analytic.md, case 6):
+  * steady state, the exact solution of the composite wall (the thermal
+    resistances L_i / k_i of the three solids in series):
     q = (T_H - T_C) / sum(L_i / k_i) = 100 W/m^2, T = 300 + 10 x (left),
     310 + 50 (x - 1) (middle), 410 + 10 (x - 3) (right);
   * transient, a fine 1-D finite-volume solution (tools/fv1d.py; its own

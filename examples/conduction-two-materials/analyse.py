@@ -1,7 +1,7 @@
 """Errors of the two-materials example; writes <prefix>.png.
 
-References: the exact solution for two semi-infinite materials
-(reference/analytic.md, case 2; valid while the diffusion lengths are small
+References: the exact solution for two semi-infinite materials in contact
+(Carslaw & Jaeger 1959, Conduction of Heat in Solids; valid while the diffusion lengths are small
 against the slab) and a fine 1-D finite-volume solution of the finite slab
 (tools/fv1d.py, its own error printed). Errors are in % of the temperature
 jump T2 - T1, at t1 (when 2 sqrt(alpha t) of the less diffusive material is

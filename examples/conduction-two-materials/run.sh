@@ -11,8 +11,8 @@ here=$(cd "$(dirname "$0")" && pwd)
 lammps() {    # name, then -var arguments
   name=$1
   shift
-  $run "$LMP" -in "$here/in.two-materials" -var plugin "$PLUGIN" -var potentials "$root/potentials" \
-    -var out "$name" -log "log.$name" "$@"
+  $run "$LMP" -in "$here/in.two-materials" -var plugin "$PLUGIN" -var out "$name" \
+    -log "log.$name" "$@"
 }
 
 if [ "${1:-}" = quick ]; then

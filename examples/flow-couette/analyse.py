@@ -1,7 +1,7 @@
 """Errors of the Couette start-up example against the exact series; writes couette.png.
 
 u(y, t) = V0 y / W + sum_{n>=1} 2 V0 (-1)^n / (n pi) sin(n pi y / W) exp(-n^2 pi^2 nu t / W^2)
-(reference/analytic.md case 10; Morris, Fox & Zhu 1997). Errors are in % of the
+(the series solution of Morris, Fox & Zhu 1997). Errors are in % of the
 plate velocity V0, over all fluid particles; |vy| (0 exactly) in the same unit.
 """
 

@@ -4,9 +4,14 @@ The column starts at rest in hydrostatic equilibrium and must stay there:
 the largest fluid speed over the run is given in % of sqrt(g H). The pressure
 of the particles at the end, P = c0^2 (rho - rho0) (linear EOS), is compared
 with the exact hydrostatic pressure of the compressible column,
-P = rho0 c0^2 (exp(g (Hc - y) / c0^2) - 1) with Hc = c0^2 / g ln(1 + g H / c0^2)
-the height of the compressed column (bottom pressure rho0 g H), and with the
-incompressible rho0 g (H - y); errors in % of rho0 g H.
+P = rho0 c0^2 (exp(g (ys - y) / c0^2) - 1), ys the height of its free surface,
+and with the incompressible rho0 g (H - (y - yb)), yb = ys - Hc the bottom of
+the column, Hc = c0^2 / g ln(1 + g H / c0^2) its height (bottom pressure
+rho0 g H); errors in % of rho0 g H. With init compressed, sph/set
+hydrostatic moved every row down to the compressed column, the lowest atom
+(ybottom, a wall particle) staying in place: the surface, H - ybottom above
+it on the lattice, is at ys = ybottom + c0^2 / g ln(1 + g (H - ybottom) / c0^2).
+With init lattice the bottom y = 0 stays and the column settles to ys = Hc.
 """
 
 import argparse
@@ -33,6 +38,12 @@ def main():
         words = f.read().split()
     par = dict(zip(words[0::2], words[1::2]))
     H, g, c0, rho0 = (float(par[k]) for k in ("H", "g", "c0", "rho0"))
+    Hc = c0 ** 2 / g * np.log1p(g * H / c0 ** 2)
+    if par.get("init", "compressed") == "compressed":
+        ybottom = float(par["ybottom"])
+        ys = ybottom + c0 ** 2 / g * np.log1p(g * (H - ybottom) / c0 ** 2)
+    else:
+        ys = Hc
     vref = np.sqrt(g * H)
     t, speed = np.loadtxt(f"{a.prefix}.speed", unpack=True)
     speed = 100.0 * speed / vref
@@ -44,10 +55,10 @@ def main():
 
     c = read_frames(f"{a.prefix}.end")[-1][1]
     y, P = c["y"], c0 ** 2 * (c["c_rho"] - rho0)
-    Hc = c0 ** 2 / g * np.log1p(g * H / c0 ** 2)
-    exact = rho0 * c0 ** 2 * np.expm1(g * (Hc - y) / c0 ** 2)
+    exact = rho0 * c0 ** 2 * np.expm1(g * (ys - y) / c0 ** 2)
     err = 100.0 * (P - exact) / (rho0 * g * H)
-    err_inc = 100.0 * (P - rho0 * g * (H - y)) / (rho0 * g * H)
+    # the incompressible column of depth H, with the same bottom as the compressed one
+    err_inc = 100.0 * (P - rho0 * g * (H - (y - (ys - Hc)))) / (rho0 * g * H)
     x = c["x"]
     inner = (x > x.min() + 0.1 * H) & (x < x.max() - 0.1 * H)
     print(f"pressure at the end: max error {np.abs(err).max():.4f} %, mean {np.abs(err).mean():.4f} % of rho0 g H "
@@ -63,8 +74,8 @@ def main():
     ax.set_xlabel("t (s)")
     ax.set_ylabel("largest fluid speed (% of sqrt(g H))")
     ax.set_title(f"hydrostatic column {a.label}: largest speed {speed.max():.3f} %", fontsize=9)
-    ys = np.linspace(0, Hc, 200)
-    ax2.plot(rho0 * c0 ** 2 * np.expm1(g * (Hc - ys) / c0 ** 2), ys, "k-", lw=1, label="exact")
+    yy = np.linspace(ys - Hc, ys, 200)
+    ax2.plot(rho0 * c0 ** 2 * np.expm1(g * (ys - yy) / c0 ** 2), yy, "k-", lw=1, label="exact")
     ax2.plot(P[inner], y[inner], ".", ms=2, color="C0", label="SPH, interior")
     ax2.plot(P[~inner], y[~inner], ".", ms=2, color="C1", label="SPH, next to the side walls")
     ax2.set_xlabel("P (Pa)")

@@ -2,7 +2,7 @@
 
 u(y, t) = F/(2 nu) y (W - y)
           - sum_{n>=0} 4 F W^2 / (nu pi^3 (2n+1)^3) sin((2n+1) pi y / W) exp(-(2n+1)^2 pi^2 nu t / W^2)
-(reference/analytic.md case 9; Morris, Fox & Zhu 1997), with F = 8 u_max nu / W^2.
+(the series solution of Morris, Fox & Zhu 1997), with F = 8 u_max nu / W^2.
 Errors are in % of the steady centre-line velocity u_max, over all fluid particles;
 |vy| (which is 0 exactly) is reported in the same unit.
 """

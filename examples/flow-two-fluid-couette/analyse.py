@@ -1,6 +1,6 @@
 """Errors of the two-fluid layered Couette example; writes two-fluid-couette.png.
 
-Steady state (reference/analytic.md case 11): fluid 1 (mu1) on the fixed wall
+Steady state (the exact solution of the momentum equation): fluid 1 (mu1) on the fixed wall
 for 0 < y < L1, fluid 2 (mu2) under the wall moving at V0 for L1 < y < W; the
 shear stress tau = V0 / (L1/mu1 + L2/mu2) is the same in both layers and the
 profile is linear in each, u = tau y / mu1 below the interface and

@@ -25,6 +25,7 @@
 #include "neigh_request.h"
 #include "neighbor.h"
 #include "pair.h"
+#include "memory.h"
 #include "sph_body_force.h"
 #include "sph_checks.h"
 #include "sph_kernels.h"
@@ -40,8 +41,9 @@ static const char cmd[] = "fix sph/wall/adami";
 /* ---------------------------------------------------------------------- */
 
 FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), body_given(0), body_force(nullptr), wall_groupbit(0), kernel_kind(0), cutoff(0.0), materials(nullptr),
-    list(nullptr)
+    Fix(lmp, narg, arg), body_given(0), body_force(nullptr), wall_groupbit(0), kernel_kind(0),
+    cutoff(0.0), materials(nullptr), list(nullptr), solid_type(nullptr), any_solid(0),
+    solid_state(nullptr), nmax(0)
 {
   if (!atom->rho_flag || !atom->vest_flag)
     error->all(FLERR, "Fix sph/wall/adami requires atom style sph (rho, vest)");
@@ -57,12 +59,20 @@ FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
     } else
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
   }
-  comm_forward = 4;
+  comm_forward = 7;
+  memory->create(solid_type, atom->ntypes + 1, "sph/wall/adami:solid_type");
+  for (int t = 0; t <= atom->ntypes; t++) solid_type[t] = 0;
+}
+
+FixSPHWallAdami::~FixSPHWallAdami()
+{
+  memory->destroy(solid_type);
+  memory->destroy(solid_state);
 }
 
 int FixSPHWallAdami::setmask()
 {
-  return PRE_FORCE;
+  return PRE_FORCE | POST_FORCE;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -79,6 +89,20 @@ void FixSPHWallAdami::init()
   if (!comm->ghost_velocity)
     error->all(FLERR, "Fix sph/wall/adami requires ghost velocities (comm_modify vel yes)");
   SPHCheck::group_of_kind(lmp, this, {"sph/wall/adami"}, false, false);
+  // a wall type without an equation of state is a solid of its own density
+  int local_solid = 0;
+  for (int t = 1; t <= atom->ntypes; t++) solid_type[t] = materials->eos(t) ? 0 : 1;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && solid_type[atom->type[i]]) {
+      local_solid = 1;
+      if (!(materials->rho0(atom->type[i]) > 0.0))
+        SPHCheck::stop(lmp, fmt::format("Fix sph/wall/adami: atom type {} of wall atom {} has no "
+                                        "equation of state, so it is a solid, but no rho0 in fix "
+                                        "sph/materials",
+                                        atom->type[i], atom->tag[i]));
+    }
+  MPI_Allreduce(&local_solid, &any_solid, 1, MPI_INT, MPI_MAX, world);
+  if (any_solid) SPHCheck::atom_state(lmp, "Fix sph/wall/adami", groupbit, SPHCheck::RHO);
   // without 'body', the fluid's body force is the run's (a resting wall)
   body_force = body_given ? nullptr : SPHBodyForce::find(lmp, "Fix sph/wall/adami");
 
@@ -124,10 +148,20 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
   if (!body_given)
     for (int k = 0; k < 3; k++) body[k] = body_force ? body_force[k] : 0.0;
 
+  if (any_solid && atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(solid_state);
+    memory->create(solid_state, nmax, 3, "sph/wall/adami:solid_state");
+  }
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
+    const int is_solid = solid_type[type[i]];
     double weight = 0.0, weighted_p = 0.0, hydrostatic = 0.0;
+    double weighted_rho = 0.0, weighted_mu = 0.0;    // solids only, after the pressure
     double weighted_v[3] = {0.0, 0.0, 0.0};
     const int *const jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
@@ -142,15 +176,34 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
       hydrostatic += w * rho[j] * (body[0] * dx + body[1] * dy + body[2] * dz);
       for (int k = 0; k < 3; k++) weighted_v[k] += w * v[j][k];
     }
-    const sphe_eos *eos = materials->eos(type[i]);
-    if (weight > 0.0) {
-      rho[i] = sphe_density(eos, (weighted_p + hydrostatic) / weight);
-      if (rho[i] <= 0.0) below_eos++;
-      for (int k = 0; k < 3; k++) vest[i][k] = 2.0 * v[i][k] - weighted_v[k] / weight;
+    if (is_solid) {
+      // the density and viscosity of the fluid at the wall pressure: the
+      // kernel-weighted mean over the fluid neighbours' materials
+      const double p_wall = (weight > 0.0) ? (weighted_p + hydrostatic) / weight : 0.0;
+      for (int jj = 0; jj < list->numneigh[i]; jj++) {
+        const int j = list->firstneigh[i][jj] & NEIGHMASK;
+        if (mask[j] & wall_groupbit) continue;
+        const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+        const double rsq = dx * dx + dy * dy + dz * dz;
+        if (rsq >= cutsq) continue;
+        const double w = sphk_w(&kernel, sqrt(rsq));
+        weighted_rho += w * sphe_density(materials->eos(type[j]), p_wall);
+        weighted_mu += w * materials->viscosity_at(type[j], esph[j] / cv[j], "Fix sph/wall/adami");
+      }
+      // no fluid in reach: a wall at the background pressure of no fluid, whose
+      // density and viscosity no fluid particle sees
+      solid_state[i][0] = p_wall;
+      solid_state[i][1] = (weight > 0.0) ? weighted_rho / weight : materials->rho0(type[i]);
+      solid_state[i][2] = (weight > 0.0) ? weighted_mu / weight : 0.0;
+      if (weight > 0.0 && solid_state[i][1] <= 0.0) below_eos++;
     } else {
-      rho[i] = sphe_density(eos, eos->p_background);
-      for (int k = 0; k < 3; k++) vest[i][k] = v[i][k];
+      const sphe_eos *eos = materials->eos(type[i]);
+      rho[i] = (weight > 0.0) ? sphe_density(eos, (weighted_p + hydrostatic) / weight)
+                              : sphe_density(eos, eos->p_background);
+      if (weight > 0.0 && rho[i] <= 0.0) below_eos++;
     }
+    for (int k = 0; k < 3; k++)
+      vest[i][k] = (weight > 0.0) ? 2.0 * v[i][k] - weighted_v[k] / weight : v[i][k];
   }
   // a tension beyond the equation of state leaves no density: stop, collectively
   int below_eos_all = 0;
@@ -176,17 +229,40 @@ int FixSPHWallAdami::pack_forward_comm(int n, int *send, double *buf, int /*pbc_
     buf[m++] = atom->vest[i][0];
     buf[m++] = atom->vest[i][1];
     buf[m++] = atom->vest[i][2];
+    for (int c = 0; c < 3; c++) buf[m++] = any_solid ? solid_state[i][c] : 0.0;
   }
   return m;
 }
 
 void FixSPHWallAdami::unpack_forward_comm(int n, int first, double *buf)
 {
+  if (any_solid && atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->grow(solid_state, nmax, 3, "sph/wall/adami:solid_state");
+  }
   int m = 0;
   for (int i = first; i < first + n; i++) {
     atom->rho[i] = buf[m++];
     atom->vest[i][0] = buf[m++];
     atom->vest[i][1] = buf[m++];
     atom->vest[i][2] = buf[m++];
+    for (int c = 0; c < 3; c++) {
+      const double value = buf[m++];
+      if (any_solid) solid_state[i][c] = value;
+    }
   }
+}
+
+/* ----------------------------------------------------------------------
+   a solid wall does not move: the continuity equation must not change its
+   own density (fix sph/stationary integrates rho with esph)
+------------------------------------------------------------------------- */
+
+void FixSPHWallAdami::post_force(int /*vflag*/)
+{
+  if (!any_solid) return;
+  double *const drho = atom->drho;
+  const int *const mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((mask[i] & groupbit) && solid_type[atom->type[i]]) drho[i] = 0.0;
 }

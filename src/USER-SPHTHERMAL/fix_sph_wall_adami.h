@@ -12,6 +12,7 @@ FixStyle(sph/wall/adami,FixSPHWallAdami);
 #ifndef LMP_FIX_SPH_WALL_ADAMI_H
 #define LMP_FIX_SPH_WALL_ADAMI_H
 
+#include "atom.h"
 #include "fix.h"
 
 namespace LAMMPS_NS {
@@ -24,6 +25,17 @@ class FixSPHWallAdami : public Fix {
   void init_list(int, class NeighList *) override;
   void setup_pre_force(int) override;
   void pre_force(int) override;
+  void post_force(int) override;
+  ~FixSPHWallAdami() override;
+
+  // a solid wall particle (its type has no equation of state) keeps its own
+  // density, mass and heat capacity for conduction; the flow sees it with
+  // the pressure, density and viscosity extrapolated from the fluid, for
+  // owned and ghost atoms, valid after pre_force
+  int solid(int i) const { return solid_type[atom->type[i]]; }
+  double pressure(int i) const { return solid_state[i][0]; }
+  double fluid_density(int i) const { return solid_state[i][1]; }
+  double viscosity(int i) const { return solid_state[i][2]; }
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
 
@@ -36,6 +48,10 @@ class FixSPHWallAdami : public Fix {
   double cutoff;
   class FixSPHMaterials *materials;
   class NeighList *list;
+  int *solid_type;          // per type: 1 when the type has no equation of state
+  int any_solid;            // 1 when some wall particle of this fix is solid
+  double **solid_state;     // per atom (owned and ghost): P, rho, viscosity seen by the flow
+  int nmax;
 };
 
 }    // namespace LAMMPS_NS

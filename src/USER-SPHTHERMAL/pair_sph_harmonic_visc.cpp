@@ -19,6 +19,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix_sph_materials.h"
+#include "fix_sph_wall_adami.h"
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
@@ -43,7 +44,8 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
                   "viscosities and equations of state come from fix sph/materials"),
     pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI), xi(SPHF_XI_CLEARY), delta(0.1),
     diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr), eta2(0.0), materials(nullptr), viscosity_varies(0), wall_groupbit(0),
-    pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr), nmax(0)
+    pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr), density(nullptr),
+    nmax(0)
 {
   comm_forward = 3;
   gravity[0] = gravity[1] = gravity[2] = 0.0;
@@ -55,6 +57,7 @@ PairSPHHarmonicVisc::~PairSPHHarmonicVisc()
   memory->destroy(viscosity);
   memory->destroy(mass_of);
   memory->destroy(volume);
+  memory->destroy(density);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -150,26 +153,42 @@ void PairSPHHarmonicVisc::update_atom_state()
     memory->destroy(viscosity);
     memory->destroy(mass_of);
     memory->destroy(volume);
+    memory->destroy(density);
     memory->create(volume, nmax, "pair:volume");
     memory->create(pressure, nmax, "pair:pressure");
     memory->create(viscosity, nmax, "pair:viscosity");
     memory->create(mass_of, nmax, "pair:mass_of");
+    memory->create(density, nmax, "pair:density");
   }
   const double *const rho = atom->rho;
   const double *const esph = atom->esph;
   const double *const cv = atom->cv;
   const int *const type = atom->type;
+  const int *const mask = atom->mask;
   const int nall = atom->nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++) {
-    pressure[i] = sphe_pressure(materials->eos(type[i]), rho[i]);
-    viscosity[i] = materials->viscosity_at(type[i], viscosity_varies ? esph[i] / cv[i] : 0.0,
-                                           "Pair style sph/harmonic/visc");
-  }
   if (atom->rmass_flag && atom->rmass)
     memcpy(mass_of, atom->rmass, nall * sizeof(double));
   else
     for (int i = 0; i < nall; i++) mass_of[i] = atom->mass[type[i]];
-  for (int i = 0; i < nall; i++) volume[i] = mass_of[i] / rho[i];
+  for (int i = 0; i < nall; i++) {
+    FixSPHWallAdami *solid = nullptr;
+    for (auto wall : solid_walls)
+      if ((mask[i] & wall->groupbit) && wall->solid(i)) solid = wall;
+    if (solid) {
+      // its own volume, filled with the fluid as the wall extrapolates it
+      volume[i] = mass_of[i] / rho[i];
+      pressure[i] = solid->pressure(i);
+      density[i] = solid->fluid_density(i);
+      viscosity[i] = solid->viscosity(i);
+      mass_of[i] = density[i] * volume[i];
+      continue;
+    }
+    pressure[i] = sphe_pressure(materials->eos(type[i]), rho[i]);
+    viscosity[i] = materials->viscosity_at(type[i], viscosity_varies ? esph[i] / cv[i] : 0.0,
+                                           "Pair style sph/harmonic/visc");
+    density[i] = rho[i];
+    volume[i] = mass_of[i] / rho[i];
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -186,7 +205,6 @@ void PairSPHHarmonicVisc::eval()
   const double *const *const v = atom->v;
   const double *const *const vest = atom->vest;
   double *const *const f = atom->f;
-  const double *const rho = atom->rho;
   double *const drho = atom->drho;
   const int nlocal = atom->nlocal;
 
@@ -202,7 +220,7 @@ void PairSPHHarmonicVisc::eval()
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const double xtmp = x[i][0], ytmp = x[i][1], ztmp = x[i][2];
-    const sphf_particle a = {mass_of[i], rho[i], volume[i], pressure[i], viscosity[i]};
+    const sphf_particle a = {mass_of[i], density[i], volume[i], pressure[i], viscosity[i]};
     const int *const jlist = firstneigh[i];
     const int jnum = numneigh[i];
     double fx_i = 0.0, fy_i = 0.0, fz_i = 0.0, drho_i = 0.0;
@@ -217,7 +235,7 @@ void PairSPHHarmonicVisc::eval()
 
       const double r = sqrt(rsq);
       const double dwdr = dw_scale * sphk_df(KERNEL, r * inv_h);
-      const sphf_particle b = {mass_of[j], rho[j], volume[j], pressure[j], viscosity[j]};
+      const sphf_particle b = {mass_of[j], density[j], volume[j], pressure[j], viscosity[j]};
       const double dvx = vest[i][0] - vest[j][0];
       const double dvy = vest[i][1] - vest[j][1];
       const double dvz = vest[i][2] - vest[j][2];
@@ -400,16 +418,33 @@ void PairSPHHarmonicVisc::init_style()
     error->all(FLERR, "Pair style sph/harmonic/visc requires ghost velocities (comm_modify vel yes)");
 
   materials = FixSPHMaterials::find(lmp, "Pair style sph/harmonic/visc");
-  for (int i = 1; i <= atom->ntypes; i++) {
-    if (!materials->eos(i))
-      error->all(FLERR,
-                 "Pair style sph/harmonic/visc: atom type {} has no equation of state (eos) in "
-                 "fix sph/materials",
-                 i);
-    if (!materials->viscosity(i))
-      error->all(FLERR,
-                 "Pair style sph/harmonic/visc: atom type {} has no viscosity in fix sph/materials",
-                 i);
+  // the walls first: a wall type without an equation of state is a solid
+  wall_groupbit = 0;
+  solid_walls.clear();
+  for (int ifix = 0; ifix < modify->nfix; ifix++)
+    if (strcmp(modify->fix[ifix]->style, "sph/wall/adami") == 0) {
+      wall_groupbit |= modify->fix[ifix]->groupbit;
+      solid_walls.push_back((FixSPHWallAdami *) modify->fix[ifix]);
+    }
+  // every particle that is not such a wall needs its fluid's properties
+  tagint bad_tag = MAXTAGINT;
+  int bad_type = 0, bad_missing = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (atom->mask[i] & wall_groupbit) continue;
+    const int t = atom->type[i];
+    const int missing = !materials->eos(t) ? 1 : (!materials->viscosity(t) ? 2 : 0);
+    if (missing && atom->tag[i] < bad_tag) bad_tag = atom->tag[i], bad_type = t, bad_missing = missing;
+  }
+  tagint bad_all;
+  MPI_Allreduce(&bad_tag, &bad_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (bad_all != MAXTAGINT) {
+    int info[2] = {bad_tag == bad_all ? bad_type : 0, bad_tag == bad_all ? bad_missing : 0};
+    int info_all[2];
+    MPI_Allreduce(info, info_all, 2, MPI_INT, MPI_MAX, world);
+    error->all(FLERR,
+               "Pair style sph/harmonic/visc: atom type {} has no {} in fix sph/materials (atom {} "
+               "is a fluid particle; only the solid particles of fix sph/wall/adami may lack it)",
+               info_all[0], info_all[1] == 1 ? "equation of state (eos)" : "viscosity", bad_all);
   }
   viscosity_varies = !materials->viscosity_constant();
   SPHCheck::atom_state(lmp, "Pair style sph/harmonic/visc", 0,
@@ -440,10 +475,6 @@ void PairSPHHarmonicVisc::init_style()
                      body_force[2]);
   }
 
-  wall_groupbit = 0;
-  for (int ifix = 0; ifix < modify->nfix; ifix++)
-    if (strcmp(modify->fix[ifix]->style, "sph/wall/adami") == 0)
-      wall_groupbit |= modify->fix[ifix]->groupbit;
 
   eta2 = init_kernel();
 

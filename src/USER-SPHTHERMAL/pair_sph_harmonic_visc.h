@@ -14,6 +14,8 @@ PairStyle(sph/harmonic/visc,PairSPHHarmonicVisc);
 
 #include "pair_sph_kernel.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class PairSPHHarmonicVisc : public PairSPHKernel {
@@ -49,8 +51,12 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   class FixSPHMaterials *materials;
   int viscosity_varies;    // 1 when some viscosity depends on T
   int wall_groupbit;       // particles of every fix sph/wall/adami (no density diffusion)
-  // per atom (owned and ghost), refreshed every step
-  double *pressure, *viscosity, *mass_of, *volume;
+  // walls of fix sph/wall/adami; those with solid particles (own density)
+  std::vector<class FixSPHWallAdami *> solid_walls;
+  // per atom (owned and ghost), refreshed every step: what the flow sees
+  // (a solid wall particle: the fluid's pressure, density and viscosity at
+  // the wall, its own volume)
+  double *pressure, *viscosity, *mass_of, *volume, *density;
   int nmax;
 
   void update_atom_state();
