@@ -47,6 +47,8 @@ FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
 {
   if (!atom->rho_flag || !atom->vest_flag)
     error->all(FLERR, "Fix sph/wall/adami requires atom style sph (rho, vest)");
+  // the no-slip extrapolation needs the velocities of ghost fluid atoms
+  comm->ghost_velocity = 1;
   body[0] = body[1] = body[2] = 0.0;
   int iarg = 3;
   while (iarg < narg) {
@@ -86,8 +88,7 @@ void FixSPHWallAdami::init()
   kernel_kind = *(int *) pair->extract("kernel_kind", dim);
   cutoff = *(double *) pair->extract("cutoff", dim);
   materials = FixSPHMaterials::find(lmp, "Fix sph/wall/adami");
-  if (!comm->ghost_velocity)
-    error->all(FLERR, "Fix sph/wall/adami requires ghost velocities (comm_modify vel yes)");
+  // ghost velocities: checked by the pair (initialised before the fixes)
   SPHCheck::group_of_kind(lmp, this, {"sph/wall/adami"}, false, false);
   // a wall type without an equation of state is a solid of its own density
   int local_solid = 0;

@@ -47,6 +47,9 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr), density(nullptr),
     nmax(0)
 {
+  // the continuity equation and the viscous term need the velocities of
+  // ghost atoms: turned on here, as comm_modify vel yes would
+  comm->ghost_velocity = 1;
   comm_forward = 3;
   gravity[0] = gravity[1] = gravity[2] = 0.0;
 }
@@ -413,9 +416,9 @@ void PairSPHHarmonicVisc::init_style()
   if (!atom->rho_flag || !atom->vest_flag || !atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Pair style sph/harmonic/visc requires atom style sph (rho, drho, vest)");
 
-  // the continuity equation needs the velocities of ghost atoms
+  // turned on by the constructor; off only after an explicit comm_modify vel no
   if (!comm->ghost_velocity)
-    error->all(FLERR, "Pair style sph/harmonic/visc requires ghost velocities (comm_modify vel yes)");
+    error->all(FLERR, "Pair style sph/harmonic/visc requires ghost velocities: remove comm_modify vel no");
 
   materials = FixSPHMaterials::find(lmp, "Pair style sph/harmonic/visc");
   // the walls first: a wall type without an equation of state is a solid

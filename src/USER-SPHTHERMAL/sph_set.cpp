@@ -249,15 +249,21 @@ void SPHSet::set_hydrostatic(double level, bool move)
                cmd);
   const double up[3] = {-gvec[0] / g + 0.0, -gvec[1] / g + 0.0, -gvec[2] / g + 0.0};
 
+  // the fluid of the group: its types with an equation of state; solids (no
+  // equation of state, e.g. the walls and blocks of fix sph/wall/adami) keep
+  // their density and place
   const int ntypes = atom->ntypes;
   std::vector<int> present(ntypes + 1, 0);
   types_in_group(present.data());
-  for (int t = 1; t <= ntypes; t++)
-    if (present[t] && !materials->eos(t))
-      error->all(FLERR,
-                 "{} hydrostatic: atom type {} (in group {}) has no equation of state in fix "
-                 "sph/materials",
-                 cmd, t, group_name);
+  bool any_fluid = false;
+  for (int t = 1; t <= ntypes; t++) any_fluid = any_fluid || (present[t] && materials->eos(t));
+  if (!any_fluid)
+    error->all(FLERR,
+               "{} hydrostatic: no atom type of group {} has an equation of state in fix "
+               "sph/materials: no fluid to set",
+               cmd, group_name);
+  int solid_types = 0;
+  for (int t = 1; t <= ntypes; t++) solid_types += present[t] && !materials->eos(t);
 
   double **x = atom->x;
   const int *const mask = atom->mask;
@@ -267,6 +273,7 @@ void SPHSet::set_hydrostatic(double level, bool move)
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const sphe_eos *eos = materials->eos(atom->type[i]);
+    if (!eos) continue;
     const double d0 = level - (up[0] * x[i][0] + up[1] * x[i][1] + up[2] * x[i][2]);
     double rho, d;
     sphe_hydrostatic(eos, g, d0, &rho, &d);
@@ -281,7 +288,7 @@ void SPHSet::set_hydrostatic(double level, bool move)
   if (move && largest[1] > 0.0) {
     imageint *image = atom->image;
     for (int i = 0; i < nlocal; i++) {
-      if (!(mask[i] & groupbit)) continue;
+      if (!(mask[i] & groupbit) || !materials->eos(atom->type[i])) continue;
       const double shift = compression[i] - largest[1];    // <= 0: down, along g
       for (int k = 0; k < 3; k++) x[i][k] += shift * up[k];
       domain->remap(x[i], image[i]);
@@ -297,8 +304,12 @@ void SPHSet::set_hydrostatic(double level, bool move)
   if (comm->me == 0)
     utils::logmesg(lmp,
                    "{} hydrostatic: group {}: surface at height {} along ({} {} {}), g = {}; "
-                   "density up to {} rho0{}\n",
+                   "density up to {} rho0{}{}\n",
                    cmd, group_name, level, up[0], up[1], up[2], g, largest[0],
                    move ? fmt::format(", atoms moved down by up to {}", largest[1])
-                        : std::string(", atoms not moved"));
+                        : std::string(", atoms not moved"),
+                   solid_types ? fmt::format("; {} solid type(s) (no equation of state) left as "
+                                             "they are",
+                                             solid_types)
+                               : std::string());
 }
