@@ -7,7 +7,10 @@
 #     so edits here reach that tree without reinstalling),
 #   - adds USER-SPHTHERMAL to STANDARD_PACKAGES in <lammps>/cmake/CMakeLists.txt
 #     with pkg_depends(USER-SPHTHERMAL SPH),
-#   - adds user-sphthermal to the PACKAGE list of <lammps>/src/Makefile.
+#   - adds user-sphthermal to the PACKAGE list of <lammps>/src/Makefile,
+#   - copies the material files (potentials/*.sphmat) into <lammps>/potentials,
+#     where LAMMPS keeps potential files (installed with LAMMPS; found through
+#     LAMMPS_POTENTIALS, as fix sph/materials looks there).
 # Running it again is harmless. Do not load the plugin into a LAMMPS built so.
 set -euo pipefail
 
@@ -45,5 +48,9 @@ grep -q '^  USER-SPHTHERMAL$' "$cmakelists" && grep -q '^pkg_depends(USER-SPHTHE
 if [ -f "$makefile" ] && ! grep -q 'user-sphthermal' "$makefile"; then
   sed -i '0,/^\tsph \\$/s//\tsph \\\n\tuser-sphthermal \\/' "$makefile"
 fi
+
+potentials=$(cd "$(dirname "$0")/../potentials" && pwd)
+mkdir -p "$tree/potentials"
+cp "$potentials"/*.sphmat "$tree/potentials/"
 
 echo "install-package: USER-SPHTHERMAL installed in $tree ($([ $link = 1 ] && echo linked || echo copied))"

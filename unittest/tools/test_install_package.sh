@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # cmake/install-package.sh on a scratch copy of a LAMMPS tree's build files:
-# registers USER-SPHTHERMAL exactly once (also when run twice), and the make
+# registers USER-SPHTHERMAL exactly once (also when run twice), copies the
+# material files into <lammps>/potentials, and the make
 # route refuses without SPH and installs with it.
 #   test_install_package.sh <lammps-source-dir>
 set -euo pipefail
@@ -26,6 +27,9 @@ fail() { echo "FAIL: $*"; exit 1; }
 [ "$(grep -c '^pkg_depends(USER-SPHTHERMAL SPH)$' "$scratch/cmake/CMakeLists.txt")" = 1 ] || fail "pkg_depends"
 [ "$(grep -c '^	user-sphthermal \\$' "$scratch/src/Makefile")" = 1 ] || fail "Makefile PACKAGE list"
 diff -r "$root/src/USER-SPHTHERMAL" "$scratch/src/USER-SPHTHERMAL" || fail "package files not copied"
+for f in "$root"/potentials/*.sphmat; do
+  cmp -s "$f" "$scratch/potentials/$(basename "$f")" || fail "material file $(basename "$f") not in <lammps>/potentials"
+done
 
 cd "$scratch/src"
 out=$(make yes-user-sphthermal 2>&1 || true)
