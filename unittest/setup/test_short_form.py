@@ -9,7 +9,8 @@ hydrostatic: in.hydrostatic_start: the column of examples/flow-hydrostatic
              positions (up to the translation of the whole tank: the long form
              keeps the fluid's bottom in place, sph/set the deepest wall row),
              fluid densities and first forces; and the column is at rest: the
-             largest acceleration of the fluid is below 1 % of g.
+             largest acceleration of the fluid below its top 3 rows is below
+             0.1 % of g.
 """
 
 import argparse
