@@ -42,13 +42,11 @@ static const char cmd[] = "fix sph/wall/adami";
 
 FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), body_given(0), body_force(nullptr), wall_groupbit(0), kernel_kind(0),
-    cutoff(0.0), materials(nullptr), list(nullptr), solid_type(nullptr), any_solid(0),
+    cutoff(0.0), materials(nullptr), list(nullptr), solid_type(nullptr), fluid_weight(nullptr), any_solid(0),
     solid_state(nullptr), nmax(0)
 {
   if (!atom->rho_flag || !atom->vest_flag)
     error->all(FLERR, "Fix sph/wall/adami requires atom style sph (rho, vest)");
-  // the no-slip extrapolation needs the velocities of ghost fluid atoms
-  comm->ghost_velocity = 1;
   body[0] = body[1] = body[2] = 0.0;
   int iarg = 3;
   while (iarg < narg) {
@@ -61,14 +59,15 @@ FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
     } else
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
   }
-  comm_forward = 7;
   memory->create(solid_type, atom->ntypes + 1, "sph/wall/adami:solid_type");
+  memory->create(fluid_weight, atom->ntypes + 1, "sph/wall/adami:fluid_weight");
   for (int t = 0; t <= atom->ntypes; t++) solid_type[t] = 0;
 }
 
 FixSPHWallAdami::~FixSPHWallAdami()
 {
   memory->destroy(solid_type);
+  memory->destroy(fluid_weight);
   memory->destroy(solid_state);
 }
 
@@ -88,7 +87,7 @@ void FixSPHWallAdami::init()
   kernel_kind = *(int *) pair->extract("kernel_kind", dim);
   cutoff = *(double *) pair->extract("cutoff", dim);
   materials = FixSPHMaterials::find(lmp, "Fix sph/wall/adami");
-  // ghost velocities: checked by the pair (initialised before the fixes)
+  // ghost velocities: turned on and checked by the pair, which this fix requires
   SPHCheck::group_of_kind(lmp, this, {"sph/wall/adami"}, false, false);
   // a wall type without an equation of state is a solid of its own density
   int local_solid = 0;
@@ -103,6 +102,8 @@ void FixSPHWallAdami::init()
                                         atom->type[i], atom->tag[i]));
     }
   MPI_Allreduce(&local_solid, &any_solid, 1, MPI_INT, MPI_MAX, world);
+  // rho and vest, and with solids their pressure, density and viscosity
+  comm_forward = any_solid ? 7 : 4;
   if (any_solid) SPHCheck::atom_state(lmp, "Fix sph/wall/adami", groupbit, SPHCheck::RHO);
   // without 'body', the fluid's body force is the run's (a resting wall)
   body_force = body_given ? nullptr : SPHBodyForce::find(lmp, "Fix sph/wall/adami");
@@ -156,13 +157,16 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
   }
   const double *const esph = atom->esph;
   const double *const cv = atom->cv;
+  const int ntypes = atom->ntypes;
 
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
     const int is_solid = solid_type[type[i]];
     double weight = 0.0, weighted_p = 0.0, hydrostatic = 0.0;
-    double weighted_rho = 0.0, weighted_mu = 0.0;    // solids only, after the pressure
+    double weighted_mu = 0.0;    // solids only; and the weight of each fluid type
+    if (is_solid)
+      for (int t = 1; t <= ntypes; t++) fluid_weight[t] = 0.0;
     double weighted_v[3] = {0.0, 0.0, 0.0};
     const int *const jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
@@ -176,21 +180,19 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
       weighted_p += w * sphe_pressure(materials->eos(type[j]), rho[j]);
       hydrostatic += w * rho[j] * (body[0] * dx + body[1] * dy + body[2] * dz);
       for (int k = 0; k < 3; k++) weighted_v[k] += w * v[j][k];
+      if (is_solid) {
+        fluid_weight[type[j]] += w;
+        weighted_mu += w * materials->viscosity_at(type[j], esph[j] / cv[j], "Fix sph/wall/adami");
+      }
     }
     if (is_solid) {
       // the density and viscosity of the fluid at the wall pressure: the
       // kernel-weighted mean over the fluid neighbours' materials
       const double p_wall = (weight > 0.0) ? (weighted_p + hydrostatic) / weight : 0.0;
-      for (int jj = 0; jj < list->numneigh[i]; jj++) {
-        const int j = list->firstneigh[i][jj] & NEIGHMASK;
-        if (mask[j] & wall_groupbit) continue;
-        const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
-        const double rsq = dx * dx + dy * dy + dz * dz;
-        if (rsq >= cutsq) continue;
-        const double w = sphk_w(&kernel, sqrt(rsq));
-        weighted_rho += w * sphe_density(materials->eos(type[j]), p_wall);
-        weighted_mu += w * materials->viscosity_at(type[j], esph[j] / cv[j], "Fix sph/wall/adami");
-      }
+      double weighted_rho = 0.0;
+      for (int t = 1; t <= ntypes; t++)
+        if (fluid_weight[t] > 0.0)
+          weighted_rho += fluid_weight[t] * sphe_density(materials->eos(t), p_wall);
       // no fluid in reach: a wall at the background pressure of no fluid, whose
       // density and viscosity no fluid particle sees
       solid_state[i][0] = p_wall;
@@ -230,7 +232,8 @@ int FixSPHWallAdami::pack_forward_comm(int n, int *send, double *buf, int /*pbc_
     buf[m++] = atom->vest[i][0];
     buf[m++] = atom->vest[i][1];
     buf[m++] = atom->vest[i][2];
-    for (int c = 0; c < 3; c++) buf[m++] = any_solid ? solid_state[i][c] : 0.0;
+    if (any_solid)
+      for (int c = 0; c < 3; c++) buf[m++] = solid_state[i][c];
   }
   return m;
 }
@@ -247,10 +250,8 @@ void FixSPHWallAdami::unpack_forward_comm(int n, int first, double *buf)
     atom->vest[i][0] = buf[m++];
     atom->vest[i][1] = buf[m++];
     atom->vest[i][2] = buf[m++];
-    for (int c = 0; c < 3; c++) {
-      const double value = buf[m++];
-      if (any_solid) solid_state[i][c] = value;
-    }
+    if (any_solid)
+      for (int c = 0; c < 3; c++) solid_state[i][c] = buf[m++];
   }
 }
 

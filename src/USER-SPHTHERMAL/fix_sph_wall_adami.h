@@ -49,6 +49,7 @@ class FixSPHWallAdami : public Fix {
   class FixSPHMaterials *materials;
   class NeighList *list;
   int *solid_type;          // per type: 1 when the type has no equation of state
+  double *fluid_weight;     // per type: kernel weight of its fluid around one solid particle
   int any_solid;            // 1 when some wall particle of this fix is solid
   double **solid_state;     // per atom (owned and ghost): P, rho, viscosity seen by the flow
   int nmax;

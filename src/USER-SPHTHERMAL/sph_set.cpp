@@ -255,15 +255,14 @@ void SPHSet::set_hydrostatic(double level, bool move)
   const int ntypes = atom->ntypes;
   std::vector<int> present(ntypes + 1, 0);
   types_in_group(present.data());
-  bool any_fluid = false;
-  for (int t = 1; t <= ntypes; t++) any_fluid = any_fluid || (present[t] && materials->eos(t));
-  if (!any_fluid)
+  int fluid_types = 0, solid_types = 0;
+  for (int t = 1; t <= ntypes; t++)
+    if (present[t]) (materials->eos(t) ? fluid_types : solid_types)++;
+  if (!fluid_types)
     error->all(FLERR,
                "{} hydrostatic: no atom type of group {} has an equation of state in fix "
                "sph/materials: no fluid to set",
                cmd, group_name);
-  int solid_types = 0;
-  for (int t = 1; t <= ntypes; t++) solid_types += present[t] && !materials->eos(t);
 
   double **x = atom->x;
   const int *const mask = atom->mask;
