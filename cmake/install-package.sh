@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Install USER-SPHTHERMAL into a LAMMPS 29Sep2021 source tree as a package:
+# Install USER-SPHTHERMAL into a LAMMPS source tree (4Feb2025 or 29Sep2021) as a package:
 #   cmake/install-package.sh [--link] /path/to/lammps
 # then build LAMMPS with CMake (-D PKG_SPH=on -D PKG_USER-SPHTHERMAL=on) or
 # with make (make yes-sph yes-user-sphthermal). It
@@ -25,8 +25,8 @@ makefile=$tree/src/Makefile
   echo "install-package: $tree is not a LAMMPS source tree" >&2
   exit 1
 }
-grep -q '29 Sep 2021' "$tree/src/version.h" ||
-  echo "install-package: warning: $tree is not LAMMPS 29Sep2021; continuing" >&2
+grep -qE '"(4 Feb 2025|29 Sep 2021)"' "$tree/src/version.h" ||
+  echo "install-package: warning: $tree is neither LAMMPS 4Feb2025 nor 29Sep2021 (the tested versions); continuing" >&2
 
 dest=$tree/src/USER-SPHTHERMAL
 rm -rf "$dest"
@@ -38,7 +38,8 @@ fi
 
 if ! grep -q '^  USER-SPHTHERMAL$' "$cmakelists"; then
   sed -i 's/^  SPH$/  SPH\n  USER-SPHTHERMAL/' "$cmakelists"
-  sed -i 's/^pkg_depends(MPIIO MPI)$/pkg_depends(MPIIO MPI)\npkg_depends(USER-SPHTHERMAL SPH)/' "$cmakelists"
+  # after the first dependency rule of LAMMPS's own packages
+  sed -i '0,/^pkg_depends(.*)$/s//&\npkg_depends(USER-SPHTHERMAL SPH)/' "$cmakelists"
 fi
 grep -q '^  USER-SPHTHERMAL$' "$cmakelists" && grep -q '^pkg_depends(USER-SPHTHERMAL SPH)$' "$cmakelists" || {
   echo "install-package: could not register USER-SPHTHERMAL in $cmakelists" >&2

@@ -17,9 +17,9 @@
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
-#include "neigh_request.h"
 #include "neighbor.h"
 #include "pair.h"
+#include "sph_compat.h"
 #include "sph_gradient.h"
 #include "sph_kernels.h"
 #include "update.h"
@@ -43,13 +43,8 @@ ComputeSPHHeatfluxAtom::ComputeSPHHeatfluxAtom(LAMMPS *lmp, int narg, char **arg
     if (strcmp(arg[iarg], "correction") == 0) {
       if (iarg + 1 >= narg)
         error->all(FLERR, "Illegal compute sph/heatflux/atom command: missing value after 'correction'");
-      if (strcmp(arg[iarg + 1], "yes") == 0)
-        corrected = 1;
-      else if (strcmp(arg[iarg + 1], "no") == 0)
-        corrected = 0;
-      else
-        error->all(FLERR, "Illegal compute sph/heatflux/atom command: correction '{}' is not yes or no",
-                   arg[iarg + 1]);
+      corrected = SPHCompat::yes_no(error, FLERR, "compute sph/heatflux/atom", "correction",
+                                    arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "normals") == 0) {
       if (iarg + 3 >= narg)
@@ -116,12 +111,7 @@ void ComputeSPHHeatfluxAtom::init()
   eta2 = eta * eta;
   materials = FixSPHMaterials::find(lmp, "Compute sph/heatflux/atom");
 
-  int irequest = neighbor->request(this, instance_me);
-  neighbor->requests[irequest]->pair = 0;
-  neighbor->requests[irequest]->compute = 1;
-  neighbor->requests[irequest]->half = 0;
-  neighbor->requests[irequest]->full = 1;
-  neighbor->requests[irequest]->occasional = 1;
+  SPHCompat::request_occasional_full_list(neighbor, this, instance_me);
 }
 
 void ComputeSPHHeatfluxAtom::init_list(int /*id*/, NeighList *ptr)

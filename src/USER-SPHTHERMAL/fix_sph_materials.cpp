@@ -16,6 +16,7 @@
 #include "modify.h"
 #include "potential_file_reader.h"
 #include "sph_checks.h"
+#include "sph_compat.h"
 #include "tokenizer.h"
 #include "update.h"
 
@@ -224,16 +225,11 @@ void *FixSPHMaterials::extract(const char *name, int &dim)
 
 FixSPHMaterials *FixSPHMaterials::find(LAMMPS *lmp, const char *who)
 {
-  FixSPHMaterials *hub = nullptr;
-  int count = 0;
-  for (int i = 0; i < lmp->modify->nfix; i++)
-    if (strcmp(lmp->modify->fix[i]->style, "sph/materials") == 0) {
-      hub = (FixSPHMaterials *) lmp->modify->fix[i];
-      count++;
-    }
+  const std::vector<Fix *> hubs = SPHCompat::fixes_of_style(lmp->modify, "sph/materials");
+  const int count = hubs.size();
   if (count == 0) lmp->error->all(FLERR, "{} requires fix sph/materials (the material properties)", who);
   if (count > 1) lmp->error->all(FLERR, "{}: only one fix sph/materials may be defined", who);
-  return hub;
+  return (FixSPHMaterials *) hubs[0];
 }
 
 int FixSPHMaterials::constant(const std::vector<MaterialLaw> &laws)
@@ -393,23 +389,23 @@ std::string FixSPHMaterials::find_material_file(const std::string &file,
                                                 std::vector<std::string> &tried)
 {
   std::vector<std::string> candidates = {file};
-  const std::string name = utils::path_basename(file);
+  const std::string name = SPHCompat::path_basename(file);
   if (const char *env = getenv("LAMMPS_POTENTIALS"))
     for (const auto &dir : Tokenizer(env, ":").as_vector())
-      candidates.push_back(utils::path_join(dir, name) + "  (LAMMPS_POTENTIALS)");
+      candidates.push_back(SPHCompat::path_join(dir, name) + "  (LAMMPS_POTENTIALS)");
   const std::string input_dir = input_script_dir();
   if (!input_dir.empty() && !file.empty() && file[0] != '/')
-    candidates.push_back(utils::path_join(input_dir, file) + "  (directory of the input script)");
+    candidates.push_back(SPHCompat::path_join(input_dir, file) + "  (directory of the input script)");
 #ifdef SPHTHERMAL_POTENTIALS_DIR
-  candidates.push_back(utils::path_join(SPHTHERMAL_POTENTIALS_DIR, name) +
+  candidates.push_back(SPHCompat::path_join(SPHTHERMAL_POTENTIALS_DIR, name) +
                        "  (potentials of USER-SPHTHERMAL)");
 #endif
-  candidates.push_back(utils::path_join("/usr/share/lammps/potentials", name) +
+  candidates.push_back(SPHCompat::path_join("/usr/share/lammps/potentials", name) +
                        "  (Debian's LAMMPS potentials)");
   for (const auto &candidate : candidates) {
     const std::string path = candidate.substr(0, candidate.find("  ("));
     tried.push_back(candidate);
-    if (utils::file_is_readable(path)) return path;
+    if (SPHCompat::file_is_readable(path)) return path;
   }
   return "";
 }
@@ -438,7 +434,7 @@ std::string FixSPHMaterials::input_script_dir()
   }
   for (size_t k = 0; k + 1 < args.size(); k++)
     if (args[k] == "-in" || args[k] == "-i") {
-      const std::string dir = utils::path_dirname(args[k + 1]);
+      const std::string dir = SPHCompat::path_dirname(args[k + 1]);
       return dir.empty() ? std::string(".") : dir;
     }
   return "";

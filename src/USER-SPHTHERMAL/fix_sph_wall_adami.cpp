@@ -22,12 +22,12 @@
 #include "force.h"
 #include "modify.h"
 #include "neigh_list.h"
-#include "neigh_request.h"
 #include "neighbor.h"
 #include "pair.h"
 #include "memory.h"
 #include "sph_body_force.h"
 #include "sph_checks.h"
+#include "sph_compat.h"
 #include "sph_kernels.h"
 
 #include <cmath>
@@ -109,15 +109,10 @@ void FixSPHWallAdami::init()
   body_force = body_given ? nullptr : SPHBodyForce::find(lmp, "Fix sph/wall/adami");
 
   wall_groupbit = 0;
-  for (int ifix = 0; ifix < modify->nfix; ifix++)
-    if (strcmp(modify->fix[ifix]->style, "sph/wall/adami") == 0)
-      wall_groupbit |= modify->fix[ifix]->groupbit;
+  for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/adami"))
+    wall_groupbit |= wall->groupbit;
 
-  int irequest = neighbor->request(this, instance_me);
-  neighbor->requests[irequest]->pair = 0;
-  neighbor->requests[irequest]->fix = 1;
-  neighbor->requests[irequest]->half = 0;
-  neighbor->requests[irequest]->full = 1;
+  SPHCompat::request_full_list(neighbor, this, instance_me);
 }
 
 void FixSPHWallAdami::init_list(int /*id*/, NeighList *ptr)
@@ -217,7 +212,7 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
                "lowest pressure of their equation of state (raise its speed of sound or "
                "background pressure)",
                below_eos_all);
-  comm->forward_comm_fix(this);
+  SPHCompat::forward_comm(comm, this);
 }
 
 /* ---------------------------------------------------------------------- */

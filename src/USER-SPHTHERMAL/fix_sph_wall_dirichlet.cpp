@@ -19,10 +19,10 @@
 #include "force.h"
 #include "modify.h"
 #include "neigh_list.h"
-#include "neigh_request.h"
 #include "neighbor.h"
 #include "pair.h"
 #include "sph_checks.h"
+#include "sph_compat.h"
 #include "sph_kernels.h"
 
 #include <cmath>
@@ -65,15 +65,10 @@ void FixSPHWallDirichlet::init()
   SPHCheck::atom_state(lmp, "Fix sph/wall/dirichlet", groupbit, SPHCheck::CV);
 
   dummy_groupbit = 0;
-  for (int ifix = 0; ifix < modify->nfix; ifix++)
-    if (strcmp(modify->fix[ifix]->style, "sph/wall/dirichlet") == 0)
-      dummy_groupbit |= modify->fix[ifix]->groupbit;
+  for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/dirichlet"))
+    dummy_groupbit |= wall->groupbit;
 
-  int irequest = neighbor->request(this, instance_me);
-  neighbor->requests[irequest]->pair = 0;
-  neighbor->requests[irequest]->fix = 1;
-  neighbor->requests[irequest]->half = 0;
-  neighbor->requests[irequest]->full = 1;
+  SPHCompat::request_full_list(neighbor, this, instance_me);
 }
 
 void FixSPHWallDirichlet::init_list(int /*id*/, NeighList *ptr)
@@ -118,7 +113,7 @@ void FixSPHWallDirichlet::pre_force(int /*vflag*/)
     const double t_dummy = (weight > 0.0) ? 2.0 * t_wall - weighted_t / weight : t_wall;
     esph[i] = cv[i] * t_dummy;
   }
-  comm->forward_comm_fix(this);
+  SPHCompat::forward_comm(comm, this);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -19,6 +19,7 @@
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "sph_checks.h"
+#include "sph_compat.h"
 #include "sph_conduction.h"
 #include "update.h"
 
@@ -90,7 +91,7 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
   }
 
   if (relax_wanted) {
-    if (force->newton_pair) comm->reverse_comm_pair(this);
+    if (force->newton_pair) SPHCompat::reverse_comm(comm, this);
     const double *const cv = atom->cv;
     for (int i = 0; i < atom->nlocal; i++) relax_rate[i] /= cv[i];
   }
@@ -364,16 +365,15 @@ void PairSPHClearyHeat::init_style()
                        SPHCheck::RHO | SPHCheck::CV | SPHCheck::ESPH);
 
   dummy_walls.clear();
-  for (int ifix = 0; ifix < modify->nfix; ifix++)
-    if (strcmp(modify->fix[ifix]->style, "sph/wall/dirichlet") == 0) {
-      int dim;
-      const double *t_wall = (const double *) modify->fix[ifix]->extract("t_wall", dim);
-      dummy_walls.emplace_back(modify->fix[ifix]->groupbit, *t_wall);
-    }
+  for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/dirichlet")) {
+    int dim;
+    const double *t_wall = (const double *) wall->extract("t_wall", dim);
+    dummy_walls.emplace_back(wall->groupbit, *t_wall);
+  }
 
   eta2 = init_kernel();
 
-  neighbor->request(this, instance_me);
+  SPHCompat::request_half_list(neighbor, this, instance_me);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -27,6 +27,7 @@
 #include "neighbor.h"
 #include "sph_body_force.h"
 #include "sph_checks.h"
+#include "sph_compat.h"
 #include "sph_flow.h"
 #include "update.h"
 
@@ -70,7 +71,7 @@ void PairSPHHarmonicVisc::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   // fix sph sets vest = v on owned atoms at setup without updating their
   // ghosts: refresh them, or results depend on newton and the rank count
-  if (update->setupflag) comm->forward_comm_pair(this);
+  if (update->setupflag) SPHCompat::forward_comm(comm, this);
   update_atom_state();
   if (update->setupflag) check_neighbours();
   // fix gravity may vary its acceleration in time
@@ -424,11 +425,10 @@ void PairSPHHarmonicVisc::init_style()
   // the walls first: a wall type without an equation of state is a solid
   wall_groupbit = 0;
   solid_walls.clear();
-  for (int ifix = 0; ifix < modify->nfix; ifix++)
-    if (strcmp(modify->fix[ifix]->style, "sph/wall/adami") == 0) {
-      wall_groupbit |= modify->fix[ifix]->groupbit;
-      solid_walls.push_back((FixSPHWallAdami *) modify->fix[ifix]);
-    }
+  for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/adami")) {
+    wall_groupbit |= wall->groupbit;
+    solid_walls.push_back((FixSPHWallAdami *) wall);
+  }
   // every particle that is not such a wall needs its fluid's properties
   tagint bad_tag = MAXTAGINT;
   int bad_type = 0, bad_missing = 0;
@@ -481,7 +481,7 @@ void PairSPHHarmonicVisc::init_style()
 
   eta2 = init_kernel();
 
-  neighbor->request(this, instance_me);
+  SPHCompat::request_half_list(neighbor, this, instance_me);
 }
 
 double PairSPHHarmonicVisc::init_one(int, int)

@@ -19,6 +19,7 @@
 #include "memory.h"
 #include "sph_body_force.h"
 #include "sph_checks.h"
+#include "sph_compat.h"
 #include "sph_eos.h"
 #include "variable.h"
 
@@ -82,12 +83,7 @@ void SPHSet::command(int narg, char **arg)
       bool move = true;
       if (iarg < narg && strcmp(arg[iarg], "move") == 0) {
         if (iarg + 1 >= narg) error->all(FLERR, "Illegal {} command: missing value after 'move'", cmd);
-        if (strcmp(arg[iarg + 1], "yes") == 0)
-          move = true;
-        else if (strcmp(arg[iarg + 1], "no") == 0)
-          move = false;
-        else
-          error->all(FLERR, "Illegal {} command: move {} must be yes or no", cmd, arg[iarg + 1]);
+        move = SPHCompat::yes_no(error, FLERR, cmd, "move", arg[iarg + 1]);
         iarg += 2;
       }
       set_hydrostatic(level, move);
