@@ -21,19 +21,27 @@ Cases (each one LAMMPS invocation running every code in turn, `clear` and
 
 Every code uses the same positions, spacing, kernel (the quintic spline
 with h = dx, support 3 dx: RHEO's `quintic`, this package's `quintic`),
-timestep and end time. For each case and code: the largest error over the
-output times (% of the temperature jump or amplitude), the relative change
-of the thermal energy sum(m e) = sum(m cv T) over the run (the ends of the
-slabs are adiabatic and the flow box periodic, so it should stay), and the
-cost: LAMMPS's "Loop time" / (atoms x steps), serial (1 MPI rank,
-OMP_NUM_THREADS=1), the fastest of --repeat runs of the whole case.
+timestep and end time; a few extra rows show other settings of either code
+(this package's cubic spline; RHEO's RK1 kernel, its harmonic/means, kappa
+typed as k, and a per-type scaling of cv that makes it conserve energy
+between materials; see RHEO_NOTES.md). For each case and code: the largest
+error over the output times (% of the temperature jump or amplitude), the
+relative change of the thermal energy sum(m e) = sum(m cv T) over the run
+(the ends of the slabs are adiabatic and the flow box periodic, so it
+should stay), and the cost: LAMMPS's "Loop time" / (atoms x steps), serial
+(1 MPI rank, OMP_NUM_THREADS=1). Each case runs once with every row, then
+--repeat - 1 more times with the main rows (the first of each code); the
+cost is the fastest of these runs.
 
-Writes results.md and results.rst next to this script (tables), and the
-LAMMPS inputs, logs and dumps under --out. Exits non-zero when a run fails
-or an error is not finite; with --quick (coarse, well under a minute) also
-when a checked error is above its bound, so it serves as a smoke test.
+Writes results.md and results.rst next to this script (with --quick: in
+--out), and the LAMMPS inputs, logs and dumps under --out. Exits non-zero
+when a run fails or a result is not finite; with --quick (coarse, about
+40 s) also when an error is above its row's bound or a row that
+should conserve energy does not (to 1e-10), so it serves as a smoke test.
+The full run takes about 3 minutes on 2 cores.
 
   /usr/bin/python3 bench/rheo/run_bench.py [--quick] [--repeat N] [--lmp ...] [--plugin ...] [--out DIR]
+                                           [--only erf,ratio,steelwater,flow]
 """
 
 import argparse
@@ -60,17 +68,20 @@ FV_CELLS = {False: 400, True: 200}    # finite-volume cells (full, --quick)
 # ---------------------------------------------------------------- variants
 
 def ours(label, kernel="quintic", hdx=1.0, eta=0.0, bound=5.0, timed=True):
-    """This package's styles; the kernel support is q_max h. timed: run
+    """This package's styles; the kernel support is q_max h. bound: the
+    largest error (%) --quick accepts (None: not checked); timed: run
     --repeat times (else once: a variant for its accuracy)."""
     qmax = {"lucy": 1, "cubic": 2, "wendland": 2, "quintic": 3}[kernel]
-    return {"code": "ours", "label": label, "bound": bound, "timed": timed,
+    return {"code": "ours", "label": label, "bound": bound, "timed": timed, "conserves": True,
             "vars": {"kernel": kernel, "qmax": qmax, "hdx": hdx, "eta": eta}}
 
 
-def rheo(label, kernel="quintic", zmin=0, mean="arithmetic", kappa="examples", bound=5.0, timed=True):
+def rheo(label, kernel="quintic", zmin=0, mean="arithmetic", kappa="examples", bound=5.0, timed=True,
+         conserves=True):
     """RHEO: pair rheo + fix rheo (thermal) + rheo/pressure + rheo/viscosity
-    + rheo/thermal; support (cutoff) 3 dx."""
-    return {"code": "rheo", "label": label, "bound": bound, "timed": timed,
+    + rheo/thermal; support (cutoff) 3 dx. conserves: --quick checks that
+    sum(m cv T) stays to 1e-10."""
+    return {"code": "rheo", "label": label, "bound": bound, "timed": timed, "conserves": conserves,
             "vars": {"rheo_kernel": kernel, "zmin": zmin, "rheo_mean": mean,
                      "kappa_units": kappa}}
 
@@ -93,7 +104,7 @@ def slab_case(name, quick):
                          kernel="cubic", hdx=1.3, eta=0.1, timed=False),
                     rheo("RHEO pair rheo, quintic, kappa = k rho0 / m"),
                     rheo("RHEO pair rheo, RK1 (zmin 8), kappa = k rho0 / m", kernel="RK1", zmin=8, timed=False),
-                    rheo("RHEO pair rheo, quintic, kappa = k (the doc's 'conductivity'; not checked)",
+                    rheo("RHEO pair rheo, quintic, kappa = k (the doc's 'conductivity'; error not checked)",
                          kappa="doc", bound=None, timed=False)]
         matfile, mats = "none", ("none", "none")
     elif name == "ratio":
@@ -119,11 +130,17 @@ def slab_case(name, quick):
         dt = t1 / nout
         nt1 = 4 if quick and name == "steelwater" else 10
         nsteps = nt1 * nout
+        # RHEO's known errors with two densities (RHEO_NOTES.md): 16 % (ratio) and 45-50 %
+        # (steel/water) at both resolutions; the bounds catch a change, not the method
+        bad = 25.0 if name == "ratio" else 60.0
         variants = [ours("USER-SPHTHERMAL sph/cleary/heat, quintic, eta 0 (harmonic mean)"),
                     rheo("RHEO pair rheo, quintic, kappa = k rho0 / m (arithmetic mean, the default)",
-                         bound=None),
+                         bound=bad, conserves=False),
                     rheo("RHEO pair rheo, quintic, kappa = k rho0 / m, harmonic/means", mean="harmonic",
-                         bound=None, timed=False)]
+                         bound=bad, timed=False, conserves=False),
+                    rheo("RHEO pair rheo, quintic, harmonic/means, cv and kappa per type scaled by m / m1 "
+                         "(conserves energy)", mean="harmonic", kappa="massweighted",
+                         bound=5.0 if name == "ratio" else 40.0, timed=False)]
         if name == "ratio":
             title = (f"two materials (Cleary 1998, section 3.2), {nx} x {nx // 4}, k = 1 | 3, "
                      f"rho = 1000 | 500, cv = 1, T = 0 | 1, dt = {dt:.4g} s, to {nt1} t1 = {nt1 * t1:g} s; "
@@ -275,6 +292,20 @@ def analyse(case, pid, workdir, refs):
     return out
 
 
+def largest_difference(case, workdir):
+    """Largest |T| difference, over particles and output times, between the
+    first USER-SPHTHERMAL and the first RHEO variant (% of the scale)."""
+    pids = {}
+    for i, var in enumerate(case["variants"]):
+        pids.setdefault(var["code"], part_id(var, i))
+    if len(pids) < 2:
+        return None
+    a, b = (read_frames(os.path.join(workdir, pids[c] + ".dump")) for c in ("ours", "rheo"))
+    col = {"ours": "c_T", "rheo": "v_T"}
+    return 100.0 * max(np.abs(fa[1][col["ours"]] - fb[1][col["rheo"]]).max()
+                       for fa, fb in zip(a, b)) / abs(case["scale"])
+
+
 # ----------------------------------------------------------------- reports
 
 def fmt_drift(x):
@@ -300,6 +331,9 @@ def write_reports(cases, rows, args, command, elapsed, version):
           "the quintic spline with h = dx (support 3 dx) in both codes unless the row says otherwise.",
           ""]
     for case in cases:
+        if case.get("difference") is not None and case["name"] in ("erf", "flow"):
+            case["title"] += (f"; the first USER-SPHTHERMAL and RHEO rows differ by at most "
+                              f"{case['difference']:.1e} % in T")
         md.append(f"- **{case['name']}**: {case['title']}" + (
             f" (the finite-volume reference, {FV_CELLS[case['quick']]} cells, differs from one on half as many by "
             f"{case['fv_own']:.3f} % of the jump)" if "fv_own" in case and case["name"] in ("ratio", "steelwater")
@@ -316,9 +350,19 @@ def write_reports(cases, rows, args, command, elapsed, version):
     with open(os.path.join(args.results, "results.md"), "w") as f:
         f.write("\n".join(md))
 
-    rst = [".. list-table:: USER-SPHTHERMAL against RHEO (LAMMPS 4Feb2025), serial, "
-           f"written by ``{command}``",
-           "   :header-rows: 1", "",
+    rst = [f"Written by ``{command}`` ({version}, serial: 1 MPI rank, OMP_NUM_THREADS=1). "
+           "Max error: largest over all particles and output times, in % of the temperature jump "
+           "(slabs) or of the initial amplitude (flow). Energy drift: relative change of the thermal "
+           "energy :math:`\\sum m c_v T` over the run (it should not change: adiabatic slab ends, "
+           "periodic flow box); drift / heat moved: that change over the heat the colder half took "
+           "up. Cost: LAMMPS's loop time per particle and step, the fastest of "
+           f"{args.repeat} run{'s' if args.repeat > 1 else ''} ('1 run': a variant run once for its "
+           "accuracy); ratio: cost over the USER-SPHTHERMAL quintic row of the case. Both codes use the "
+           "quintic spline with h = dx (support 3 dx) unless the row says otherwise. Cases:", ""]
+    for case in cases:
+        rst.append(f"* *{case['name']}*: {case['title']}")
+    rst += ["", ".. list-table:: USER-SPHTHERMAL against LAMMPS's RHEO package",
+            "   :header-rows: 1", "",
            "   * - case", "     - code", "     - max error (%)", "     - energy drift",
            "     - drift / heat moved", "     - cost (us per particle-step)", "     - ratio"]
     for r in rows:
@@ -385,15 +429,23 @@ def main():
             if not math.isfinite(res["error"]) or not math.isfinite(res["drift"]):
                 status = "  FAIL: not finite"
                 failures.append(f"{case['name']} / {var['label']}: not finite")
-            elif var["bound"] is not None and res["error"] > var["bound"]:
-                status = f"  {'FAIL' if a.quick else 'WARNING'}: above the bound {var['bound']} %"
-                if a.quick:
-                    failures.append(f"{case['name']} / {var['label']}: error {res['error']:.3g} % "
-                                    f"> {var['bound']} %")
+            else:
+                bad = []
+                if var["bound"] is not None and res["error"] > var["bound"]:
+                    bad.append(f"error above the bound {var['bound']} %")
+                if var["conserves"] and abs(res["drift"]) > 1e-10:
+                    bad.append("energy not conserved to 1e-10")
+                if bad:
+                    status = f"  {'FAIL' if a.quick else 'WARNING'}: " + ", ".join(bad)
+                    if a.quick:
+                        failures.append(f"{case['name']} / {var['label']}: " + ", ".join(bad))
             print(f"{case['name']:10s} {var['label'][:70]:70s} error {res['error']:8.4g} %  "
                   f"drift {fmt_drift(res['drift']):>8s}  {cost * 1e6:7.3f} us  x{cost / base:5.2f}{status}",
                   flush=True)
-        print(f"{case['name']}: {time.time() - t0:.1f} s", flush=True)
+        case["difference"] = largest_difference(case, workdir)
+        print(f"{case['name']}: {time.time() - t0:.1f} s" + (
+            "" if case["difference"] is None else f"; largest T difference between the first "
+            f"USER-SPHTHERMAL and RHEO rows {case['difference']:.2e} %"), flush=True)
 
     elapsed = time.time() - t_start
     if rows:
