@@ -426,10 +426,11 @@ double FixSPHDtReset::compute_vector(int n)
 }
 
 /* ----------------------------------------------------------------------
-   LAMMPS (29Sep2021) writes ntimestep and dt to a restart file but not the
+   LAMMPS 29Sep2021 writes ntimestep and dt to a restart file but not the
    elapsed time, which read_restart then starts at 0; with a variable dt it
    cannot be recomputed as step * dt, so the fix keeps it (and the dt of
-   that moment, for information: the next run's setup recomputes dt)
+   that moment, for information: the next run's setup recomputes dt).
+   LAMMPS 4Feb2025 keeps it too (atime, atimestep); both agree
 ------------------------------------------------------------------------- */
 
 void FixSPHDtReset::write_restart(FILE *fp)

@@ -343,7 +343,8 @@ def cmd_restart(a):
     check(second[0]["step"] == first[-1]["step"] and second[0]["step"] > 0,
           f"the restarted run starts at step {second[0]['step']}")
     check_time(first, "before write_restart")
-    # LAMMPS 29Sep2021 does not store the elapsed time: without the fix it restarts at 0
+    # LAMMPS 29Sep2021 does not store the elapsed time (without the fix it restarts
+    # at 0); 4Feb2025 does: on both the time must go on
     check_time(second, "after read_restart", start=first[-1]["time"])
     dts = [row["dt"] for row in first + second]
     check(len(set(dts)) > 5, f"dt changes over the runs ({len(set(dts))} values)")
