@@ -12,11 +12,11 @@
 set -euo pipefail
 release=${1:?usage: fetch-lammps.sh 4Feb2025|29Sep2021 DEST}
 dest=${2:?usage: fetch-lammps.sh 4Feb2025|29Sep2021 DEST}
-case $release in
-  4Feb2025) debian_version=20250204 version_text='4 Feb 2025' suite=trixie ;;
-  29Sep2021) debian_version=20220106 version_text='29 Sep 2021' suite=bookworm ;;
-  *) echo "fetch-lammps: unknown LAMMPS release '$release' (4Feb2025 or 29Sep2021)" >&2; exit 1 ;;
-esac
+. "$(dirname "$0")/lammps-releases.sh"
+lammps_release "$release" || {
+  echo "fetch-lammps: unknown LAMMPS release '$release' ($lammps_releases)" >&2
+  exit 1
+}
 if [ -f "$dest/src/version.h" ] && grep -q "$version_text" "$dest/src/version.h"; then
   exit 0
 fi

@@ -69,20 +69,20 @@ if [ -z "$uri" ]; then
 fi
 [ -n "$key" ] || key=/usr/share/keyrings/debian-archive-keyring.gpg
 
-# cmake/fetch-lammps.sh needs the source of lammps from both suites
-has_src() {
-  local prefix
-  case $1 in bookworm) prefix=20220106 ;; trixie) prefix=20250204 ;; esac
-  # no grep -q on the pipe: with pipefail, apt-cache's SIGPIPE would fail it
-  apt-cache showsrc lammps 2>/dev/null | grep -c "^Version: $prefix" >/dev/null
+# cmake/fetch-lammps.sh needs the source package of each release
+. "$(dirname "$0")/../cmake/lammps-releases.sh"
+# no grep -q on the pipe: with pipefail, apt-cache's SIGPIPE would fail it
+has_source() {
+  apt-cache showsrc lammps 2>/dev/null | grep -c "^Version: $debian_version" >/dev/null
 }
 need_update=0
-for suite in bookworm trixie; do
-  has_src "$suite" && continue
+for release in $lammps_releases; do
+  lammps_release "$release"
+  has_source && continue
   entry="Types: deb-src\nURIs: $uri\nSuites: $suite\nComponents: main\nSigned-By: $key\n"
   file=/etc/apt/sources.list.d/$suite-src.sources
   if [ "$(id -u)" -ne 0 ]; then
-    echo "bootstrap: no source entry for $suite; add one (as root) with:" >&2
+    echo "bootstrap: no source entry for $suite (LAMMPS $release); add one (as root) with:" >&2
     echo "  printf '$entry' > $file && apt-get update" >&2
     exit 1
   fi
@@ -92,8 +92,9 @@ for suite in bookworm trixie; do
 done
 if [ $need_update = 1 ]; then
   apt-get update -q
-  for suite in bookworm trixie; do
-    has_src "$suite" || { echo "bootstrap: still no source of lammps for $suite after apt-get update" >&2; exit 1; }
+  for release in $lammps_releases; do
+    lammps_release "$release"
+    has_source || { echo "bootstrap: still no source of lammps for $suite (LAMMPS $release) after apt-get update" >&2; exit 1; }
   done
 fi
 echo "bootstrap: prerequisites present"

@@ -4,14 +4,14 @@
 #   build    the build directory of that release: build (4Feb2025) or
 #            build-29Sep2021, each with its own LAMMPS, plugin and tests
 #   args     the remaining arguments
-release=4Feb2025
+. "$(dirname "${BASH_SOURCE[0]}")/../cmake/lammps-releases.sh"
+release=${lammps_releases%% *}
 if [ "${1:-}" = "--lammps" ]; then
-  release=${2:?--lammps needs a release: 4Feb2025 or 29Sep2021}
+  release=${2:?--lammps needs a release: $lammps_releases}
   shift 2
 fi
-case $release in
-  4Feb2025) build=build ;;
-  29Sep2021) build=build-29Sep2021 ;;
-  *) echo "$(basename "$0"): unknown LAMMPS release '$release' (4Feb2025 or 29Sep2021)" >&2; exit 1 ;;
-esac
+lammps_release "$release" || {
+  echo "$(basename "$0"): unknown LAMMPS release '$release' ($lammps_releases)" >&2
+  exit 1
+}
 args=("$@")

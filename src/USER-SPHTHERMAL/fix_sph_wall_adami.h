@@ -32,6 +32,7 @@ class FixSPHWallAdami : public Fix {
   // density, mass and heat capacity for conduction; the flow sees it with
   // the pressure, density and viscosity extrapolated from the fluid, for
   // owned and ghost atoms, valid after pre_force
+  int has_solids() const { return any_solid; }
   int solid(int i) const { return solid_type[atom->type[i]]; }
   double pressure(int i) const { return solid_state[i][0]; }
   double fluid_density(int i) const { return solid_state[i][1]; }

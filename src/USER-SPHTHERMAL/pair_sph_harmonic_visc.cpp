@@ -174,6 +174,10 @@ void PairSPHHarmonicVisc::update_atom_state()
     memcpy(mass_of, atom->rmass, nall * sizeof(double));
   else
     for (int i = 0; i < nall; i++) mass_of[i] = atom->mass[type[i]];
+  // the walls that hold solid particles (known after the walls' init)
+  std::vector<FixSPHWallAdami *> solid_walls;
+  for (auto wall : adami_walls)
+    if (wall->has_solids()) solid_walls.push_back(wall);
   for (int i = 0; i < nall; i++) {
     FixSPHWallAdami *solid = nullptr;
     for (auto wall : solid_walls)
@@ -424,10 +428,10 @@ void PairSPHHarmonicVisc::init_style()
   materials = FixSPHMaterials::find(lmp, "Pair style sph/harmonic/visc");
   // the walls first: a wall type without an equation of state is a solid
   wall_groupbit = 0;
-  solid_walls.clear();
+  adami_walls.clear();
   for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/adami")) {
     wall_groupbit |= wall->groupbit;
-    solid_walls.push_back((FixSPHWallAdami *) wall);
+    adami_walls.push_back((FixSPHWallAdami *) wall);
   }
   // every particle that is not such a wall needs its fluid's properties
   tagint bad_tag = MAXTAGINT;

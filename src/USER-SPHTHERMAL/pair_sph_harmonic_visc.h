@@ -51,8 +51,9 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   class FixSPHMaterials *materials;
   int viscosity_varies;    // 1 when some viscosity depends on T
   int wall_groupbit;       // particles of every fix sph/wall/adami (no density diffusion)
-  // walls of fix sph/wall/adami; those with solid particles (own density)
-  std::vector<class FixSPHWallAdami *> solid_walls;
+  // every fix sph/wall/adami; those with solid particles (own density) give
+  // the flow the fluid's state at the wall
+  std::vector<class FixSPHWallAdami *> adami_walls;
   // per atom (owned and ghost), refreshed every step: what the flow sees
   // (a solid wall particle: the fluid's pressure, density and viscosity at
   // the wall, its own volume)
