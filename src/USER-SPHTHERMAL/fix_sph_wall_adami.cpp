@@ -6,7 +6,8 @@
    pressure and no-slip velocity extrapolated from the fluid (Adami, Hu &
    Adams 2012; Ng et al. 2020, eqs 8-9, with the body-force term of Adami
    kept):
-     P_w = (sum_f P_f W_wf + (g - a_w) . sum_f rho_f r_wf W_wf) / sum_f W_wf
+     P_w = (sum_f P_f W_wf + sum_f rho_f (g_f - a_w) . r_wf W_wf) / sum_f W_wf
+   (g_f: the body acceleration of fluid particle f, with its own buoyancy)
      rho_w from P_w by the wall type's equation of state
      vest_w = 2 v_w - sum_f v_f W_wf / sum_f W_wf   (v_w: the wall's own v)
    over the fluid neighbours f (particles of no sph/wall/adami fix).
@@ -26,6 +27,7 @@
 #include "pair.h"
 #include "memory.h"
 #include "sph_body_force.h"
+#include "sph_buoyancy.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
 #include "sph_kernels.h"
@@ -41,7 +43,7 @@ static const char cmd[] = "fix sph/wall/adami";
 /* ---------------------------------------------------------------------- */
 
 FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), body_given(0), body_force(nullptr), wall_groupbit(0), kernel_kind(0),
+    Fix(lmp, narg, arg), body_given(0), body_force(nullptr), buoyancy(nullptr), wall_groupbit(0), kernel_kind(0),
     cutoff(0.0), materials(nullptr), list(nullptr), solid_type(nullptr), fluid_weight(nullptr), any_solid(0),
     solid_state(nullptr), nmax(0)
 {
@@ -107,6 +109,8 @@ void FixSPHWallAdami::init()
   if (any_solid) SPHCheck::atom_state(lmp, "Fix sph/wall/adami", groupbit, SPHCheck::RHO);
   // without 'body', the fluid's body force is the run's (a resting wall)
   body_force = body_given ? nullptr : SPHBodyForce::find(lmp, "Fix sph/wall/adami");
+  // each fluid particle's own buoyancy, which varies with its temperature
+  buoyancy = SPHBodyForce::find_buoyancy(lmp);
 
   wall_groupbit = 0;
   for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/adami"))
@@ -173,7 +177,14 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
       const double w = sphk_w(&kernel, sqrt(rsq));
       weight += w;
       weighted_p += w * sphe_pressure(materials->eos(type[j]), rho[j]);
-      hydrostatic += w * rho[j] * (body[0] * dx + body[1] * dy + body[2] * dz);
+      double accel[3] = {body[0], body[1], body[2]};
+      if (buoyancy && (mask[j] & buoyancy->groupbit)) {
+        double a[3];
+        sphb_acceleration(buoyancy->gravity, buoyancy->beta[type[j]], esph[j] / cv[j],
+                          buoyancy->t0, a);
+        for (int k = 0; k < 3; k++) accel[k] += a[k];
+      }
+      hydrostatic += w * rho[j] * (accel[0] * dx + accel[1] * dy + accel[2] * dz);
       for (int k = 0; k < 3; k++) weighted_v[k] += w * v[j][k];
       if (is_solid) {
         fluid_weight[type[j]] += w;

@@ -14,6 +14,7 @@ FixStyle(sph/wall/adami,FixSPHWallAdami);
 
 #include "atom.h"
 #include "fix.h"
+#include "sph_body_force.h"
 
 namespace LAMMPS_NS {
 
@@ -44,6 +45,7 @@ class FixSPHWallAdami : public Fix {
   double body[3];            // body acceleration of the fluid minus that of the wall
   int body_given;            // 1: 'body' in the command; 0: the run's body force
   const double *body_force;  // the run's body force (fix gravity), nullptr when none
+  const SPHBodyForce::Buoyancy *buoyancy;    // fix sph/boussinesq, nullptr when none
   int wall_groupbit;      // particles of every sph/wall/adami fix
   int kernel_kind;
   double cutoff;

@@ -3,11 +3,16 @@
    This software is distributed under the GNU General Public License.
 
    fix sph/wall/dirichlet: wall (dummy) particles whose temperature is
-   extrapolated so that the medium sees T_wall on the wall surface
-   (Ng et al. 2020, eq 9 applied to T, after Adami et al. 2012):
+   extrapolated so that the medium sees T_wall on the wall surface, and
+   the heat they exchange with it (Cleary 1998, eq 10). Either
      T_b = 2 T_wall - sum_f T_f W_bf / sum_f W_bf
    over the neighbours f of dummy particle b that are not dummies of any
-   sph/wall/dirichlet fix (so walls held at different T meet at corners).
+   sph/wall/dirichlet fix (Ng et al. 2020, eq 9 applied to T, after Adami
+   et al. 2012; so walls held at different T meet at corners), or, with a
+   'surface', through the ghost point g of b mirrored across it (the mDBC
+   construction of Reece et al. 2024, eqs 18-19, sph_mirror.h):
+     T_b = 2 T_wall - T(g)
+   which puts T_wall on the surface for every linear temperature field.
 ------------------------------------------------------------------------- */
 
 #include "fix_sph_wall_dirichlet.h"
@@ -23,7 +28,9 @@
 #include "pair.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
+#include "sph_interpolation.h"
 #include "sph_kernels.h"
+#include "sph_mirror.h"
 
 #include <cmath>
 #include <cstring>
@@ -34,20 +41,41 @@ using namespace FixConst;
 /* ---------------------------------------------------------------------- */
 
 FixSPHWallDirichlet::FixSPHWallDirichlet(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), dummy_groupbit(0), kernel_kind(0), cutoff(0.0), list(nullptr)
+    FixSPHWallTally(lmp, narg, arg), dummy_groupbit(0), kernel_kind(0), cutoff(0.0),
+    list(nullptr), mirror(nullptr)
 {
-  if (narg < 4) error->all(FLERR, "Illegal fix sph/wall/dirichlet command: expected <T>");
-  if (narg > 4)
-    error->all(FLERR, "Illegal fix sph/wall/dirichlet command: unknown keyword '{}'", arg[4]);
+  static const char cmd[] = "fix sph/wall/dirichlet";
+  if (narg < 4) error->all(FLERR, "Illegal {} command: expected <T>", cmd);
   if (!atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Fix sph/wall/dirichlet requires atom style sph (esph, desph, cv)");
   t_wall = utils::numeric(FLERR, arg[3], false, lmp);
+  int iarg = 4;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "surface") == 0) {
+      delete mirror;
+      mirror = new SPHMirror(lmp, cmd);
+      iarg += mirror->parse(narg, arg, iarg);
+    } else if (strcmp(arg[iarg], "spacing") == 0) {
+      if (iarg + 1 >= narg) error->all(FLERR, "Illegal {} command: missing value after 'spacing'", cmd);
+      spacing = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (spacing <= 0.0)
+        error->all(FLERR, "Illegal {} command: spacing {} must be > 0", cmd, arg[iarg + 1]);
+      iarg += 2;
+    } else
+      error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
+  }
   comm_forward = 1;
+  tally_arrays();
+}
+
+FixSPHWallDirichlet::~FixSPHWallDirichlet()
+{
+  delete mirror;
 }
 
 int FixSPHWallDirichlet::setmask()
 {
-  return PRE_FORCE;
+  return PRE_FORCE | POST_FORCE;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -60,15 +88,22 @@ void FixSPHWallDirichlet::init()
   int dim;
   kernel_kind = *(int *) pair->extract("kernel_kind", dim);
   cutoff = *(double *) pair->extract("cutoff", dim);
-  SPHCheck::group_of_kind(
-      lmp, this, {"sph/wall/isothermal", "sph/wall/dirichlet", "sph/surface/flux"}, false, false);
+  SPHCheck::group_of_kind(lmp, this,
+                          {"sph/wall/isothermal", "sph/wall/dirichlet", "sph/wall/adiabatic",
+                           "sph/surface/flux"},
+                          false, false);
   SPHCheck::atom_state(lmp, "Fix sph/wall/dirichlet", groupbit, SPHCheck::CV);
+  reset_dt();
+  if (mirror) {
+    SPHCheck::atom_state(lmp, "Fix sph/wall/dirichlet", 0, SPHCheck::RHO | SPHCheck::CV);
+    mirror->init(groupbit, kernel_kind, cutoff);
+  }
 
   dummy_groupbit = 0;
   for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/dirichlet"))
     dummy_groupbit |= wall->groupbit;
 
-  SPHCompat::request_full_list(neighbor, this, instance_me);
+  if (!mirror) SPHCompat::request_full_list(neighbor, this, instance_me);
 }
 
 void FixSPHWallDirichlet::init_list(int /*id*/, NeighList *ptr)
@@ -87,6 +122,26 @@ void FixSPHWallDirichlet::setup_pre_force(int vflag)
 ------------------------------------------------------------------------- */
 
 void FixSPHWallDirichlet::pre_force(int /*vflag*/)
+{
+  if (mirror)
+    dummies_mirrored();
+  else
+    dummies_shepard();
+  SPHCompat::forward_comm(comm, this);
+}
+
+void FixSPHWallDirichlet::dummies_mirrored()
+{
+  mirror->interpolate(t_ghost, ghost_how);
+  const double *const cv = atom->cv;
+  const int *const mask = atom->mask;
+  double *const esph = atom->esph;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (mask[i] & groupbit)
+      esph[i] = cv[i] * ((ghost_how[i] != SPHI_NONE) ? 2.0 * t_wall - t_ghost[i] : t_wall);
+}
+
+void FixSPHWallDirichlet::dummies_shepard()
 {
   const double *const *const x = atom->x;
   const double *const cv = atom->cv;
@@ -113,7 +168,21 @@ void FixSPHWallDirichlet::pre_force(int /*vflag*/)
     const double t_dummy = (weight > 0.0) ? 2.0 * t_wall - weighted_t / weight : t_wall;
     esph[i] = cv[i] * t_dummy;
   }
-  SPHCompat::forward_comm(comm, this);
+}
+
+/* ----------------------------------------------------------------------
+   the heat the dummies exchange with the medium; their esph is set anew
+   before each force evaluation, so their desph is left to the integrator
+------------------------------------------------------------------------- */
+
+void FixSPHWallDirichlet::setup(int /*vflag*/)
+{
+  tally(1, 0);
+}
+
+void FixSPHWallDirichlet::post_force(int /*vflag*/)
+{
+  tally(0, 0);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -12,18 +12,23 @@ FixStyle(sph/wall/dirichlet,FixSPHWallDirichlet);
 #ifndef LMP_FIX_SPH_WALL_DIRICHLET_H
 #define LMP_FIX_SPH_WALL_DIRICHLET_H
 
-#include "fix.h"
+#include "fix_sph_wall_tally.h"
+
+#include <vector>
 
 namespace LAMMPS_NS {
 
-class FixSPHWallDirichlet : public Fix {
+class FixSPHWallDirichlet : public FixSPHWallTally {
  public:
   FixSPHWallDirichlet(class LAMMPS *, int, char **);
+  ~FixSPHWallDirichlet() override;
   int setmask() override;
   void init() override;
   void init_list(int, class NeighList *) override;
   void setup_pre_force(int) override;
   void pre_force(int) override;
+  void setup(int) override;
+  void post_force(int) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
   void *extract(const char *, int &) override;
@@ -34,6 +39,12 @@ class FixSPHWallDirichlet : public Fix {
   int kernel_kind;
   double cutoff;
   class NeighList *list;
+  class SPHMirror *mirror;    // with 'surface': the ghost points; nullptr: Shepard
+  std::vector<double> t_ghost;
+  std::vector<int> ghost_how;
+
+  void dummies_shepard();
+  void dummies_mirrored();
 };
 
 }    // namespace LAMMPS_NS

@@ -10,15 +10,9 @@
 #include "fix_sph_wall_isothermal.h"
 
 #include "atom.h"
-#include "comm.h"
-#include "domain.h"
 #include "error.h"
-#include "force.h"
-#include "memory.h"
 #include "sph_checks.h"
-#include "update.h"
 
-#include <cmath>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -27,8 +21,7 @@ using namespace FixConst;
 /* ---------------------------------------------------------------------- */
 
 FixSPHWallIsothermal::FixSPHWallIsothermal(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), spacing(0.0), rate_previous(0.0), rate(0.0), energy(0.0), dt_half(0.0),
-    wall(nullptr)
+    FixSPHWallTally(lmp, narg, arg)
 {
   if (narg < 4) error->all(FLERR, "Illegal fix sph/wall/isothermal command: expected <T>");
   if (!atom->esph_flag || !atom->cv_flag)
@@ -49,33 +42,7 @@ FixSPHWallIsothermal::FixSPHWallIsothermal(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, "Illegal fix sph/wall/isothermal command: unknown keyword '{}'", arg[iarg]);
   }
 
-  scalar_flag = 1;
-  vector_flag = 1;
-  size_vector = 2;
-  extscalar = 1;
-  extvector = 1;
-  global_freq = 1;
-  peratom_flag = 1;
-  size_peratom_cols = (spacing > 0.0) ? 3 : 2;
-  peratom_freq = 1;
-  restart_global = 1;
-  restart_peratom = 1;
-  energy_global_flag = 0;
-
-  grow_arrays(atom->nmax);
-  atom->add_callback(Atom::GROW);
-  atom->add_callback(Atom::RESTART);
-  for (int i = 0; i < atom->nlocal; i++)
-    for (int k = 0; k < size_peratom_cols; k++) wall[i][k] = 0.0;
-}
-
-/* ---------------------------------------------------------------------- */
-
-FixSPHWallIsothermal::~FixSPHWallIsothermal()
-{
-  atom->delete_callback(id, Atom::GROW);
-  atom->delete_callback(id, Atom::RESTART);
-  memory->destroy(wall);
+  tally_arrays();
 }
 
 /* ---------------------------------------------------------------------- */
@@ -87,19 +54,9 @@ int FixSPHWallIsothermal::setmask()
 
 /* ---------------------------------------------------------------------- */
 
-/* ----------------------------------------------------------------------
-   the half-step weight of fix sph and fix sph/stationary (with ftm2v as they
-   have it), renewed when a timestep fix changes dt
-------------------------------------------------------------------------- */
-
-void FixSPHWallIsothermal::reset_dt()
-{
-  dt_half = 0.5 * update->dt * force->ftm2v;
-}
-
 void FixSPHWallIsothermal::init()
 {
-  SPHCheck::group_of_kind(lmp, this, {"sph/wall/isothermal", "sph/wall/dirichlet"}, false, true);
+  SPHCheck::group_of_kind(lmp, this, {"sph/wall/isothermal", "sph/wall/dirichlet", "sph/wall/adiabatic"}, false, true);
   SPHCheck::atom_state(lmp, "Fix sph/wall/isothermal", groupbit, SPHCheck::CV);
   reset_dt();
   // the wall is at its temperature before the first force evaluation
@@ -123,135 +80,15 @@ void FixSPHWallIsothermal::post_force(int /*vflag*/)
 }
 
 /* ----------------------------------------------------------------------
-   The heat rate into wall particle i is m_i desph_i; desph_i is then
-   zeroed so that fix sph or sph/stationary keep esph = cv T_wall.
-   Those integrators apply each rate for half a step twice (at the end of
-   the step that computed it and the start of the next), so the wall's
-   energy grows by dt/2 (rate before + rate now) per step; then the wall's
-   energy plus sum(m esph) of the other particles is constant to round-off.
-   At a run's setup the rates are only recorded.
+   tally the heat the wall took up, then hold its temperature
 ------------------------------------------------------------------------- */
 
 void FixSPHWallIsothermal::hold_and_tally(int first)
 {
+  tally(first, 1);
   const double *const cv = atom->cv;
-  const double *const mass = atom->mass;
-  const double *const rmass = atom->rmass;
-  const int *const type = atom->type;
   const int *const mask = atom->mask;
   double *const esph = atom->esph;
-  double *const desph = atom->desph;
-  const int nlocal = atom->nlocal;
-  const double area = (spacing > 0.0) ? pow(spacing, domain->dimension - 1) : 1.0;
-
-  double rate_local = 0.0;
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    const double rate_i = (rmass ? rmass[i] : mass[type[i]]) * desph[i];
-    if (!first) wall[i][1] += dt_half * (wall[i][0] + rate_i);
-    wall[i][0] = rate_i;
-    if (spacing > 0.0) wall[i][2] = rate_i / area;
-    rate_local += rate_i;
-    desph[i] = 0.0;
-    esph[i] = cv[i] * t_wall;
-  }
-
-  MPI_Allreduce(&rate_local, &rate, 1, MPI_DOUBLE, MPI_SUM, world);
-  if (!first) energy += dt_half * (rate_previous + rate);
-  rate_previous = rate;
-}
-
-/* ----------------------------------------------------------------------
-   scalar: energy taken up by the wall; vector: heat rate into the wall
-   now, energy taken up
-------------------------------------------------------------------------- */
-
-double FixSPHWallIsothermal::compute_scalar()
-{
-  return energy;
-}
-
-double FixSPHWallIsothermal::compute_vector(int n)
-{
-  return (n == 0) ? rate : energy;
-}
-
-/* ---------------------------------------------------------------------- */
-
-void FixSPHWallIsothermal::write_restart(FILE *fp)
-{
-  if (comm->me == 0) {
-    int size = sizeof(double);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(&energy, sizeof(double), 1, fp);
-  }
-}
-
-void FixSPHWallIsothermal::restart(char *buf)
-{
-  energy = ((double *) buf)[0];
-}
-
-/* ---------------------------------------------------------------------- */
-
-void FixSPHWallIsothermal::grow_arrays(int nmax)
-{
-  memory->grow(wall, nmax, size_peratom_cols, "sph/wall/isothermal:wall");
-  array_atom = wall;
-}
-
-void FixSPHWallIsothermal::copy_arrays(int i, int j, int /*delflag*/)
-{
-  for (int k = 0; k < size_peratom_cols; k++) wall[j][k] = wall[i][k];
-}
-
-int FixSPHWallIsothermal::pack_exchange(int i, double *buf)
-{
-  for (int k = 0; k < size_peratom_cols; k++) buf[k] = wall[i][k];
-  return size_peratom_cols;
-}
-
-int FixSPHWallIsothermal::unpack_exchange(int nlocal, double *buf)
-{
-  for (int k = 0; k < size_peratom_cols; k++) wall[nlocal][k] = buf[k];
-  return size_peratom_cols;
-}
-
-/* ----------------------------------------------------------------------
-   per-atom restart: the energy each particle took up (the rates are
-   recomputed at setup)
-------------------------------------------------------------------------- */
-
-int FixSPHWallIsothermal::pack_restart(int i, double *buf)
-{
-  buf[0] = 2;
-  buf[1] = wall[i][1];
-  return 2;
-}
-
-void FixSPHWallIsothermal::unpack_restart(int nlocal, int nth)
-{
-  double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  m++;
-  for (int k = 0; k < size_peratom_cols; k++) wall[nlocal][k] = 0.0;
-  wall[nlocal][1] = extra[nlocal][m];
-}
-
-int FixSPHWallIsothermal::size_restart(int /*nlocal*/)
-{
-  return 2;
-}
-
-int FixSPHWallIsothermal::maxsize_restart()
-{
-  return 2;
-}
-
-/* ---------------------------------------------------------------------- */
-
-double FixSPHWallIsothermal::memory_usage()
-{
-  return (double) atom->nmax * size_peratom_cols * sizeof(double);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (mask[i] & groupbit) esph[i] = cv[i] * t_wall;
 }

@@ -50,3 +50,15 @@ const double *SPHBodyForce::require(LAMMPS *lmp, const char *who, const char *wh
                     who, why);
   return gvec;
 }
+
+/* ---------------------------------------------------------------------- */
+
+const SPHBodyForce::Buoyancy *SPHBodyForce::find_buoyancy(LAMMPS *lmp)
+{
+  for (int i = 0; i < lmp->modify->nfix; i++) {
+    int dim = 0;
+    const auto *buoyancy = (const Buoyancy *) lmp->modify->fix[i]->extract("buoyancy", dim);
+    if (buoyancy) return buoyancy;
+  }
+  return nullptr;
+}

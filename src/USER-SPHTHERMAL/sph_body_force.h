@@ -17,6 +17,15 @@ class LAMMPS;
 // the hydrostatic start of sph/set) reads it here.
 namespace SPHBodyForce {
 
+  // The buoyancy of fix sph/boussinesq: a = -g beta(type) (T - T0) on the
+  // atoms of its group (sph_buoyancy.h), valid for the fix's lifetime.
+  struct Buoyancy {
+    const double *gravity;    // g: the fix's own vector or fix gravity's
+    double t0;                // reference temperature
+    const double *beta;       // expansion coefficient per type (1..ntypes)
+    int groupbit;             // the buoyant atoms
+  };
+
   // the acceleration vector of the body-force fix, valid for the fix's
   // lifetime and updated by it when it varies in time; nullptr when there
   // is none. Several such fixes (e.g. on two groups) must agree: otherwise
@@ -25,6 +34,9 @@ namespace SPHBodyForce {
 
   // the same, as an error naming 'who' and 'why' when there is none
   const double *require(LAMMPS *lmp, const char *who, const char *why);
+
+  // the buoyancy of the run (fix sph/boussinesq), nullptr when none
+  const Buoyancy *find_buoyancy(LAMMPS *lmp);
 
 }    // namespace SPHBodyForce
 }    // namespace LAMMPS_NS

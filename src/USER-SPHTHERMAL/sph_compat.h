@@ -30,12 +30,14 @@
 
 #include "comm.h"
 #include "compute.h"
+#include "domain.h"
 #include "error.h"
 #include "fix.h"
 #include "modify.h"
 #include "neigh_request.h"
 #include "neighbor.h"
 #include "pair.h"
+#include "region.h"
 #include "utils.h"
 #if SPHTHERMAL_LAMMPS_NEW_API
 #include "platform.h"
@@ -119,6 +121,27 @@ namespace SPHCompat {
     comm->reverse_comm(pair);
 #else
     comm->reverse_comm_pair(pair);
+#endif
+  }
+
+  inline void reverse_comm(Comm *comm, Fix *fix)
+  {
+#if SPHTHERMAL_LAMMPS_NEW_API
+    comm->reverse_comm(fix);
+#else
+    comm->reverse_comm_fix(fix);
+#endif
+  }
+
+  // ------------------------------------------------------------ regions
+  // the region of an ID, nullptr when there is none
+  inline Region *find_region(Domain *domain, const std::string &id)
+  {
+#if SPHTHERMAL_LAMMPS_NEW_API
+    return domain->get_region_by_id(id);
+#else
+    const int iregion = domain->find_region(id);
+    return (iregion < 0) ? nullptr : domain->regions[iregion];
 #endif
   }
 

@@ -1,0 +1,194 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   fix sph/boussinesq: buoyancy of a fluid whose density varies with
+   temperature only in the body force (Reece et al. 2024, eq 15):
+     f_i = -m_i g beta_i (T_i - T0)
+   g from the 'gravity' keyword, or the acceleration of fix gravity, which
+   then also adds the weight m g: together g (1 - beta (T - T0)).
+------------------------------------------------------------------------- */
+
+#include "fix_sph_boussinesq.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_sph_materials.h"
+#include "group.h"
+#include "memory.h"
+#include "sph_buoyancy.h"
+#include "sph_checks.h"
+#include "sph_compat.h"
+
+#include <cmath>
+#include <cstring>
+#include <string>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static const char cmd[] = "fix sph/boussinesq";
+
+/* ---------------------------------------------------------------------- */
+
+FixSPHBoussinesq::FixSPHBoussinesq(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), gravity_keyword(0), beta(nullptr), force_summed(0)
+{
+  if (!atom->esph_flag || !atom->cv_flag)
+    error->all(FLERR, "Fix sph/boussinesq requires atom style sph (esph, cv)");
+  if (narg < 4) error->all(FLERR, "Illegal {} command: expected <T0>", cmd);
+  buoyancy.t0 = utils::numeric(FLERR, arg[3], false, lmp);
+  gravity_given[0] = gravity_given[1] = gravity_given[2] = 0.0;
+  int iarg = 4;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "gravity") == 0) {
+      if (iarg + 3 >= narg)
+        error->all(FLERR, "Illegal {} command: 'gravity' needs 3 values (gx gy gz)", cmd);
+      for (int k = 0; k < 3; k++)
+        gravity_given[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
+      gravity_keyword = 1;
+      iarg += 4;
+    } else
+      error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
+  }
+  memory->create(beta, atom->ntypes + 1, "sph/boussinesq:beta");
+  for (int t = 0; t <= atom->ntypes; t++) beta[t] = 0.0;
+  buoyancy.beta = beta;
+  buoyancy.groupbit = groupbit;
+  buoyancy.gravity = gravity_given;
+
+  vector_flag = 1;
+  size_vector = 3;
+  global_freq = 1;
+  extvector = 1;
+  for (int k = 0; k < 3; k++) force_local[k] = force_total[k] = 0.0;
+}
+
+FixSPHBoussinesq::~FixSPHBoussinesq()
+{
+  memory->destroy(beta);
+}
+
+int FixSPHBoussinesq::setmask()
+{
+  return POST_FORCE;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHBoussinesq::init()
+{
+  if (SPHCompat::fixes_of_style(modify, "sph/boussinesq").size() > 1)
+    error->all(FLERR, "Fix sph/boussinesq: only one may be defined (give each type its beta in "
+                      "fix sph/materials instead)");
+
+  // g: the keyword's, or fix gravity's (which then also adds the weight)
+  const double *gvec = SPHBodyForce::find(lmp, "Fix sph/boussinesq");
+  if (gravity_keyword) {
+    if (gvec &&
+        (gvec[0] != gravity_given[0] || gvec[1] != gravity_given[1] || gvec[2] != gravity_given[2]))
+      error->all(FLERR,
+                 "Fix sph/boussinesq: 'gravity {} {} {}' differs from the acceleration of the "
+                 "body-force fix ({} {} {}); give gravity once (drop the keyword to use the fix's)",
+                 gravity_given[0], gravity_given[1], gravity_given[2], gvec[0], gvec[1], gvec[2]);
+    buoyancy.gravity = gravity_given;
+  } else if (gvec) {
+    buoyancy.gravity = gvec;
+  } else
+    error->all(FLERR,
+               "Fix sph/boussinesq needs gravity: give 'gravity gx gy gz' (buoyancy only) or "
+               "define fix gravity (weight and buoyancy)");
+  if (gravity_keyword && gravity_given[0] == 0.0 && gravity_given[1] == 0.0 &&
+      gravity_given[2] == 0.0)
+    error->all(FLERR, "Fix sph/boussinesq: gravity 0 0 0 gives no buoyancy");
+
+  // beta per type from the hub; the group must have some
+  FixSPHMaterials *materials = FixSPHMaterials::find(lmp, "Fix sph/boussinesq");
+  for (int t = 1; t <= atom->ntypes; t++) beta[t] = materials->expansion(t);
+  int *local = new int[atom->ntypes + 1];
+  int *present = new int[atom->ntypes + 1];
+  for (int t = 0; t <= atom->ntypes; t++) local[t] = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) local[atom->type[i]] = 1;
+  MPI_Allreduce(local, present, atom->ntypes + 1, MPI_INT, MPI_MAX, world);
+  std::string without;
+  int buoyant = 0;
+  for (int t = 1; t <= atom->ntypes; t++) {
+    if (!present[t]) continue;
+    if (beta[t] != 0.0)
+      buoyant = 1;
+    else
+      without += (without.empty() ? "" : " ") + std::to_string(t);
+  }
+  delete[] local;
+  delete[] present;
+  if (!buoyant)
+    error->all(FLERR,
+               "Fix sph/boussinesq: no atom type of group {} has an expansion coefficient; set "
+               "'expansion' in fix sph/materials",
+               group->names[igroup]);
+  if (!without.empty() && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix sph/boussinesq: atom type(s) {} of group {} have no expansion coefficient "
+                   "and feel no buoyancy",
+                   without, group->names[igroup]);
+  SPHCheck::atom_state(lmp, "Fix sph/boussinesq", groupbit, SPHCheck::CV);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHBoussinesq::setup(int vflag)
+{
+  post_force(vflag);
+}
+
+void FixSPHBoussinesq::post_force(int /*vflag*/)
+{
+  double *const *const f = atom->f;
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+  const double *const rmass = atom->rmass;
+  const double *const mass = atom->mass;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  const double *const g = buoyancy.gravity;
+  const double t0 = buoyancy.t0;
+  force_local[0] = force_local[1] = force_local[2] = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    double a[3];
+    sphb_acceleration(g, beta[type[i]], esph[i] / cv[i], t0, a);
+    const double m = rmass ? rmass[i] : mass[type[i]];
+    for (int k = 0; k < 3; k++) {
+      f[i][k] += m * a[k];
+      force_local[k] += m * a[k];
+    }
+  }
+  force_summed = 0;
+}
+
+/* ----------------------------------------------------------------------
+   the total buoyancy force now
+------------------------------------------------------------------------- */
+
+double FixSPHBoussinesq::compute_vector(int n)
+{
+  if (!force_summed) {
+    MPI_Allreduce(force_local, force_total, 3, MPI_DOUBLE, MPI_SUM, world);
+    force_summed = 1;
+  }
+  return force_total[n];
+}
+
+/* ----------------------------------------------------------------------
+   buoyancy: read by the styles that need the body force of each atom
+   (SPHBodyForce::find_buoyancy)
+------------------------------------------------------------------------- */
+
+void *FixSPHBoussinesq::extract(const char *name, int &dim)
+{
+  dim = 0;
+  if (strcmp(name, "buoyancy") == 0) return (void *) &buoyancy;
+  return nullptr;
+}

@@ -1,0 +1,200 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   fix sph/wall/adiabatic: the higher-order adiabatic wall of Reece et al.
+   2024 (eqs 18-19). Each wall particle is mirrored across the wall surface
+   (through the vertex at a corner) to a ghost point in the medium; the
+   medium's temperature there, interpolated with the first-order correction
+   of Liu & Liu (Shepard's when the neighbourhood is too thin), becomes the
+   wall particle's, so every particle of the medium sees a full kernel of
+   the evenly reflected temperature field.
+   The wall particles exchange heat with the medium like any other; what
+   they take in (zero for an exactly reflected field, small otherwise) is
+   given back to the medium around their ghost points, so a closed box with
+   adiabatic walls keeps its energy to round-off ('conserve yes'). Next to
+   a wall that holds a temperature (a corner) the heat a wall particle takes
+   in is the exchange with the medium that the held wall's particles
+   complete, so it is not given back.
+------------------------------------------------------------------------- */
+
+#include "fix_sph_wall_adiabatic.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "pair.h"
+#include "sph_checks.h"
+#include "sph_compat.h"
+#include "sph_interpolation.h"
+#include "sph_mirror.h"
+
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static const char cmd[] = "fix sph/wall/adiabatic";
+
+/* ---------------------------------------------------------------------- */
+
+FixSPHWallAdiabatic::FixSPHWallAdiabatic(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), mirror(nullptr), conserve(1),
+    shepard_local(0), shepard_total(0), summed(0)
+{
+  if (!atom->esph_flag || !atom->cv_flag || !atom->rho_flag)
+    error->all(FLERR, "Fix sph/wall/adiabatic requires atom style sph (rho, esph, desph, cv)");
+  mirror = new SPHMirror(lmp, cmd);
+  int iarg = 3;
+  int surface_given = 0;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "surface") == 0) {
+      iarg += mirror->parse(narg, arg, iarg);
+      surface_given = 1;
+    } else if (strcmp(arg[iarg], "conserve") == 0) {
+      if (iarg + 1 >= narg)
+        error->all(FLERR, "Illegal {} command: missing value after 'conserve'", cmd);
+      conserve = SPHCompat::yes_no(error, FLERR, cmd, "conserve", arg[iarg + 1]) ? 1 : 0;
+      iarg += 2;
+    } else
+      error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
+  }
+  if (!surface_given)
+    error->all(FLERR,
+               "Illegal {} command: 'surface <region-ID>' is required (the region of the medium, "
+               "whose boundary is the wall surface)",
+               cmd);
+  comm_forward = 1;
+  comm_reverse = 1;
+  vector_flag = 1;
+  size_vector = 3;
+  taken_local[0] = taken_local[1] = taken_total[0] = taken_total[1] = 0.0;
+  global_freq = 1;
+  extvector = 1;
+}
+
+FixSPHWallAdiabatic::~FixSPHWallAdiabatic()
+{
+  delete mirror;
+}
+
+int FixSPHWallAdiabatic::setmask()
+{
+  return PRE_FORCE | POST_FORCE;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHWallAdiabatic::init()
+{
+  // the kernel and its support are those of the conduction pair style
+  Pair *pair = force->pair_match("^sph/cleary/heat", 0);
+  if (!pair) error->all(FLERR, "Fix sph/wall/adiabatic requires pair style sph/cleary/heat");
+  int dim;
+  const int kernel_kind = *(int *) pair->extract("kernel_kind", dim);
+  const double cutoff = *(double *) pair->extract("cutoff", dim);
+  SPHCheck::group_of_kind(lmp, this,
+                          {"sph/wall/isothermal", "sph/wall/dirichlet", "sph/wall/adiabatic",
+                           "sph/surface/flux"},
+                          false, false);
+  SPHCheck::atom_state(lmp, "Fix sph/wall/adiabatic", 0, SPHCheck::RHO | SPHCheck::CV);
+  mirror->init(groupbit, kernel_kind, cutoff);
+}
+
+/* ----------------------------------------------------------------------
+   the wall particles' temperatures, owned then ghost; a particle beyond
+   the kernel's reach of the surface keeps its own
+------------------------------------------------------------------------- */
+
+void FixSPHWallAdiabatic::setup_pre_force(int vflag)
+{
+  pre_force(vflag);
+}
+
+void FixSPHWallAdiabatic::pre_force(int /*vflag*/)
+{
+  mirror->interpolate(t_ghost, ghost_how);
+  const double *const cv = atom->cv;
+  const int *const mask = atom->mask;
+  double *const esph = atom->esph;
+  shepard_local = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit) || ghost_how[i] == SPHI_NONE) continue;
+    esph[i] = cv[i] * t_ghost[i];
+    if (ghost_how[i] == SPHI_SHEPARD) shepard_local++;
+  }
+  summed = 0;
+  SPHCompat::forward_comm(comm, this);
+}
+
+/* ----------------------------------------------------------------------
+   the heat the wall particles took in goes back to the medium
+------------------------------------------------------------------------- */
+
+void FixSPHWallAdiabatic::setup(int vflag)
+{
+  post_force(vflag);
+}
+
+void FixSPHWallAdiabatic::post_force(int /*vflag*/)
+{
+  const double *const mass = atom->mass;
+  const double *const rmass = atom->rmass;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  double *const desph = atom->desph;
+  const int nlocal = atom->nlocal;
+  rate.assign(nlocal, 0.0);
+  taken_local[0] = taken_local[1] = 0.0;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit) || ghost_how[i] == SPHI_NONE) continue;
+    rate[i] = (rmass ? rmass[i] : mass[type[i]]) * desph[i];
+    taken_local[mirror->at_junction(i)] += rate[i];
+    if (conserve) desph[i] = 0.0;
+  }
+  if (conserve) mirror->return_heat(rate, this);
+  summed = 0;
+}
+
+/* ----------------------------------------------------------------------
+   vector: heat rate the wall particles took in now, away from corners
+   (given back with 'conserve yes') and at corners with a wall that holds a
+   temperature (never given back: there the heat belongs to that wall);
+   number of wall particles whose ghost point needed Shepard's value
+------------------------------------------------------------------------- */
+
+double FixSPHWallAdiabatic::compute_vector(int n)
+{
+  if (!summed) {
+    MPI_Allreduce(taken_local, taken_total, 2, MPI_DOUBLE, MPI_SUM, world);
+    MPI_Allreduce(&shepard_local, &shepard_total, 1, MPI_INT, MPI_SUM, world);
+    summed = 1;
+  }
+  if (n < 2) return taken_total[n];
+  return (double) shepard_total;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixSPHWallAdiabatic::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/,
+                                           int * /*pbc*/)
+{
+  for (int k = 0; k < n; k++) buf[k] = atom->esph[send[k]];
+  return n;
+}
+
+void FixSPHWallAdiabatic::unpack_forward_comm(int n, int first, double *buf)
+{
+  for (int k = 0; k < n; k++) atom->esph[first + k] = buf[k];
+}
+
+int FixSPHWallAdiabatic::pack_reverse_comm(int n, int first, double *buf)
+{
+  return mirror->pack_reverse_comm(n, first, buf);
+}
+
+void FixSPHWallAdiabatic::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  mirror->unpack_reverse_comm(n, list, buf);
+}

@@ -1,0 +1,295 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   Mirror points of wall particles and the temperature there (sph_mirror.h).
+------------------------------------------------------------------------- */
+
+#include "sph_mirror.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix.h"
+#include "fix_sph_materials.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "region.h"
+#include "sph_checks.h"
+#include "sph_compat.h"
+#include "sph_interpolation.h"
+#include "sph_kernels.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+// the thermal wall styles: their particles are not part of the medium
+static const char *const thermal_walls[] = {"sph/wall/adiabatic", "sph/wall/dirichlet",
+                                            "sph/wall/isothermal"};
+
+/* ---------------------------------------------------------------------- */
+
+SPHMirror::SPHMirror(LAMMPS *lmp, const std::string &cmd) :
+    Pointers(lmp), command(cmd), region(nullptr), groupbit(0), medium_exclude(0), held_walls(0), kernel_kind(0),
+    cutoff(0.0)
+{
+  for (int k = 0; k < 3; k++) {
+    cell_lo[k] = 0.0;
+    ncell[k] = 1;
+  }
+}
+
+SPHMirror::~SPHMirror() = default;
+
+int SPHMirror::parse(int narg, char **arg, int iarg)
+{
+  if (iarg + 1 >= narg)
+    error->all(FLERR, "Illegal {} command: 'surface' needs a region ID (the region of the medium)",
+               command);
+  region_name = arg[iarg + 1];
+  return 2;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void SPHMirror::init(int groupbit_in, int kind, double cut)
+{
+  groupbit = groupbit_in;
+  kernel_kind = kind;
+  cutoff = cut;
+  region = SPHCompat::find_region(domain, region_name);
+  if (!region)
+    error->all(FLERR, "{}: surface region {} does not exist", command, region_name);
+  if (region->dynamic || region->varshape)
+    error->all(FLERR, "{}: surface region {} moves or changes shape; the wall surface must be fixed",
+               command, region_name);
+
+  medium_exclude = held_walls = 0;
+  for (const char *style : thermal_walls)
+    for (Fix *wall : SPHCompat::fixes_of_style(modify, style)) {
+      medium_exclude |= wall->groupbit;
+      if (strcmp(style, "sph/wall/adiabatic") != 0) held_walls |= wall->groupbit;
+    }
+
+  // every wall atom lies outside the region; the farthest one within the
+  // kernel's reach sets how far the ghost points lie from their wall atoms
+  double *const *const x = atom->x;
+  double dmax_local = 0.0;
+  int inside = 0;
+  tagint inside_tag = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    double g[3];
+    const int found = ghost_point(x[i], g, 0);
+    if (found < 0 && (!inside || atom->tag[i] < inside_tag)) {
+      inside = 1;
+      inside_tag = atom->tag[i];
+    }
+    if (found > 0) {
+      const double d = 0.5 * sqrt((g[0] - x[i][0]) * (g[0] - x[i][0]) +
+                                  (g[1] - x[i][1]) * (g[1] - x[i][1]) +
+                                  (g[2] - x[i][2]) * (g[2] - x[i][2]));
+      dmax_local = MAX(dmax_local, d);
+    }
+  }
+  int inside_any = 0;
+  MPI_Allreduce(&inside, &inside_any, 1, MPI_INT, MPI_MAX, world);
+  if (inside_any) {
+    tagint tag = inside ? inside_tag : MAXTAGINT;
+    tagint first = 0;
+    MPI_Allreduce(&tag, &first, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    error->all(FLERR,
+               "{}: wall atom {} lies inside surface region {}; the region holds the medium and "
+               "its boundary is the wall surface, so wall atoms lie outside it",
+               command, first, region_name);
+  }
+  double dmax = 0.0;
+  MPI_Allreduce(&dmax_local, &dmax, 1, MPI_DOUBLE, MPI_MAX, world);
+
+  // the medium around a ghost point up to 2 dmax away, also on other ranks
+  const double needed = cutoff + 2.0 * dmax + neighbor->skin;
+  if (comm->cutghostuser < needed) {
+    if (comm->me == 0 && comm->cutghostuser < needed * (1.0 - 1e-12))
+      utils::logmesg(lmp,
+                     "{}: communication cutoff raised to {:.8g} for the ghost points of wall atoms "
+                     "up to {:.8g} from the surface\n",
+                     command, needed, dmax);
+    comm->cutghostuser = needed;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the ghost point of a wall atom at x: 1 and the point, 0 when the atom is
+   beyond the kernel's reach of the surface, -1 when it is inside the region
+------------------------------------------------------------------------- */
+
+int SPHMirror::ghost_point(const double *x, double *ghost, int /*atom_tag*/)
+{
+  double xs[3] = {x[0], x[1], x[2]};
+  if (region->surface_exterior(xs, cutoff) > 0) {
+    const auto &c = region->contact[0];
+    ghost[0] = x[0] - 2.0 * c.delx;
+    ghost[1] = x[1] - 2.0 * c.dely;
+    ghost[2] = x[2] - 2.0 * c.delz;
+    return 1;
+  }
+  const int inside = region->interior ? region->match(x[0], x[1], x[2])
+                                      : !region->match(x[0], x[1], x[2]);
+  return inside ? -1 : 0;
+}
+
+/* ----------------------------------------------------------------------
+   cells of side 'cutoff' over the atoms of the medium and of the other
+   thermal walls, owned and ghost
+------------------------------------------------------------------------- */
+
+void SPHMirror::bin_atoms()
+{
+  double *const *const x = atom->x;
+  const int *const mask = atom->mask;
+  const int nall = atom->nlocal + atom->nghost;
+  double lo[3] = {0.0, 0.0, 0.0}, hi[3] = {0.0, 0.0, 0.0};
+  int any = 0;
+  for (int j = 0; j < nall; j++) {
+    if (mask[j] & groupbit) continue;
+    for (int k = 0; k < 3; k++) {
+      if (!any || x[j][k] < lo[k]) lo[k] = x[j][k];
+      if (!any || x[j][k] > hi[k]) hi[k] = x[j][k];
+    }
+    any = 1;
+  }
+  long total = 1;
+  for (int k = 0; k < 3; k++) {
+    cell_lo[k] = lo[k];
+    ncell[k] = 1 + static_cast<int>((hi[k] - lo[k]) / cutoff);
+    total *= ncell[k];
+  }
+  cell_head.assign(total, -1);
+  cell_next.assign(nall, -1);
+  for (int j = 0; j < nall; j++) {
+    if (mask[j] & groupbit) continue;
+    int c[3];
+    for (int k = 0; k < 3; k++) c[k] = static_cast<int>((x[j][k] - cell_lo[k]) / cutoff);
+    const long cell = (static_cast<long>(c[2]) * ncell[1] + c[1]) * ncell[0] + c[0];
+    cell_next[j] = cell_head[cell];
+    cell_head[cell] = j;
+  }
+}
+
+// the cells around point p: lo and hi cell indices per dimension
+void SPHMirror::cells_around(const double *p, int *c_lo, int *c_hi) const
+{
+  for (int k = 0; k < 3; k++) {
+    const int c = static_cast<int>(floor((p[k] - cell_lo[k]) / cutoff));
+    c_lo[k] = MAX(c - 1, 0);
+    c_hi[k] = MIN(c + 1, ncell[k] - 1);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how)
+{
+  double *const *const x = atom->x;
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+  const double *const rho = atom->rho;
+  const double *const rmass = atom->rmass;
+  const double *const mass = atom->mass;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const int dim = domain->dimension;
+  const sphk_kernel kernel = sphk_make(kernel_kind, dim, cutoff);
+  const double h = cutoff / sphk_support(kernel_kind);
+  const double cutsq = cutoff * cutoff;
+
+  ghost.assign(nlocal, 0.0);
+  how.assign(nlocal, SPHI_NONE);
+  junction.assign(nlocal, 0);
+  first_neighbour.assign(nlocal + 1, 0);
+  neighbours.clear();
+  weights.clear();
+  bin_atoms();
+
+  for (int i = 0; i < nlocal; i++) {
+    first_neighbour[i] = neighbours.size();
+    if (!(mask[i] & groupbit)) continue;
+    double g[3];
+    if (ghost_point(x[i], g, atom->tag[i]) <= 0) continue;
+    int c_lo[3], c_hi[3];
+    // next to a wall that holds a temperature (a corner)?
+    cells_around(x[i], c_lo, c_hi);
+    for (int cz = c_lo[2]; cz <= c_hi[2] && !junction[i]; cz++)
+      for (int cy = c_lo[1]; cy <= c_hi[1] && !junction[i]; cy++)
+        for (int cx = c_lo[0]; cx <= c_hi[0] && !junction[i]; cx++)
+          for (int j = cell_head[(static_cast<long>(cz) * ncell[1] + cy) * ncell[0] + cx]; j >= 0;
+               j = cell_next[j]) {
+            if (!(mask[j] & held_walls)) continue;
+            const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+            if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cutsq) {
+              junction[i] = 1;
+              break;
+            }
+          }
+    cells_around(g, c_lo, c_hi);
+    sphi_point point;
+    sphi_begin(&point, dim);
+    double shepard = 0.0;
+    const size_t start = neighbours.size();
+    for (int cz = c_lo[2]; cz <= c_hi[2]; cz++)
+      for (int cy = c_lo[1]; cy <= c_hi[1]; cy++)
+        for (int cx = c_lo[0]; cx <= c_hi[0]; cx++)
+          for (int j = cell_head[(static_cast<long>(cz) * ncell[1] + cy) * ncell[0] + cx]; j >= 0;
+               j = cell_next[j]) {
+            if (mask[j] & medium_exclude) continue;
+            const double d[3] = {x[j][0] - g[0], x[j][1] - g[1], x[j][2] - g[2]};
+            const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (rsq >= cutsq) continue;
+            const double r = sqrt(rsq);
+            const double w = sphk_w(&kernel, r);
+            const double volume = (rmass ? rmass[j] : mass[type[j]]) / rho[j];
+            sphi_add(&point, d, w, sphk_dwdr(&kernel, r), volume, esph[j] / cv[j]);
+            neighbours.push_back(j);
+            weights.push_back(w * volume);
+            shepard += w * volume;
+          }
+    for (size_t n = start; n < weights.size(); n++) weights[n] /= shepard;
+    how[i] = sphi_solve(&point, h, &ghost[i], nullptr);
+  }
+  first_neighbour[nlocal] = neighbours.size();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void SPHMirror::return_heat(const std::vector<double> &rate, Fix *owner)
+{
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  returned.assign(nall, 0.0);
+  for (int i = 0; i < nlocal; i++)
+    if (!junction[i])
+      for (int n = first_neighbour[i]; n < first_neighbour[i + 1]; n++)
+      returned[neighbours[n]] += weights[n] * rate[i];
+  SPHCompat::reverse_comm(comm, owner);
+  const double *const rmass = atom->rmass;
+  const double *const mass = atom->mass;
+  const int *const type = atom->type;
+  double *const desph = atom->desph;
+  for (int j = 0; j < nlocal; j++)
+    if (returned[j] != 0.0) desph[j] += returned[j] / (rmass ? rmass[j] : mass[type[j]]);
+}
+
+int SPHMirror::pack_reverse_comm(int n, int first, double *buf)
+{
+  for (int k = 0; k < n; k++) buf[k] = returned[first + k];
+  return n;
+}
+
+void SPHMirror::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  for (int k = 0; k < n; k++) returned[list[k]] += buf[k];
+}

@@ -1,0 +1,83 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SPH_MIRROR_H
+#define LMP_SPH_MIRROR_H
+
+#include "pointers.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+// Mirror points of wall particles (the mDBC construction of English et al.
+// 2022 used for temperature by Reece et al. 2024, eqs 18-19): the surface of
+// the wall is the boundary of a region that holds the medium; each wall
+// particle is reflected through its nearest surface point (the vertex at a
+// corner) to a ghost point in the medium, where the temperature of the
+// medium is interpolated with the first-order correction of Liu & Liu
+// (sph_interpolation.h). The wall fixes set their particles' temperature
+// from it: T_w = T_ghost (adiabatic), T_w = 2 T_surface - T_ghost (Dirichlet).
+// The medium's particles are those in no thermal wall group.
+class SPHMirror : protected Pointers {
+ public:
+  SPHMirror(class LAMMPS *, const std::string &command);
+  ~SPHMirror() override;
+
+  // 'surface <region-ID>' at arg[iarg]: returns the words read
+  int parse(int narg, char **arg, int iarg);
+  const std::string &region_id() const { return region_name; }
+
+  // at the owning fix's init, after the kernel is known: checks the wall
+  // atoms of 'groupbit' against the surface and widens the ghost cutoff so
+  // that the ghost points' neighbours are present on every rank
+  void init(int groupbit, int kernel_kind, double cutoff);
+
+  // the temperature at the ghost point of every owned atom of the group,
+  // and how it was found (sphi_result); ghost[i], how[i] for owned atoms;
+  // how = SPHI_NONE for wall atoms beyond the kernel's reach of the surface
+  void interpolate(std::vector<double> &ghost, std::vector<int> &how);
+
+  // 1 for an owned wall atom within the kernel's reach of a particle of a
+  // wall that holds a temperature (a corner with a Dirichlet or isothermal
+  // wall), after interpolate()
+  int at_junction(int i) const { return junction[i]; }
+
+  // give heat rates back to the medium: rate[i] (energy per time) of the
+  // owned wall atom i, unless at a junction, goes to the medium around its
+  // ghost point with the Shepard weights of its last interpolate(); the
+  // result is added to desph of the owned medium atoms (needs the fix's
+  // reverse comm)
+  void return_heat(const std::vector<double> &rate, class Fix *owner);
+  int pack_reverse_comm(int n, int first, double *buf);
+  void unpack_reverse_comm(int n, int *list, double *buf);
+
+ protected:
+  std::string command, region_name;
+  class Region *region;
+  int groupbit, medium_exclude;
+  int held_walls;    // walls that hold a temperature (Dirichlet, isothermal)
+  int kernel_kind;
+  double cutoff;
+  // the medium atoms near each ghost point and their Shepard weights
+  std::vector<int> first_neighbour, neighbours;
+  std::vector<double> weights;
+  std::vector<double> returned;    // per atom (owned and ghost), energy rate
+  std::vector<int> junction;       // per owned atom: next to another kind of wall
+  // cells of side 'cutoff' over the atoms not in the group (owned and ghost)
+  std::vector<int> cell_head, cell_next;
+  double cell_lo[3];
+  int ncell[3];
+
+  void medium_groups();
+  int ghost_point(const double *x, double *ghost, int atom_tag);
+  void bin_atoms();
+  void cells_around(const double *p, int *c_lo, int *c_hi) const;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
