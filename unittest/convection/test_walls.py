@@ -1,0 +1,176 @@
+#!/usr/bin/env python3
+"""Checks of the mirror walls and the heated cavity, run through LAMMPS.
+
+  linear     a linear temperature field in jittered fluid particles is
+             reproduced exactly at the ghost points of fix sph/wall/adiabatic
+             (straight walls and corners): T_wall = T(ghost) to 1e-10
+  conserve   a closed box with adiabatic walls on every side keeps the
+             fluid's energy to round-off (conserve yes); without giving the
+             wall's intake back (conserve no) it drifts, so the check can fail
+  conduction the cavity of examples/convection-cavity without buoyancy: the
+             mean Nusselt number of both walls is 1 within --tolerance, and
+             the zero-order walls (Shepard dummies, k = 0 top and bottom) are
+             further off than that
+
+Usage: test_walls.py CHECK --lmp LMP --plugin PLUGIN [--tolerance T]
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+
+BOX = """plugin load {plugin}
+units           si
+dimension       2
+atom_style      sph
+boundary        f f p
+atom_modify     map array
+lattice         sq 0.1 origin 0.5 0.5 0.0
+region          box block -3 13 -3 13 -0.5 0.5
+create_box      2 box
+create_atoms    1 region box
+region          cavity block 0 1 0 1 INF INF units box
+group           fluid region cavity
+group           wall subtract all fluid
+set             group wall type 2
+variable        jx atom 0.025*sin(37.0*x+11.0*y)
+variable        jy atom 0.025*cos(23.0*x-29.0*y)
+displace_atoms  fluid move v_jx v_jy 0.0 units box
+fix             materials all sph/materials type * conductivity constant 1.0 cv 2.0 rho0 1.0
+sph/set         all materials spacing 0.1 temperature 0.0
+pair_style      sph/cleary/heat quintic 0.3
+pair_coeff      * *
+neigh_modify    exclude type 2 2
+"""
+
+
+def run_lammps(lmp, script, cwd):
+    with tempfile.NamedTemporaryFile("w", suffix=".in", dir=cwd, delete=False) as f:
+        f.write(script)
+        path = f.name
+    try:
+        proc = subprocess.run([lmp, "-log", "none", "-in", path], cwd=cwd, text=True,
+                              capture_output=True)
+    finally:
+        os.unlink(path)
+    if proc.returncode != 0 or "ERROR" in proc.stdout:
+        sys.stdout.write(proc.stdout + proc.stderr)
+        sys.exit("FAIL: LAMMPS run failed")
+    return proc.stdout
+
+
+def read_dump(path):
+    with open(path) as f:
+        lines = f.read().splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))
+    names = lines[start].split()[2:]
+    data = np.array([[float(w) for w in line.split()] for line in lines[start + 1:]])
+    return {name: data[:, k] for k, name in enumerate(names)}
+
+
+def check_linear(a, work):
+    script = BOX.format(plugin=a.plugin) + """
+variable        Tlin atom 0.2+0.7*x-0.4*y
+sph/set         fluid temperature v_Tlin
+fix             adiabatic wall sph/wall/adiabatic surface cavity
+compute         T all sph/t/atom
+run             0
+write_dump      wall custom walls.dump id x y c_T modify sort id format float %.17g
+"""
+    run_lammps(a.lmp, script, work)
+    d = read_dump(os.path.join(work, "walls.dump"))
+    x, y, t = d["x"], d["y"], d["c_T"]
+    # mirror through the nearest point of the unit square (the vertex at corners)
+    gx = 2.0 * np.clip(x, 0.0, 1.0) - x
+    gy = 2.0 * np.clip(y, 0.0, 1.0) - y
+    reach = np.hypot(x - np.clip(x, 0, 1), y - np.clip(y, 0, 1)) < 0.3
+    want = 0.2 + 0.7 * gx - 0.4 * gy
+    corner = reach & (np.abs(gx - x) > 0) & (np.abs(gy - y) > 0)
+    err_straight = np.abs(t - want)[reach & ~corner].max()
+    err_corner = np.abs(t - want)[corner].max()
+    ok = err_straight < 1e-10 and err_corner < 1e-10 and corner.sum() > 0
+    print(f"{'ok' if ok else 'FAIL'}: {reach.sum()} wall particles within reach ({corner.sum()} at "
+          f"corners): largest |T_wall - T(ghost)| {err_straight:.2e} (straight), "
+          f"{err_corner:.2e} (corners), tolerance 1e-10")
+    return ok
+
+
+def fluid_energy_drift(a, work, conserve):
+    script = BOX.format(plugin=a.plugin) + f"""
+variable        Tinit atom 1.0+x*y*y+0.5*sin(4.0*x)
+sph/set         fluid temperature v_Tinit
+fix             adiabatic wall sph/wall/adiabatic surface cavity conserve {conserve}
+fix             integrate fluid sph/stationary
+compute         e fluid property/atom esph
+compute         esum fluid reduce sum c_e
+variable        energy equal c_esum*mass[1]
+timestep        2.0e-4
+thermo_style    custom step v_energy f_adiabatic[1]
+thermo_modify   format float %.17g
+thermo          100
+run             500
+"""
+    out = run_lammps(a.lmp, script, work)
+    rows = [line.split() for line in out.splitlines() if re.match(r"^\s+\d+\s+\S+\s+\S+\s*$", line)]
+    energy = np.array([float(r[1]) for r in rows])
+    return np.abs(energy - energy[0]).max() / abs(energy[0]), energy
+
+
+def check_conserve(a, work):
+    drift_yes, e_yes = fluid_energy_drift(a, work, "yes")
+    drift_no, e_no = fluid_energy_drift(a, work, "no")
+    changed = np.abs(e_yes[-1] - e_yes[0]) / abs(e_yes[0])
+    ok = drift_yes < 1e-13 and drift_no > 1e-9
+    print(f"{'ok' if ok else 'FAIL'}: fluid energy over 500 steps: relative drift {drift_yes:.2e} "
+          f"with conserve yes (limit 1e-13), {drift_no:.2e} with conserve no (must exceed 1e-9)")
+    return ok
+
+
+def cavity_nu(a, work, thermal, n):
+    cmd = [a.lmp, "-log", "none", "-in", os.path.join(ROOT, "examples/convection-cavity/in.cavity"),
+           "-var", "plugin", a.plugin, "-var", "ra", "0", "-var", "n", str(n), "-var", "tend", "0.6",
+           "-var", "thermal", thermal, "-var", "out", "cavity.dump"]
+    proc = subprocess.run(cmd, cwd=work, text=True, capture_output=True)
+    m = re.search(r"final: Nu_hot = (\S+) Nu_cold = (\S+)", proc.stdout)
+    if proc.returncode != 0 or not m:
+        sys.stdout.write(proc.stdout + proc.stderr)
+        sys.exit("FAIL: cavity run failed")
+    return float(m.group(1)), float(m.group(2))
+
+
+def check_conduction(a, work):
+    hot, cold = cavity_nu(a, work, "mirror", a.n)
+    ok = abs(hot - 1.0) < a.tolerance and abs(cold - 1.0) < a.tolerance
+    print(f"{'ok' if ok else 'FAIL'}: conduction, {a.n} x {a.n}, mirror walls: Nu hot {hot:.6f}, "
+          f"cold {cold:.6f} (|Nu - 1| < {a.tolerance})")
+    hot0, cold0 = cavity_nu(a, work, "zero", a.n)
+    worse = abs(hot0 - 1.0) > a.tolerance
+    print(f"{'ok' if worse else 'FAIL'}: the zero-order walls are further off: Nu hot {hot0:.6f}, "
+          f"cold {cold0:.6f}")
+    return ok and worse
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    p.add_argument("check", choices=["linear", "conserve", "conduction"])
+    p.add_argument("--lmp", required=True)
+    p.add_argument("--plugin", required=True)
+    p.add_argument("--n", type=int, default=20)
+    p.add_argument("--tolerance", type=float, default=0.002)
+    a = p.parse_args()
+    a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
+    with tempfile.TemporaryDirectory() as work:
+        ok = {"linear": check_linear, "conserve": check_conserve,
+              "conduction": check_conduction}[a.check](a, work)
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
