@@ -12,7 +12,7 @@ set -euo pipefail
 # liblapack-dev: LAMMPS's RHEO package (the bench's peer) needs LAPACK, which
 # Debian's repacked 4Feb2025 source does not bundle (no lib/linalg)
 packages="build-essential cmake ccache git dpkg-dev pkg-config libopenmpi-dev openmpi-bin
-  libfftw3-dev googletest libyaml-dev liblapack-dev python3-numpy python3-matplotlib"
+  libfftw3-dev googletest libyaml-dev liblapack-dev python3-numpy python3-matplotlib python3-scipy"
 
 missing=""
 for p in $packages; do
