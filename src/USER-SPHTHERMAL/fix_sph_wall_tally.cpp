@@ -25,7 +25,7 @@ using namespace LAMMPS_NS;
 
 FixSPHWallTally::FixSPHWallTally(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), spacing(0.0), rate_previous(0.0), rate(0.0), energy(0.0), dt_half(0.0),
-    wall(nullptr)
+    wall(nullptr), callbacks_added(0)
 {
   scalar_flag = 1;
   vector_flag = 1;
@@ -46,14 +46,18 @@ void FixSPHWallTally::tally_arrays()
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
+  callbacks_added = 1;
   for (int i = 0; i < atom->nlocal; i++)
     for (int k = 0; k < size_peratom_cols; k++) wall[i][k] = 0.0;
 }
 
 FixSPHWallTally::~FixSPHWallTally()
 {
-  atom->delete_callback(id, Atom::GROW);
-  atom->delete_callback(id, Atom::RESTART);
+  // a derived constructor that stops on bad input has added none
+  if (callbacks_added) {
+    atom->delete_callback(id, Atom::GROW);
+    atom->delete_callback(id, Atom::RESTART);
+  }
   memory->destroy(wall);
 }
 

@@ -41,6 +41,7 @@ class FixSPHWallTally : public Fix {
   double energy;            // energy taken up by the wall since the fix was defined
   double dt_half;
   double **wall;            // per atom: heat rate in, energy taken up [, flux]
+  int callbacks_added;      // 1 once tally_arrays() has run
 
   // after the derived constructor has read 'spacing': the per-atom columns
   void tally_arrays();
