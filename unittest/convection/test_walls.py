@@ -81,6 +81,9 @@ variable        Tlin atom 0.2+0.7*x-0.4*y
 sph/set         fluid temperature v_Tlin
 fix             adiabatic wall sph/wall/adiabatic surface cavity
 compute         T all sph/t/atom
+# LAMMPS 29Sep2021 dumps a per-atom compute only on a step that used it
+compute         Tmax all reduce max c_T
+thermo_style    custom step c_Tmax
 run             0
 write_dump      wall custom walls.dump id x y c_T modify sort id format float %.17g
 """
