@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -106,12 +107,10 @@ void FixSPHBoussinesq::init()
   // beta per type from the hub; the group must have some
   FixSPHMaterials *materials = FixSPHMaterials::find(lmp, "Fix sph/boussinesq");
   for (int t = 1; t <= atom->ntypes; t++) beta[t] = materials->expansion(t);
-  int *local = new int[atom->ntypes + 1];
-  int *present = new int[atom->ntypes + 1];
-  for (int t = 0; t <= atom->ntypes; t++) local[t] = 0;
+  std::vector<int> local(atom->ntypes + 1, 0), present(atom->ntypes + 1, 0);
   for (int i = 0; i < atom->nlocal; i++)
     if (atom->mask[i] & groupbit) local[atom->type[i]] = 1;
-  MPI_Allreduce(local, present, atom->ntypes + 1, MPI_INT, MPI_MAX, world);
+  MPI_Allreduce(local.data(), present.data(), atom->ntypes + 1, MPI_INT, MPI_MAX, world);
   std::string without;
   int buoyant = 0;
   for (int t = 1; t <= atom->ntypes; t++) {
@@ -121,8 +120,6 @@ void FixSPHBoussinesq::init()
     else
       without += (without.empty() ? "" : " ") + std::to_string(t);
   }
-  delete[] local;
-  delete[] present;
   if (!buoyant)
     error->all(FLERR,
                "Fix sph/boussinesq: no atom type of group {} has an expansion coefficient; set "

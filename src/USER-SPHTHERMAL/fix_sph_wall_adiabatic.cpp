@@ -45,7 +45,7 @@ FixSPHWallAdiabatic::FixSPHWallAdiabatic(LAMMPS *lmp, int narg, char **arg) :
 {
   if (!atom->esph_flag || !atom->cv_flag || !atom->rho_flag)
     error->all(FLERR, "Fix sph/wall/adiabatic requires atom style sph (rho, esph, desph, cv)");
-  mirror = new SPHMirror(lmp, cmd);
+  mirror = new SPHMirror(lmp, cmd, true);
   int iarg = 3;
   int surface_given = 0;
   while (iarg < narg) {
@@ -98,7 +98,6 @@ void FixSPHWallAdiabatic::init()
                           {"sph/wall/isothermal", "sph/wall/dirichlet", "sph/wall/adiabatic",
                            "sph/surface/flux"},
                           false, false);
-  SPHCheck::atom_state(lmp, "Fix sph/wall/adiabatic", 0, SPHCheck::RHO | SPHCheck::CV);
   mirror->init(groupbit, kernel_kind, cutoff);
 }
 
@@ -147,6 +146,7 @@ void FixSPHWallAdiabatic::post_force(int /*vflag*/)
   const int nlocal = atom->nlocal;
   rate.assign(nlocal, 0.0);
   taken_local[0] = taken_local[1] = 0.0;
+  mirror->find_junctions();
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit) || ghost_how[i] == SPHI_NONE) continue;
     rate[i] = (rmass ? rmass[i] : mass[type[i]]) * desph[i];

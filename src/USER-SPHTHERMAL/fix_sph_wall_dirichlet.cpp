@@ -53,7 +53,7 @@ FixSPHWallDirichlet::FixSPHWallDirichlet(LAMMPS *lmp, int narg, char **arg) :
   while (iarg < narg) {
     if (strcmp(arg[iarg], "surface") == 0) {
       delete mirror;
-      mirror = new SPHMirror(lmp, cmd);
+      mirror = new SPHMirror(lmp, cmd, false);
       iarg += mirror->parse(narg, arg, iarg);
     } else if (strcmp(arg[iarg], "spacing") == 0) {
       if (iarg + 1 >= narg) error->all(FLERR, "Illegal {} command: missing value after 'spacing'", cmd);
@@ -93,11 +93,7 @@ void FixSPHWallDirichlet::init()
                            "sph/surface/flux"},
                           false, false);
   SPHCheck::atom_state(lmp, "Fix sph/wall/dirichlet", groupbit, SPHCheck::CV);
-  reset_dt();
-  if (mirror) {
-    SPHCheck::atom_state(lmp, "Fix sph/wall/dirichlet", 0, SPHCheck::RHO | SPHCheck::CV);
-    mirror->init(groupbit, kernel_kind, cutoff);
-  }
+  if (mirror) mirror->init(groupbit, kernel_kind, cutoff);
 
   dummy_groupbit = 0;
   for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/dirichlet"))

@@ -58,7 +58,6 @@ void FixSPHWallIsothermal::init()
 {
   SPHCheck::group_of_kind(lmp, this, {"sph/wall/isothermal", "sph/wall/dirichlet", "sph/wall/adiabatic"}, false, true);
   SPHCheck::atom_state(lmp, "Fix sph/wall/isothermal", groupbit, SPHCheck::CV);
-  reset_dt();
   // the wall is at its temperature before the first force evaluation
   const double *const cv = atom->cv;
   const int *const mask = atom->mask;

@@ -24,7 +24,7 @@ using namespace LAMMPS_NS;
 /* ---------------------------------------------------------------------- */
 
 FixSPHWallTally::FixSPHWallTally(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), spacing(0.0), rate_previous(0.0), rate(0.0), energy(0.0), dt_half(0.0),
+    Fix(lmp, narg, arg), spacing(0.0), rate_previous(0.0), rate(0.0), energy(0.0),
     wall(nullptr), callbacks_added(0)
 {
   scalar_flag = 1;
@@ -62,16 +62,6 @@ FixSPHWallTally::~FixSPHWallTally()
 }
 
 /* ----------------------------------------------------------------------
-   the half-step weight of fix sph and fix sph/stationary (with ftm2v as they
-   have it), renewed when a timestep fix changes dt
-------------------------------------------------------------------------- */
-
-void FixSPHWallTally::reset_dt()
-{
-  dt_half = 0.5 * update->dt * force->ftm2v;
-}
-
-/* ----------------------------------------------------------------------
    The heat rate into wall particle i is m_i desph_i; with zero_rates,
    desph_i is then zeroed so that fix sph or sph/stationary keep the wall's
    esph.
@@ -91,6 +81,9 @@ void FixSPHWallTally::tally(int first, int zero_rates)
   double *const desph = atom->desph;
   const int nlocal = atom->nlocal;
   const double area = (spacing > 0.0) ? pow(spacing, domain->dimension - 1) : 1.0;
+  // the half-step weight of fix sph and fix sph/stationary (with ftm2v as
+  // they have it)
+  const double dt_half = 0.5 * update->dt * force->ftm2v;
 
   double rate_local = 0.0;
   for (int i = 0; i < nlocal; i++) {

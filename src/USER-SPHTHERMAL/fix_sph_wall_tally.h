@@ -19,7 +19,6 @@ class FixSPHWallTally : public Fix {
  public:
   FixSPHWallTally(class LAMMPS *, int, char **);
   ~FixSPHWallTally() override;
-  void reset_dt() override;
   double compute_scalar() override;
   double compute_vector(int) override;
   void write_restart(FILE *) override;
@@ -39,7 +38,6 @@ class FixSPHWallTally : public Fix {
   double rate_previous;     // heat rate into the wall at the previous force evaluation
   double rate;              // heat rate into the wall now (sum over all ranks)
   double energy;            // energy taken up by the wall since the fix was defined
-  double dt_half;
   double **wall;            // per atom: heat rate in, energy taken up [, flux]
   int callbacks_added;      // 1 once tally_arrays() has run
 

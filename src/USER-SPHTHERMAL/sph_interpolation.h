@@ -42,13 +42,12 @@ static inline void sphi_begin(sphi_point *p, int dim)
   }
 }
 
-/* one neighbour j: d = r_j - r_p, w = W(|d|), dwdr = dW/dr at |d|, volume
-   V_j = m_j / rho_j, value f_j */
-static inline void sphi_add(sphi_point *p, const double d[3], double w, double dwdr, double volume,
-                            double f)
+/* one neighbour j: d = r_j - r_p, r = |d|, w = W(r), dwdr = dW/dr at r,
+   volume V_j = m_j / rho_j, value f_j */
+static inline void sphi_add(sphi_point *p, const double d[3], double r, double w, double dwdr,
+                            double volume, double f)
 {
   const int n = p->dim;
-  const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
   double row[4], col[4];
   int k, c;
   /* G = dW/dr (r_p - r_j) / r = -dW/dr d / r; zero at r = 0 */
@@ -108,7 +107,7 @@ static inline int sphi_solve(const sphi_point *p, double h, double *value, doubl
     return SPHI_SHEPARD;
   }
   {
-    double u[4];
+    double u[4] = {0.0, 0.0, 0.0, 0.0};
     for (r = n - 1; r >= 0; r--) {
       double s = m[r][n];
       for (c = r + 1; c < n; c++) s -= m[r][c] * u[c];

@@ -12,7 +12,6 @@
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
-#include "fix_sph_materials.h"
 #include "modify.h"
 #include "neighbor.h"
 #include "region.h"
@@ -32,9 +31,9 @@ static const char *const thermal_walls[] = {"sph/wall/adiabatic", "sph/wall/diri
 
 /* ---------------------------------------------------------------------- */
 
-SPHMirror::SPHMirror(LAMMPS *lmp, const std::string &cmd) :
-    Pointers(lmp), command(cmd), region(nullptr), groupbit(0), medium_exclude(0), held_walls(0), kernel_kind(0),
-    cutoff(0.0)
+SPHMirror::SPHMirror(LAMMPS *lmp, const std::string &cmd, bool returns) :
+    Pointers(lmp), command(cmd), returns_heat(returns), region(nullptr), groupbit(0),
+    medium_exclude(0), held_walls(0), kernel_kind(0), cutoff(0.0)
 {
   for (int k = 0; k < 3; k++) {
     cell_lo[k] = 0.0;
@@ -67,6 +66,9 @@ void SPHMirror::init(int groupbit_in, int kind, double cut)
     error->all(FLERR, "{}: surface region {} moves or changes shape; the wall surface must be fixed",
                command, region_name);
 
+  // the interpolation reads the volume and temperature of the medium
+  SPHCheck::atom_state(lmp, command.c_str(), 0, SPHCheck::RHO | SPHCheck::CV);
+
   medium_exclude = held_walls = 0;
   for (const char *style : thermal_walls)
     for (Fix *wall : SPHCompat::fixes_of_style(modify, style)) {
@@ -83,7 +85,7 @@ void SPHMirror::init(int groupbit_in, int kind, double cut)
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     double g[3];
-    const int found = ghost_point(x[i], g, 0);
+    const int found = ghost_point(x[i], g);
     if (found < 0 && (!inside || atom->tag[i] < inside_tag)) {
       inside = 1;
       inside_tag = atom->tag[i];
@@ -126,7 +128,7 @@ void SPHMirror::init(int groupbit_in, int kind, double cut)
    beyond the kernel's reach of the surface, -1 when it is inside the region
 ------------------------------------------------------------------------- */
 
-int SPHMirror::ghost_point(const double *x, double *ghost, int /*atom_tag*/)
+int SPHMirror::ghost_point(const double *x, double *ghost)
 {
   double xs[3] = {x[0], x[1], x[2]};
   if (region->surface_exterior(xs, cutoff) > 0) {
@@ -209,7 +211,6 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how)
 
   ghost.assign(nlocal, 0.0);
   how.assign(nlocal, SPHI_NONE);
-  junction.assign(nlocal, 0);
   first_neighbour.assign(nlocal + 1, 0);
   neighbours.clear();
   weights.clear();
@@ -219,22 +220,8 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how)
     first_neighbour[i] = neighbours.size();
     if (!(mask[i] & groupbit)) continue;
     double g[3];
-    if (ghost_point(x[i], g, atom->tag[i]) <= 0) continue;
+    if (ghost_point(x[i], g) <= 0) continue;
     int c_lo[3], c_hi[3];
-    // next to a wall that holds a temperature (a corner)?
-    cells_around(x[i], c_lo, c_hi);
-    for (int cz = c_lo[2]; cz <= c_hi[2] && !junction[i]; cz++)
-      for (int cy = c_lo[1]; cy <= c_hi[1] && !junction[i]; cy++)
-        for (int cx = c_lo[0]; cx <= c_hi[0] && !junction[i]; cx++)
-          for (int j = cell_head[(static_cast<long>(cz) * ncell[1] + cy) * ncell[0] + cx]; j >= 0;
-               j = cell_next[j]) {
-            if (!(mask[j] & held_walls)) continue;
-            const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-            if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cutsq) {
-              junction[i] = 1;
-              break;
-            }
-          }
     cells_around(g, c_lo, c_hi);
     sphi_point point;
     sphi_begin(&point, dim);
@@ -252,15 +239,48 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how)
             const double r = sqrt(rsq);
             const double w = sphk_w(&kernel, r);
             const double volume = (rmass ? rmass[j] : mass[type[j]]) / rho[j];
-            sphi_add(&point, d, w, sphk_dwdr(&kernel, r), volume, esph[j] / cv[j]);
-            neighbours.push_back(j);
-            weights.push_back(w * volume);
-            shepard += w * volume;
+            sphi_add(&point, d, r, w, sphk_dwdr(&kernel, r), volume, esph[j] / cv[j]);
+            if (returns_heat) {
+              neighbours.push_back(j);
+              weights.push_back(w * volume);
+              shepard += w * volume;
+            }
           }
     for (size_t n = start; n < weights.size(); n++) weights[n] /= shepard;
     how[i] = sphi_solve(&point, h, &ghost[i], nullptr);
   }
   first_neighbour[nlocal] = neighbours.size();
+}
+
+/* ----------------------------------------------------------------------
+   the owned wall atoms next to a wall that holds a temperature, with the
+   cells of the last interpolate() (the atoms have not moved since)
+------------------------------------------------------------------------- */
+
+void SPHMirror::find_junctions()
+{
+  double *const *const x = atom->x;
+  const int *const mask = atom->mask;
+  const double cutsq = cutoff * cutoff;
+  junction.assign(atom->nlocal, 0);
+  if (!held_walls) return;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    int c_lo[3], c_hi[3];
+    cells_around(x[i], c_lo, c_hi);
+    for (int cz = c_lo[2]; cz <= c_hi[2] && !junction[i]; cz++)
+      for (int cy = c_lo[1]; cy <= c_hi[1] && !junction[i]; cy++)
+        for (int cx = c_lo[0]; cx <= c_hi[0] && !junction[i]; cx++)
+          for (int j = cell_head[(static_cast<long>(cz) * ncell[1] + cy) * ncell[0] + cx]; j >= 0;
+               j = cell_next[j]) {
+            if (!(mask[j] & held_walls)) continue;
+            const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+            if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cutsq) {
+              junction[i] = 1;
+              break;
+            }
+          }
+  }
 }
 
 /* ---------------------------------------------------------------------- */

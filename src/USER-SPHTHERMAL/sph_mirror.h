@@ -24,7 +24,9 @@ namespace LAMMPS_NS {
 // The medium's particles are those in no thermal wall group.
 class SPHMirror : protected Pointers {
  public:
-  SPHMirror(class LAMMPS *, const std::string &command);
+  // returns_heat: the owner gives heat back to the medium (return_heat),
+  // so the neighbours and weights of each ghost point are kept
+  SPHMirror(class LAMMPS *, const std::string &command, bool returns_heat);
   ~SPHMirror() override;
 
   // 'surface <region-ID>' at arg[iarg]: returns the words read
@@ -41,9 +43,10 @@ class SPHMirror : protected Pointers {
   // how = SPHI_NONE for wall atoms beyond the kernel's reach of the surface
   void interpolate(std::vector<double> &ghost, std::vector<int> &how);
 
-  // 1 for an owned wall atom within the kernel's reach of a particle of a
+  // mark the owned wall atoms within the kernel's reach of a particle of a
   // wall that holds a temperature (a corner with a Dirichlet or isothermal
-  // wall), after interpolate()
+  // wall), after interpolate() in the same step; then at_junction(i)
+  void find_junctions();
   int at_junction(int i) const { return junction[i]; }
 
   // give heat rates back to the medium: rate[i] (energy per time) of the
@@ -57,6 +60,7 @@ class SPHMirror : protected Pointers {
 
  protected:
   std::string command, region_name;
+  bool returns_heat;
   class Region *region;
   int groupbit, medium_exclude;
   int held_walls;    // walls that hold a temperature (Dirichlet, isothermal)
@@ -73,7 +77,7 @@ class SPHMirror : protected Pointers {
   int ncell[3];
 
   void medium_groups();
-  int ghost_point(const double *x, double *ghost, int atom_tag);
+  int ghost_point(const double *x, double *ghost);
   void bin_atoms();
   void cells_around(const double *p, int *c_lo, int *c_hi) const;
 };

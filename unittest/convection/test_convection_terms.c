@@ -61,7 +61,7 @@ static int interpolate_lattice(int kind, double hdx, const double p[2], double x
       const double d[3] = {x - p[0], y - p[1], 0.0};
       const double r = sqrt(d[0] * d[0] + d[1] * d[1]);
       if (x < xwall || y < ywall || r >= cutoff) continue;
-      sphi_add(&point, d, sphk_w(&k, r), sphk_dwdr(&k, r), 1.0, c[0] + c[1] * x + c[2] * y);
+      sphi_add(&point, d, r, sphk_w(&k, r), sphk_dwdr(&k, r), 1.0, c[0] + c[1] * x + c[2] * y);
     }
   return sphi_solve(&point, hdx, value, grad);
 }
@@ -122,7 +122,7 @@ static void test_thin(void)
     const double r = fabs(d[0]);
     const double f = c[0] + c[1] * (i + 0.5);
     if (r >= 3.0) continue;
-    sphi_add(&point, d, sphk_w(&k, r), sphk_dwdr(&k, r), 1.0, f);
+    sphi_add(&point, d, r, sphk_w(&k, r), sphk_dwdr(&k, r), 1.0, f);
     sw += sphk_w(&k, r);
     swf += sphk_w(&k, r) * f;
   }
