@@ -128,7 +128,7 @@ void FixSPHWallDirichlet::pre_force(int /*vflag*/)
 
 void FixSPHWallDirichlet::dummies_mirrored()
 {
-  mirror->interpolate(t_ghost, ghost_how);
+  mirror->interpolate(t_ghost, ghost_how, &ghost_depth);
   const double *const cv = atom->cv;
   const int *const mask = atom->mask;
   double *const esph = atom->esph;
@@ -164,6 +164,15 @@ void FixSPHWallDirichlet::dummies_shepard()
     const double t_dummy = (weight > 0.0) ? 2.0 * t_wall - weighted_t / weight : t_wall;
     esph[i] = cv[i] * t_dummy;
   }
+}
+
+int FixSPHWallDirichlet::surface_gradient(int i, double &gradient, double &depth) const
+{
+  if (!mirror || i >= (int) ghost_how.size() || ghost_how[i] == SPHI_NONE) return 0;
+  depth = ghost_depth[i];
+  if (!(depth > 0.0)) return 0;
+  gradient = (t_ghost[i] - t_wall) / depth;
+  return 1;
 }
 
 /* ----------------------------------------------------------------------

@@ -33,6 +33,13 @@ class FixSPHWallDirichlet : public FixSPHWallTally {
   void unpack_forward_comm(int, int, double *) override;
   void *extract(const char *, int &) override;
 
+  // with a surface: the temperature gradient along the surface normal
+  // (into the medium) on the surface next to owned wall atom i, between
+  // T_wall there and T at i's ghost point at 'depth' from it, as found in
+  // this step's pre_force; 0 when i has no ghost point
+  bool has_surface() const { return mirror != nullptr; }
+  int surface_gradient(int i, double &gradient, double &depth) const;
+
  protected:
   double t_wall;
   int dummy_groupbit;    // particles of every sph/wall/dirichlet fix
@@ -42,6 +49,7 @@ class FixSPHWallDirichlet : public FixSPHWallTally {
   class SPHMirror *mirror;    // with 'surface': the ghost points; nullptr: Shepard
   std::vector<double> t_ghost;
   std::vector<int> ghost_how;
+  std::vector<double> ghost_depth;
 
   void dummies_shepard();
   void dummies_mirrored();

@@ -33,6 +33,11 @@ class FixSPHWallTally : public Fix {
   int maxsize_restart() override;
   double memory_usage() override;
 
+  // the heat rate into owned wall atom i at the last force evaluation, and
+  // the particle spacing given to the fix (0: none)
+  double rate_into(int i) const { return wall[i][0]; }
+  double spacing_given() const { return spacing; }
+
  protected:
   double spacing;           // particle spacing for the flux of eq 10, 0 when not given
   double rate_previous;     // heat rate into the wall at the previous force evaluation

@@ -128,11 +128,12 @@ void SPHMirror::init(int groupbit_in, int kind, double cut)
    beyond the kernel's reach of the surface, -1 when it is inside the region
 ------------------------------------------------------------------------- */
 
-int SPHMirror::ghost_point(const double *x, double *ghost)
+int SPHMirror::ghost_point(const double *x, double *ghost, double *depth)
 {
   double xs[3] = {x[0], x[1], x[2]};
   if (region->surface_exterior(xs, cutoff) > 0) {
     const auto &c = region->contact[0];
+    if (depth) *depth = c.r;
     ghost[0] = x[0] - 2.0 * c.delx;
     ghost[1] = x[1] - 2.0 * c.dely;
     ghost[2] = x[2] - 2.0 * c.delz;
@@ -193,7 +194,8 @@ void SPHMirror::cells_around(const double *p, int *c_lo, int *c_hi) const
 
 /* ---------------------------------------------------------------------- */
 
-void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how)
+void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
+                            std::vector<double> *depth)
 {
   double *const *const x = atom->x;
   const double *const esph = atom->esph;
@@ -211,6 +213,7 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how)
 
   ghost.assign(nlocal, 0.0);
   how.assign(nlocal, SPHI_NONE);
+  if (depth) depth->assign(nlocal, 0.0);
   first_neighbour.assign(nlocal + 1, 0);
   neighbours.clear();
   weights.clear();
@@ -220,7 +223,7 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how)
     first_neighbour[i] = neighbours.size();
     if (!(mask[i] & groupbit)) continue;
     double g[3];
-    if (ghost_point(x[i], g) <= 0) continue;
+    if (ghost_point(x[i], g, depth ? &(*depth)[i] : nullptr) <= 0) continue;
     int c_lo[3], c_hi[3];
     cells_around(g, c_lo, c_hi);
     sphi_point point;

@@ -40,8 +40,10 @@ class SPHMirror : protected Pointers {
 
   // the temperature at the ghost point of every owned atom of the group,
   // and how it was found (sphi_result); ghost[i], how[i] for owned atoms;
-  // how = SPHI_NONE for wall atoms beyond the kernel's reach of the surface
-  void interpolate(std::vector<double> &ghost, std::vector<int> &how);
+  // how = SPHI_NONE for wall atoms beyond the kernel's reach of the surface;
+  // depth (when given): the distance from the surface to the ghost point
+  void interpolate(std::vector<double> &ghost, std::vector<int> &how,
+                   std::vector<double> *depth = nullptr);
 
   // mark the owned wall atoms within the kernel's reach of a particle of a
   // wall that holds a temperature (a corner with a Dirichlet or isothermal
@@ -77,7 +79,7 @@ class SPHMirror : protected Pointers {
   int ncell[3];
 
   void medium_groups();
-  int ghost_point(const double *x, double *ghost);
+  int ghost_point(const double *x, double *ghost, double *depth = nullptr);
   void bin_atoms();
   void cells_around(const double *p, int *c_lo, int *c_hi) const;
 };

@@ -7,6 +7,12 @@
   conserve   a closed box with adiabatic walls on every side keeps the
              fluid's energy to round-off (conserve yes); without giving the
              wall's intake back (conserve no) it drifts, so the check can fail
+  nusselt    compute sph/nusselt on Dirichlet mirror walls left (T = 1) and
+             right (T = 0) of jittered fluid holding T = 1 - x: the gradient
+             estimate is 1 to 1e-10 on each first-layer atom of both walls
+             and 0 on every other wall atom; the heat estimate is within 5 %
+             of 1, positive on both walls (dT = 1 hot, -1 cold), and its
+             per-atom values times the spacing add up to the wall mean
   conduction the cavity of examples/convection-cavity without buoyancy: the
              mean Nusselt number of both walls is 1 within --tolerance, and
              the zero-order walls (Shepard dummies, k = 0 top and bottom) are
@@ -105,6 +111,49 @@ write_dump      wall custom walls.dump id x y c_T modify sort id format float %.
     return ok
 
 
+def check_nusselt(a, work):
+    script = BOX.format(plugin=a.plugin) + """
+region          left block INF 0 INF INF INF INF units box
+region          right block 1 INF INF INF INF INF units box
+group           hot region left
+group           cold region right
+group           held union hot cold
+group           sides subtract wall held
+variable        Tlin atom 1.0-x
+sph/set         fluid temperature v_Tlin
+fix             hot hot sph/wall/dirichlet 1.0 surface cavity
+fix             cold cold sph/wall/dirichlet 0.0 surface cavity
+fix             adiabatic sides sph/wall/adiabatic surface cavity
+compute         nu_hot hot sph/nusselt hot 1.0 1.0 1.0
+compute         nu_cold cold sph/nusselt cold -1.0 1.0 type 1
+thermo_style    custom step c_nu_hot[*] c_nu_cold[*]
+thermo_modify   format float %.17g
+run             0
+write_dump      held custom held.dump id x y c_nu_hot[1] c_nu_hot[2] c_nu_cold[1] c_nu_cold[2] &
+                modify sort id format float %.17g
+"""
+    out = run_lammps(a.lmp, script, work)
+    row = [line.split() for line in out.splitlines() if re.match(r"^\s+0\s+\S+\s+\S+\s+\S+\s+\S+\s*$", line)][0]
+    hot_heat, hot_grad, cold_heat, cold_grad = (float(w) for w in row[1:])
+    d = read_dump(os.path.join(work, "held.dump"))
+    ok = True
+    for side, heat, grad, is_side in (("hot", hot_heat, hot_grad, d["x"] < 0),
+                                      ("cold", cold_heat, cold_grad, d["x"] > 1)):
+        local_heat, local_grad = d[f"c_nu_{side}[1]"][is_side], d[f"c_nu_{side}[2]"][is_side]
+        first = np.abs(np.abs(d["x"][is_side] - 0.5) - 0.55) < 1e-9
+        first &= (d["y"][is_side] > 0) & (d["y"][is_side] < 1)
+        grad_err = max(abs(grad - 1.0), np.abs(local_grad[first] - 1.0).max())
+        others = np.abs(local_grad[~first]).max()
+        summed = local_heat.sum() * 0.1
+        good = (first.sum() == 10 and grad_err < 1e-10 and others == 0.0 and
+                abs(heat - 1.0) < 0.05 and abs(summed - heat) < 1e-12 * abs(heat))
+        ok &= good
+        print(f"{'ok' if good else 'FAIL'}: {side} wall: Nu from the gradient {grad:.15f} (largest "
+              f"first-layer error {grad_err:.1e} over {first.sum()} atoms, largest elsewhere "
+              f"{others:.1e}); from the heat {heat:.6f}, per-atom sum {summed:.6f}")
+    return ok
+
+
 def fluid_energy_drift(a, work, conserve):
     script = BOX.format(plugin=a.plugin) + f"""
 variable        Tinit atom 1.0+x*y*y+0.5*sin(4.0*x)
@@ -162,7 +211,7 @@ def check_conduction(a, work):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    p.add_argument("check", choices=["linear", "conserve", "conduction"])
+    p.add_argument("check", choices=["linear", "conserve", "nusselt", "conduction"])
     p.add_argument("--lmp", required=True)
     p.add_argument("--plugin", required=True)
     p.add_argument("--n", type=int, default=20)
@@ -170,7 +219,7 @@ def main():
     a = p.parse_args()
     a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
     with tempfile.TemporaryDirectory() as work:
-        ok = {"linear": check_linear, "conserve": check_conserve,
+        ok = {"linear": check_linear, "conserve": check_conserve, "nusselt": check_nusselt,
               "conduction": check_conduction}[a.check](a, work)
     return 0 if ok else 1
 
