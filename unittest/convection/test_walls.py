@@ -126,14 +126,20 @@ fix             cold cold sph/wall/dirichlet 0.0 surface cavity
 fix             adiabatic sides sph/wall/adiabatic surface cavity
 compute         nu_hot hot sph/nusselt hot 1.0 1.0 1.0
 compute         nu_cold cold sph/nusselt cold -1.0 1.0 type 1
+# LAMMPS 29Sep2021 dumps a per-atom compute only on a step that used it
+compute         hot_local hot reduce sum c_nu_hot[1]
+compute         cold_local cold reduce sum c_nu_cold[1]
 thermo_style    custom step c_nu_hot[*] c_nu_cold[*]
 thermo_modify   format float %.17g
 run             0
+thermo_style    custom step c_hot_local c_cold_local
+run             0 post no
 write_dump      held custom held.dump id x y c_nu_hot[1] c_nu_hot[2] c_nu_cold[1] c_nu_cold[2] &
                 modify sort id format float %.17g
 """
     out = run_lammps(a.lmp, script, work)
-    row = [line.split() for line in out.splitlines() if re.match(r"^\s+0\s+\S+\s+\S+\s+\S+\s+\S+\s*$", line)][0]
+    row = [line.split() for line in out.splitlines()
+           if re.match(r"^\s+0\s+\S+\s+\S+\s+\S+\s+\S+\s*$", line)][0]
     hot_heat, hot_grad, cold_heat, cold_grad = (float(w) for w in row[1:])
     d = read_dump(os.path.join(work, "held.dump"))
     ok = True
