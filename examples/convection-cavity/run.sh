@@ -1,10 +1,13 @@
 #!/bin/sh
-# Run the differentially heated cavity and print the mean Nusselt numbers.
+# Run the differentially heated cavity, compare it with the benchmark and the
+# reference solver, and write cavity.png.
 #   ./run.sh              Ra = 1e4, 40 x 40 fluid particles, to t = 0.3 (about 1 minute)
+#                         (t = 0.6 at Ra = 1e3)
 #   ./run.sh conduction   Ra = 0: Nu must be 1 (20 x 20, to t = 0.6)
 #   RA=1e5 N=60 ./run.sh  another Rayleigh number or resolution
 # Environment: LMP (LAMMPS binary), PLUGIN (sphthermalplugin.so), NP (MPI
-# ranks), OUT (output directory, default ./out), RA, N, TEND, KERNEL, HDX.
+# ranks), OUT (output directory, default ./out), RA, N, TEND, KERNEL, HDX, BG
+# (background pressure / (rho0 c0^2)), MAX_NU_ERROR (exit 1 above it, %).
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../common.sh"
@@ -14,8 +17,13 @@ if [ "${1:-}" = conduction ]; then
 fi
 RA=${RA:-1e4}
 N=${N:-40}
-TEND=${TEND:-0.3}
+TEND=${TEND:-0}
 $run "$LMP" -in "$here/in.cavity" -var plugin "$PLUGIN" -var ra "$RA" -var n "$N" \
-  -var tend "$TEND" -var kernel "${KERNEL:-quintic}" -var hdx "${HDX:-1.0}" \
-  -var out cavity.dump -log log.cavity | grep -E "^Ra =|final:"
-echo "de Vahl Davis (1983) mean Nu: 1.118 (Ra 1e3), 2.243 (1e4), 4.519 (1e5), 8.800 (1e6); 1 without buoyancy"
+  -var tend "$TEND" -var kernel "${KERNEL:-wendland}" -var hdx "${HDX:-2.0}" \
+  -var bg "${BG:-0.1}" -var out cavity.dump -log log.cavity | grep -E "^Ra =|final"
+if [ "$RA" = 0 ]; then
+  echo "without buoyancy the exact Nu is 1"
+  exit 0
+fi
+"$PYTHON" "$here/analyse.py" cavity.dump --log log.cavity --ra "$RA" --png cavity.png \
+  ${MAX_NU_ERROR:+--max-nu-error "$MAX_NU_ERROR"}

@@ -13,6 +13,10 @@
              and 0 on every other wall atom; the heat estimate is within 5 %
              of 1, positive on both walls (dT = 1 hot, -1 cold), and its
              per-atom values times the spacing add up to the wall mean
+  cavity     the cavity with buoyancy at --ra, --n x --n particles, to
+             --tend: the mean Nu of both walls (from their heat, averaged
+             over the last third of the run) within --tolerance (relative)
+             of de Vahl Davis (1983), and the flow upward at the hot wall
   conduction the cavity of examples/convection-cavity without buoyancy: the
              mean Nusselt number of both walls is 1 within --tolerance, and
              the zero-order walls (Shepard dummies, k = 0 top and bottom) are
@@ -203,6 +207,55 @@ def cavity_nu(a, work, thermal, n):
     return float(m.group(1)), float(m.group(2))
 
 
+DE_VAHL_DAVIS_NU = {1e3: 1.118, 1e4: 2.243, 1e5: 4.519, 1e6: 8.800}
+
+
+def thermo_rows(text):
+    """The rows of the longest thermo table: {column: array}."""
+    tables, cols, rows = [], None, None
+    for line in text.splitlines():
+        words = line.split()
+        if words[:2] == ["Step", "Time"]:
+            cols, rows = words, []
+            tables.append((cols, rows))
+        elif rows is not None:
+            try:
+                values = [float(w) for w in words]
+            except ValueError:
+                rows = None
+                continue
+            if len(values) == len(cols):
+                rows.append(values)
+            else:
+                rows = None
+    cols, rows = max(tables, key=lambda t: len(t[1]))
+    data = np.array(rows)
+    return {name: data[:, k] for k, name in enumerate(cols)}
+
+
+def check_cavity(a, work):
+    cmd = [a.lmp, "-log", "none", "-in", os.path.join(ROOT, "examples/convection-cavity/in.cavity"),
+           "-var", "plugin", a.plugin, "-var", "ra", str(a.ra), "-var", "n", str(a.n),
+           "-var", "tend", str(a.tend), "-var", "out", "cavity.dump"]
+    proc = subprocess.run(cmd, cwd=work, text=True, capture_output=True)
+    if proc.returncode != 0 or "final:" not in proc.stdout:
+        sys.stdout.write(proc.stdout + proc.stderr)
+        sys.exit("FAIL: cavity run failed")
+    table = thermo_rows(proc.stdout)
+    late = table["Time"] >= 2.0 / 3.0 * a.tend
+    hot, cold = table["c_nu_hot[1]"][late].mean(), table["c_nu_cold[1]"][late].mean()
+    ref = DE_VAHL_DAVIS_NU[a.ra]
+    err = 0.5 * (hot + cold) / ref - 1.0
+    d = read_dump(os.path.join(work, "cavity.dump"))
+    rising = d["vy"][d["x"] < 0.15].mean()
+    ok = abs(err) < a.tolerance and rising > 0.0
+    print(f"{'ok' if ok else 'FAIL'}: Ra {a.ra:g}, {a.n} x {a.n}: mean Nu hot {hot:.4f}, cold "
+          f"{cold:.4f} over {late.sum()} rows from t = {2.0 / 3.0 * a.tend:g}; de Vahl Davis {ref}: "
+          f"error {100 * err:+.2f} % (limit {100 * a.tolerance:g} %); mean vy near the hot wall "
+          f"{rising:.3f} (must be > 0)")
+    return ok
+
+
 def check_conduction(a, work):
     hot, cold = cavity_nu(a, work, "mirror", a.n)
     ok = abs(hot - 1.0) < a.tolerance and abs(cold - 1.0) < a.tolerance
@@ -217,15 +270,18 @@ def check_conduction(a, work):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    p.add_argument("check", choices=["linear", "conserve", "nusselt", "conduction"])
+    p.add_argument("check", choices=["linear", "conserve", "nusselt", "conduction", "cavity"])
     p.add_argument("--lmp", required=True)
     p.add_argument("--plugin", required=True)
     p.add_argument("--n", type=int, default=20)
     p.add_argument("--tolerance", type=float, default=0.002)
+    p.add_argument("--ra", type=float, default=1e4)
+    p.add_argument("--tend", type=float, default=0.3)
     a = p.parse_args()
     a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
     with tempfile.TemporaryDirectory() as work:
         ok = {"linear": check_linear, "conserve": check_conserve, "nusselt": check_nusselt,
+              "cavity": check_cavity,
               "conduction": check_conduction}[a.check](a, work)
     return 0 if ok else 1
 

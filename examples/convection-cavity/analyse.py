@@ -1,0 +1,179 @@
+"""The heated cavity against the benchmark and the reference solver.
+
+Reads the final dump (id x y vx vy c_T) and the log of in.cavity; prints
+the mean Nusselt numbers (averaged over the last third of the run, where
+the flow is steady but for the particles' noise) against de Vahl Davis
+(1983) and the centre-line
+errors against tools/cavity_fv.py (steady, 64 x 64 cells: its own Nu
+error is 2.6e-4 at Ra = 1e4); writes a PNG of isotherms, streamlines and
+the centre-line profiles.
+
+Centre-line values of SPH: Shepard averages (Wendland C2 kernel, radius
+2 dx) at the points of the line. L2 errors as Reece et al. 2024, eqs 35-36:
+sqrt(sum (f_SPH - f_ref)^2 / sum f_ref^2) over the points.
+"""
+
+import argparse
+import os
+import re
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
+from lammps_dump import read_frames  # noqa: E402
+import cavity_fv  # noqa: E402
+
+
+def shepard(px, py, x, y, f, radius):
+    """Kernel-weighted average of f at the points (px, py)."""
+    out = np.empty(len(px))
+    for k, (a, b) in enumerate(zip(px, py)):
+        q = np.hypot(x - a, y - b) / radius
+        w = np.where(q < 1.0, (1.0 - q) ** 4 * (1.0 + 4.0 * q), 0.0)
+        out[k] = (w * f).sum() / w.sum()
+    return out
+
+
+def l2(sph, ref):
+    return np.sqrt(((sph - ref) ** 2).sum() / (ref ** 2).sum())
+
+
+def final_nu(log):
+    text = open(log).read()
+    heat = re.findall(r"final: Nu_hot = (\S+) Nu_cold = (\S+) at t = (\S+)", text)
+    grad = re.findall(r"final, from the wall gradient: Nu_hot = (\S+) Nu_cold = (\S+)", text)
+    if not heat:
+        sys.exit(f"analyse: no 'final:' line in {log}")
+    return [float(v) for v in heat[-1]], [float(v) for v in grad[-1]] if grad else None
+
+
+def thermo_table(log):
+    """The longest thermo table of the log: {column name: array}."""
+    best, cols, rows = None, None, None
+    for line in open(log):
+        words = line.split()
+        if words[:2] == ["Step", "Time"]:
+            cols, rows = words, []
+            continue
+        if rows is not None:
+            try:
+                values = [float(w) for w in words]
+            except ValueError:
+                values = None
+            if values and len(values) == len(cols):
+                rows.append(values)
+                continue
+            if best is None or len(rows) > len(best[1]):
+                best = (cols, rows)
+            rows = None
+    if rows is not None and (best is None or len(rows) > len(best[1])):
+        best = (cols, rows)
+    if not best or not best[1]:
+        sys.exit(f"analyse: no thermo table in {log}")
+    data = np.array(best[1])
+    return {name: data[:, k] for k, name in enumerate(best[0])}
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__)
+    p.add_argument("dump", nargs="?", default="cavity.dump")
+    p.add_argument("--log", default="log.cavity")
+    p.add_argument("--ra", type=float, default=1e4)
+    p.add_argument("--pr", type=float, default=0.71)
+    p.add_argument("--ref-cells", type=int, default=64)
+    p.add_argument("--png", default="cavity.png")
+    p.add_argument("--average-from", type=float, default=2.0 / 3.0,
+                   help="average Nu over the thermo rows from this fraction of the run's time on")
+    p.add_argument("--max-nu-error", type=float, help="fail (exit 1) above this error of mean Nu, %%")
+    args = p.parse_args()
+
+    (nu_hot, nu_cold, t_end), grad = final_nu(args.log)
+    table = thermo_table(args.log)
+    late = table["Time"] >= args.average_from * t_end
+    mean = {k: table[k][late].mean() for k in table if k.startswith("c_nu_")}
+    spread = {k: table[k][late].std() for k in table if k.startswith("c_nu_")}
+    frames = list(read_frames(args.dump))
+    c = frames[-1][1]
+    x, y, vx, vy, T = c["x"], c["y"], c["vx"], c["vy"], c["c_T"]
+    n = int(round(np.sqrt(len(x))))
+    dx = 1.0 / n
+
+    ref = cavity_fv.solve(args.ra, args.pr, n=args.ref_cells)
+    bench = cavity_fv.DE_VAHL_DAVIS.get(args.ra)
+    nu_ref = bench[0] if bench else ref["nu_mean_hot"]
+    nu = 0.5 * (mean["c_nu_hot[1]"] + mean["c_nu_cold[1]"])
+    err = 100.0 * (nu / nu_ref - 1.0)
+    print(f"Ra = {args.ra:g}, {n} x {n} particles, t = {t_end:g}")
+    print(f"at t = {t_end:g}: Nu from the walls' heat: hot {nu_hot:.4f}, cold {nu_cold:.4f}" +
+          (f"; from the wall gradient: hot {grad[0]:.4f}, cold {grad[1]:.4f}" if grad else ""))
+    print(f"averaged over t >= {args.average_from * t_end:g} ({late.sum()} thermo rows):")
+    print(f"  mean Nu from the walls' heat: hot {mean['c_nu_hot[1]']:.4f} (std "
+          f"{spread['c_nu_hot[1]']:.4f}), cold {mean['c_nu_cold[1]']:.4f}, mean {nu:.4f} "
+          f"({err:+.2f} %)")
+    if "c_nu_hot[2]" in mean:
+        g = 0.5 * (mean["c_nu_hot[2]"] + mean["c_nu_cold[2]"])
+        print(f"  mean Nu from the wall gradient: hot {mean['c_nu_hot[2]']:.4f}, cold "
+              f"{mean['c_nu_cold[2]']:.4f}, mean {g:.4f} ({100.0 * (g / nu_ref - 1.0):+.2f} %)")
+    src = "de Vahl Davis (1983)" if bench else "tools/cavity_fv.py"
+    print(f"{src}: Nu {nu_ref}; cavity_fv.py ({args.ref_cells} cells): {ref['nu_mean_hot']:.4f}")
+    print(f"error of the mean Nu from the heat (time average): {err:+.2f} %")
+
+    # centre lines: y = 0.5 (theta, v) and x = 0.5 (theta, u)
+    line = np.linspace(0.5 * dx, 1.0 - 0.5 * dx, n)
+    half = np.full(n, 0.5)
+    th_h = shepard(line, half, x, y, T, 2 * dx)
+    v_h = shepard(line, half, x, y, vy, 2 * dx)
+    th_v = shepard(half, line, x, y, T, 2 * dx)
+    u_v = shepard(half, line, x, y, vx, 2 * dx)
+    rth_h, rv_h = cavity_fv.profiles_at(ref, line)
+    rth_v, ru_v = cavity_fv.vertical_profiles_at(ref, line)
+    print(f"L2 errors on y = 0.5 (Reece et al. 2024, eqs 35-36): theta {l2(th_h, rth_h):.4f}, "
+          f"v {l2(v_h, rv_h):.4f}; on x = 0.5: theta {l2(th_v, rth_v):.4f}, u {l2(u_v, ru_v):.4f}")
+    print(f"largest v on y = 0.5: {v_h.max():.3f} (reference {rv_h.max():.3f})")
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from scipy.interpolate import griddata
+
+    gx, gy = np.meshgrid(np.linspace(0, 1, 101), np.linspace(0, 1, 101))
+    tg = griddata((x, y), T, (gx, gy), method="linear")
+    ug = griddata((x, y), vx, (gx, gy), method="linear", fill_value=0.0)
+    vg = griddata((x, y), vy, (gx, gy), method="linear", fill_value=0.0)
+    cen = ref["centres"]
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.8))
+    levels = np.linspace(0.05, 0.95, 10)
+    ax[0].contour(cen["x"], cen["y"], np.asarray(cen["theta"]).T, levels, colors="k",
+                  linewidths=0.8, linestyles="--")
+    cs = ax[0].contour(gx, gy, tg, levels, cmap="coolwarm")
+    ax[0].clabel(cs, fmt="%.1f", fontsize=7)
+    ax[0].set_title(f"isotherms: SPH (colour), cavity_fv.py (dashed)")
+    speed = np.hypot(ug, vg)
+    ax[1].streamplot(gx, gy, ug, vg, color=speed, cmap="viridis", density=1.2, linewidth=0.8)
+    ax[1].set_title("streamlines of SPH (colour: speed)")
+    for a in ax[:2]:
+        a.set_aspect("equal")
+        a.set_xlim(0, 1)
+        a.set_ylim(0, 1)
+    ax[2].plot(line, th_h, "o", ms=3, label="theta, SPH")
+    ax[2].plot(ref["hmid"]["x"], ref["hmid"]["theta"], "-", label="theta, cavity_fv.py")
+    scale = max(1.0, np.abs(rv_h).max())
+    ax[2].plot(line, v_h / scale, "s", ms=3, label=f"v / {scale:.3g}, SPH")
+    ax[2].plot(ref["hmid"]["x"], np.asarray(ref["hmid"]["v"]) / scale, "-", label="v, cavity_fv.py")
+    ax[2].set_xlabel("x (y = 0.5)")
+    ax[2].legend(fontsize=8)
+    ax[2].set_title(f"Nu {nu:.3f} (heat) vs {nu_ref} ({err:+.1f} %)")
+    fig.suptitle(f"differentially heated cavity, Ra = {args.ra:g}, Pr = {args.pr}, {n} x {n} particles")
+    fig.tight_layout()
+    fig.savefig(args.png, dpi=110)
+    print(f"wrote {os.path.abspath(args.png)}")
+    if args.max_nu_error is not None and abs(err) > args.max_nu_error:
+        print(f"FAIL: |error of mean Nu| {abs(err):.2f} % > {args.max_nu_error} %")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
