@@ -3,6 +3,7 @@
 # reference solver, and write cavity.png.
 #   ./run.sh              Ra = 1e4, 40 x 40 fluid particles, to t = 0.3 (about 1 minute)
 #                         (t = 0.6 at Ra = 1e3)
+#   ./run.sh quick        the same at 20 x 20 (about 10 s)
 #   ./run.sh conduction   Ra = 0: Nu must be 1 (20 x 20, to t = 0.6)
 #   RA=1e5 N=60 ./run.sh  another Rayleigh number or resolution
 # Environment: LMP (LAMMPS binary), PLUGIN (sphthermalplugin.so), NP (MPI
@@ -12,9 +13,10 @@ set -e
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../common.sh"
 
-if [ "${1:-}" = conduction ]; then
-  RA=0 N=${N:-20} TEND=${TEND:-0.6}
-fi
+case "${1:-}" in
+  conduction) RA=0 N=${N:-20} TEND=${TEND:-0.6} ;;
+  quick) N=${N:-20} ;;
+esac
 RA=${RA:-1e4}
 N=${N:-40}
 TEND=${TEND:-0}
