@@ -1,11 +1,13 @@
 /* Unit tests of the convection terms, in C99: the Boussinesq acceleration
    (sph_buoyancy.h) and the first-order corrected interpolation at a point
-   (sph_interpolation.h) that the mirror walls use at their ghost points.
-   Usage: test_convection_terms buoyancy | linear | thin                  */
+   (sph_interpolation.h) that the mirror walls use at their ghost points,
+   and particle shifting (sph_shift.h).
+   Usage: test_convection_terms buoyancy | linear | thin | shift          */
 
 #include "sph_buoyancy.h"
 #include "sph_interpolation.h"
 #include "sph_kernels.h"
+#include "sph_shift.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -135,10 +137,31 @@ static void test_thin(void)
   check(how == SPHI_NONE && value == -7.0, "no neighbour: value untouched", value, -7.0);
 }
 
+/* the shift runs down grad C, scales with D h |v| dt, and the cap shortens
+   it to the limit without turning it */
+static void test_shift(void)
+{
+  const double grad_c[3] = {3.0, -4.0, 0.0};
+  double dr[3];
+  sphs_skillen(2.0, 0.1, 5.0, 1e-3, grad_c, dr);
+  check(dr[0] < 0.0 && dr[1] > 0.0 && dr[2] == 0.0, "down the gradient of C",
+        dr[0] * grad_c[0] + dr[1] * grad_c[1], -1.0);
+  check(fabs(dr[0] + 2.0 * 0.1 * 5.0 * 1e-3 * 3.0) < 1e-17 &&
+            fabs(dr[1] - 2.0 * 0.1 * 5.0 * 1e-3 * 4.0) < 1e-17,
+        "magnitude D h |v| dt |grad C|", sqrt(dr[0] * dr[0] + dr[1] * dr[1]), 5e-3);
+  sphs_skillen(2.0, 0.1, 0.0, 1e-3, grad_c, dr);
+  check(dr[0] == 0.0 && dr[1] == 0.0, "no shift at rest", dr[0], 0.0);
+  sphs_skillen(2.0, 0.1, 5.0, 1e-3, grad_c, dr);
+  check(!sphs_cap(dr, 1.0) && fabs(dr[0] + 3e-3) < 1e-17, "below the cap: unchanged", dr[0], -3e-3);
+  check(sphs_cap(dr, 1e-3) && fabs(sqrt(dr[0] * dr[0] + dr[1] * dr[1]) - 1e-3) < 1e-18 &&
+            fabs(dr[0] / dr[1] + 0.75) < 1e-15,
+        "capped: the limit's length, the same direction", dr[0] / dr[1], -0.75);
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 2) {
-    fprintf(stderr, "usage: %s buoyancy|linear|thin\n", argv[0]);
+    fprintf(stderr, "usage: %s buoyancy|linear|thin|shift\n", argv[0]);
     return 2;
   }
   if (strcmp(argv[1], "buoyancy") == 0)
@@ -147,6 +170,8 @@ int main(int argc, char **argv)
     test_linear();
   else if (strcmp(argv[1], "thin") == 0)
     test_thin();
+  else if (strcmp(argv[1], "shift") == 0)
+    test_shift();
   else {
     fprintf(stderr, "unknown test %s\n", argv[1]);
     return 2;

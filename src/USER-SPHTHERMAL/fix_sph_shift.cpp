@@ -1,0 +1,246 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   fix sph/shift: particle shifting (sph_shift.h). At the end of each step,
+   with the positions of that step:
+     dr_i = -D h |v_i| dt sum_j V_j grad_i W_ij    (Reece et al. 2024, eq 38)
+   over every neighbour j (walls too, so that particles keep off them),
+   shortened to at most cap * dx_i (dx_i = V_i^(1/d)); then x_i += dr_i for
+   the atoms of the group. With 'correct yes' the temperature follows:
+     T_i += dr_i . grad T_i
+   with the first-order corrected gradient (sph_gradient.h), exact for a
+   linear field; the energy that adds is tallied.
+------------------------------------------------------------------------- */
+
+#include "fix_sph_shift.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "pair.h"
+#include "sph_checks.h"
+#include "sph_compat.h"
+#include "sph_gradient.h"
+#include "sph_kernels.h"
+#include "sph_shift.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static const char cmd[] = "fix sph/shift";
+
+/* ---------------------------------------------------------------------- */
+
+FixSPHShift::FixSPHShift(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), coefficient(0.0), cap(0.1), correct(0), kernel_kind(0), cutoff(0.0),
+    list(nullptr), energy(0.0), largest(0.0), capped(0)
+{
+  if (narg < 5) error->all(FLERR, "Illegal {} command: expected <form> <coefficient>", cmd);
+  if (strcmp(arg[3], "skillen") != 0)
+    error->all(FLERR, "Illegal {} command: unknown form '{}' (known: skillen)", cmd, arg[3]);
+  coefficient = utils::numeric(FLERR, arg[4], false, lmp);
+  if (!(coefficient > 0.0) || !std::isfinite(coefficient))
+    error->all(FLERR,
+               "Illegal {} command: coefficient {} must be > 0 (particles move away from where "
+               "they crowd; Reece et al.'s D = -2 is 2 here)",
+               cmd, arg[4]);
+  int iarg = 5;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "cap") == 0) {
+      if (iarg + 1 >= narg) error->all(FLERR, "Illegal {} command: missing value after 'cap'", cmd);
+      cap = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(cap > 0.0) || !(cap <= 0.5))
+        error->all(FLERR, "Illegal {} command: cap {} must be > 0 and <= 0.5 (of the spacing)",
+                   cmd, arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "correct") == 0) {
+      if (iarg + 1 >= narg)
+        error->all(FLERR, "Illegal {} command: missing value after 'correct'", cmd);
+      correct = SPHCompat::yes_no(error, FLERR, cmd, "correct", arg[iarg + 1]) ? 1 : 0;
+      iarg += 2;
+    } else
+      error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
+  }
+  if (!atom->rho_flag || (correct && (!atom->esph_flag || !atom->cv_flag)))
+    error->all(FLERR, "Fix sph/shift requires atom style sph (rho{})", correct ? ", esph, cv" : "");
+  scalar_flag = 1;
+  extscalar = 1;
+  vector_flag = 1;
+  size_vector = 3;
+  extvector = 0;
+  global_freq = 1;
+  nevery = 1;
+  restart_global = 1;
+  comm_forward = 2;
+}
+
+int FixSPHShift::setmask()
+{
+  return END_OF_STEP;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHShift::init()
+{
+  // the kernel of the flow
+  Pair *pair = force->pair_match("^sph/harmonic/visc", 0);
+  if (!pair) error->all(FLERR, "Fix sph/shift requires pair style sph/harmonic/visc");
+  int dim;
+  kernel_kind = *(int *) pair->extract("kernel_kind", dim);
+  cutoff = *(double *) pair->extract("cutoff", dim);
+  SPHCheck::atom_state(lmp, cmd, 0, SPHCheck::RHO | (correct ? SPHCheck::CV : 0));
+  SPHCompat::request_full_list(neighbor, this, instance_me);
+}
+
+void FixSPHShift::init_list(int /*id*/, NeighList *ptr)
+{
+  list = ptr;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHShift::end_of_step()
+{
+  double *const *const x = atom->x;
+  const double *const *const v = atom->v;
+  const double *const rho = atom->rho;
+  const double *const rmass = atom->rmass;
+  const double *const mass = atom->mass;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const int dim = domain->dimension;
+  const sphk_kernel kernel = sphk_make(kernel_kind, dim, cutoff);
+  const double h = cutoff / sphk_support(kernel_kind);
+  const double cutsq = cutoff * cutoff;
+  const double dt = update->dt;
+  // the ghosts' rho and esph as the step ended on their owners' ranks
+  SPHCompat::forward_comm(comm, this);
+
+  shift.assign(3 * (size_t) nlocal, 0.0);
+  std::vector<double> dtemp(correct ? nlocal : 0, 0.0);
+  double largest_local = 0.0;
+  int capped_local = 0;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    if (!(mask[i] & groupbit)) continue;
+    const double speed = sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+    const double t_i = correct ? atom->esph[i] / atom->cv[i] : 0.0;
+    double grad_c[3] = {0.0, 0.0, 0.0}, g[3] = {0.0, 0.0, 0.0};
+    double L[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    const int *const jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+      if (rsq >= cutsq || rsq == 0.0) continue;
+      const double r = sqrt(rsq);
+      const double volume_j = (rmass ? rmass[j] : mass[type[j]]) / rho[j];
+      // grad_i W_ij = dW/dr (r_i - r_j) / r
+      const double f = sphk_dwdr(&kernel, r) / r;
+      const double grad_w[3] = {f * del[0], f * del[1], f * del[2]};
+      for (int a = 0; a < 3; a++) grad_c[a] += volume_j * grad_w[a];
+      if (correct) {
+        const double dT = atom->esph[j] / atom->cv[j] - t_i;
+        for (int a = 0; a < 3; a++) g[a] += volume_j * dT * grad_w[a];
+        for (int a = 0; a < 3; a++)
+          for (int b = 0; b < 3; b++) L[3 * a + b] -= volume_j * del[a] * grad_w[b];
+      }
+    }
+    double *dr = &shift[3 * (size_t) i];
+    sphs_skillen(coefficient, h, speed, dt, grad_c, dr);
+    if (dim == 2) dr[2] = 0.0;
+    const double spacing = pow((rmass ? rmass[i] : mass[type[i]]) / rho[i], 1.0 / dim);
+    capped_local += sphs_cap(dr, cap * spacing);
+    largest_local = MAX(largest_local,
+                        sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]) / spacing);
+    if (correct) {
+      double grad_t[3] = {g[0], g[1], g[2]};
+      sphg_solve_transposed(L, g, grad_t, dim);
+      dtemp[i] = dr[0] * grad_t[0] + dr[1] * grad_t[1] + dr[2] * grad_t[2];
+    }
+  }
+
+  // move only after every shift is known: each used the positions of the step
+  double energy_local = 0.0;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    for (int a = 0; a < 3; a++) x[i][a] += shift[3 * (size_t) i + a];
+    if (correct) {
+      atom->esph[i] += atom->cv[i] * dtemp[i];
+      energy_local += (rmass ? rmass[i] : mass[type[i]]) * atom->cv[i] * dtemp[i];
+    }
+  }
+  double sums[2] = {energy_local, (double) capped_local}, totals[2];
+  MPI_Allreduce(sums, totals, 2, MPI_DOUBLE, MPI_SUM, world);
+  energy += totals[0];
+  capped = (int) totals[1];
+  MPI_Allreduce(&largest_local, &largest, 1, MPI_DOUBLE, MPI_MAX, world);
+}
+
+int FixSPHShift::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    buf[m++] = atom->rho[send[k]];
+    buf[m++] = correct ? atom->esph[send[k]] : 0.0;
+  }
+  return m;
+}
+
+void FixSPHShift::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    atom->rho[first + k] = buf[m++];
+    if (correct)
+      atom->esph[first + k] = buf[m];
+    m++;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   scalar: energy the temperature correction has added; vector: that
+   energy, the largest shift of the last step over the atom's spacing, the
+   atoms shortened to the cap in it
+------------------------------------------------------------------------- */
+
+double FixSPHShift::compute_scalar()
+{
+  return energy;
+}
+
+double FixSPHShift::compute_vector(int n)
+{
+  if (n == 0) return energy;
+  if (n == 1) return largest;
+  return capped;
+}
+
+/* ----------------------------------------------------------------------
+   the tallied energy carries across restarts
+------------------------------------------------------------------------- */
+
+void FixSPHShift::write_restart(FILE *fp)
+{
+  if (comm->me == 0) {
+    const int size = sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(&energy, sizeof(double), 1, fp);
+  }
+}
+
+void FixSPHShift::restart(char *buf)
+{
+  energy = *(double *) buf;
+}

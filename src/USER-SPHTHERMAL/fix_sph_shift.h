@@ -1,0 +1,55 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(sph/shift,FixSPHShift);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_SPH_SHIFT_H
+#define LMP_FIX_SPH_SHIFT_H
+
+#include "fix.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+// Particle shifting at the end of each step: the atoms of the group move
+// down the gradient of the kernel sum of the particles' volumes (Skillen
+// et al. 2013; Reece et al. 2024, eq 38), by at most a fraction of their
+// spacing; optionally their temperature follows, to first order.
+class FixSPHShift : public Fix {
+ public:
+  FixSPHShift(class LAMMPS *, int, char **);
+  int setmask() override;
+  void init() override;
+  void init_list(int, class NeighList *) override;
+  void end_of_step() override;
+  double compute_scalar() override;
+  double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  void restart(char *) override;
+
+ protected:
+  double coefficient;    // D
+  double cap;            // largest shift / spacing
+  int correct;           // 1: T_i += dr_i . grad T_i
+  int kernel_kind;
+  double cutoff;
+  class NeighList *list;
+  std::vector<double> shift;    // per owned atom, 3 each
+  double energy;                // energy the correction has added since the fix was defined
+  double largest;               // largest shift / spacing of the last step
+  int capped;                   // atoms shortened to the cap in the last step
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

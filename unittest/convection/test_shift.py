@@ -1,0 +1,204 @@
+#!/usr/bin/env python3
+"""Checks of fix sph/shift, run through LAMMPS.
+
+  lattice   a periodic square lattice moving at a uniform velocity: every
+            particle's kernel sum of volumes is the same, so no particle is
+            shifted (positions on the lattice to 1e-12 after 100 steps)
+  spread    jittered particles given a velocity but held by fix
+            sph/stationary, so that only the shift moves them: the spread of
+            the kernel sums of volumes falls by at least half in 200 steps
+            (with the sign reversed, particles would crowd and it would
+            grow), and the walls and a group left out do not move at all
+  linear    with 'correct yes' the temperature of a linear field follows the
+            shifted particles exactly (to 1e-10), next to walls too, and the
+            fix's energy equals the change of sum m cv T of the group
+
+Usage: test_shift.py CHECK --lmp LMP --plugin PLUGIN
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+BOX = """plugin load {plugin}
+units           si
+dimension       2
+atom_style      sph
+boundary        {boundary} p
+atom_modify     map array
+lattice         sq 0.1 origin 0.5 0.5 0.0
+region          box block {lo} {hi} {lo} {hi} -0.5 0.5
+create_box      2 box
+create_atoms    1 region box
+region          inner block 0 1 0 1 INF INF units box
+group           fluid region inner
+group           wall subtract all fluid
+set             group wall type 2
+fix             materials all sph/materials type * conductivity constant 1.0 cv 2.0 &
+                viscosity constant 0.1 eos linear 10.0 background 10.0 rho0 1.0
+sph/set         all materials spacing 0.1 temperature 0.0
+pair_style      hybrid/overlay sph/harmonic/visc wendland 0.4 sph/cleary/heat wendland 0.4
+pair_coeff      * * sph/harmonic/visc
+pair_coeff      * * sph/cleary/heat
+neigh_modify    exclude type 2 2
+compute         e fluid property/atom esph
+compute         esum fluid reduce sum c_e
+"""
+
+
+def run_lammps(lmp, script, cwd):
+    with tempfile.NamedTemporaryFile("w", suffix=".in", dir=cwd, delete=False) as f:
+        f.write(script)
+        path = f.name
+    try:
+        proc = subprocess.run([lmp, "-log", "none", "-in", path], cwd=cwd, text=True,
+                              capture_output=True)
+    finally:
+        os.unlink(path)
+    if proc.returncode != 0 or "ERROR" in proc.stdout:
+        sys.stdout.write(proc.stdout + proc.stderr)
+        sys.exit("FAIL: LAMMPS run failed")
+    return proc.stdout
+
+
+def read_dump(path):
+    with open(path) as f:
+        lines = f.read().splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))
+    names = lines[start].split()[2:]
+    data = np.array([[float(w) for w in line.split()] for line in lines[start + 1:]])
+    return {name: data[:, k] for k, name in enumerate(names)}
+
+
+def kernel_sums(x, y, volume, period=None, radius=0.4):
+    """sum_j V_j W_ij (Wendland C2 in 2d, support radius), periodic in both
+    directions when period is given; i = j included."""
+    dx = x[:, None] - x[None, :]
+    dy = y[:, None] - y[None, :]
+    if period:
+        dx -= period * np.round(dx / period)
+        dy -= period * np.round(dy / period)
+    q = np.hypot(dx, dy) / radius
+    h = radius / 2.0
+    w = np.where(q < 1.0, (1.0 - q) ** 4 * (1.0 + 4.0 * q), 0.0) * 7.0 / (4.0 * np.pi * h * h)
+    return (w * volume).sum(axis=1)
+
+
+def check_lattice(a, work):
+    script = BOX.format(plugin=a.plugin, boundary="p p", lo=0, hi=10) + """
+mass            2 0.01
+velocity        all set 0.3 0.2 0.0 units box
+fix             integrate all sph
+fix             shift all sph/shift skillen 2.0
+timestep        1.0e-3
+thermo_style    custom step f_shift[2]
+run             100
+write_dump      all custom lattice.dump id x y modify sort id format float %.17g
+"""
+    run_lammps(a.lmp, script, work)
+    d = read_dump(os.path.join(work, "lattice.dump"))
+    # on the lattice moved by v t (t = 0.1), wrapped into the periodic box
+    gx = (d["x"] - 0.3 * 0.1 - 0.05) / 0.1
+    gy = (d["y"] - 0.2 * 0.1 - 0.05) / 0.1
+    off = max(np.abs(gx - np.round(gx)).max(), np.abs(gy - np.round(gy)).max()) * 0.1
+    ok = off < 1e-12
+    print(f"{'ok' if ok else 'FAIL'}: moving periodic lattice, 100 steps: largest distance from the "
+          f"lattice {off:.2e} (limit 1e-12)")
+    return ok
+
+
+def check_spread(a, work):
+    script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + """
+region          corner block 0 0.3 0 0.3 INF INF units box
+group           corner region corner
+group           moved subtract fluid corner
+variable        jx atom 0.03*sin(37.0*x+11.0*y)
+variable        jy atom 0.03*cos(23.0*x-29.0*y)
+displace_atoms  fluid move v_jx v_jy 0.0 units box
+velocity        all set 1.0 0.5 0.0 units box
+write_dump      all custom before.dump id x y modify sort id format float %.17g
+fix             hold all sph/stationary
+fix             shift moved sph/shift skillen 2.0
+timestep        1.0e-3
+thermo_style    custom step f_shift[2] f_shift[3]
+run             200
+write_dump      all custom after.dump id x y modify sort id format float %.17g
+"""
+    run_lammps(a.lmp, script, work)
+    b = read_dump(os.path.join(work, "before.dump"))
+    f = read_dump(os.path.join(work, "after.dump"))
+    fluid = (b["x"] > 0) & (b["x"] < 1) & (b["y"] > 0) & (b["y"] < 1)
+    corner = fluid & (b["x"] < 0.3) & (b["y"] < 0.3)
+    moved = fluid & ~corner
+    volume = np.full(len(b["x"]), 0.01)
+    c0 = kernel_sums(b["x"], b["y"], volume)
+    c1 = kernel_sums(f["x"], f["y"], volume)
+    spread0, spread1 = c0[moved].std(), c1[moved].std()
+    step = np.hypot(f["x"] - b["x"], f["y"] - b["y"])
+    still = np.abs(f["x"] - b["x"]).max(initial=0.0, where=~moved) + \
+        np.abs(f["y"] - b["y"]).max(initial=0.0, where=~moved)
+    ok = spread1 < 0.5 * spread0 and step[moved].max() > 0.0 and still == 0.0
+    print(f"{'ok' if ok else 'FAIL'}: spread of the kernel sums of the shifted particles "
+          f"{spread0:.4e} -> {spread1:.4e} (must halve); largest shift {step[moved].max():.3e}; "
+          f"largest move of walls and the group left out {still:.1e} (must be 0)")
+    return ok
+
+
+def check_linear(a, work):
+    script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + """
+variable        jx atom 0.03*sin(37.0*x+11.0*y)
+variable        jy atom 0.03*cos(23.0*x-29.0*y)
+displace_atoms  fluid move v_jx v_jy 0.0 units box
+variable        Tlin atom 0.2+0.7*x-0.4*y
+sph/set         all temperature v_Tlin
+pair_style      sph/harmonic/visc wendland 0.4
+pair_coeff      * *
+velocity        all set 1.0 0.5 0.0 units box
+# no integrator: only the shift moves particles and changes T
+fix             shift fluid sph/shift skillen 5.0 correct yes
+timestep        2.0e-3
+variable        energy equal c_esum*mass[1]
+thermo_style    custom step v_energy f_shift
+thermo_modify   format float %.17g
+run             0
+run             50
+compute         T fluid sph/t/atom
+compute         Tmax fluid reduce max c_T
+thermo_style    custom step c_Tmax v_energy f_shift
+thermo_modify   format float %.17g
+run             0 post no
+write_dump      fluid custom linear.dump id x y c_T modify sort id format float %.17g
+"""
+    out = run_lammps(a.lmp, script, work)
+    rows = [line.split() for line in out.splitlines() if re.match(r"^\s+\d+(\s+\S+){2,3}\s*$", line)]
+    e_first, e_last = float(rows[0][1]), float(rows[-1][-2])
+    tally = float(rows[-1][-1])
+    d = read_dump(os.path.join(work, "linear.dump"))
+    err = np.abs(d["c_T"] - (0.2 + 0.7 * d["x"] - 0.4 * d["y"])).max()
+    energy_err = abs((e_last - e_first) - tally)
+    ok = err < 1e-10 and energy_err < 1e-12 * max(1.0, abs(e_first)) and abs(tally) > 1e-9
+    print(f"{'ok' if ok else 'FAIL'}: linear T follows the shifted particles: largest error "
+          f"{err:.2e} (limit 1e-10); energy change {e_last - e_first:.6e}, tallied {tally:.6e} "
+          f"(difference {energy_err:.1e})")
+    return ok
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    p.add_argument("check", choices=["lattice", "spread", "linear"])
+    p.add_argument("--lmp", required=True)
+    p.add_argument("--plugin", required=True)
+    a = p.parse_args()
+    a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
+    with tempfile.TemporaryDirectory() as work:
+        ok = {"lattice": check_lattice, "spread": check_spread, "linear": check_linear}[a.check](
+            a, work)
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
