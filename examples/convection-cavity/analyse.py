@@ -23,6 +23,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
 from lammps_dump import read_frames  # noqa: E402
+from lammps_log import longest_thermo_table  # noqa: E402
 import cavity_fv  # noqa: E402
 
 
@@ -49,33 +50,6 @@ def final_nu(log):
     return [float(v) for v in heat[-1]], [float(v) for v in grad[-1]] if grad else None
 
 
-def thermo_table(log):
-    """The longest thermo table of the log: {column name: array}."""
-    best, cols, rows = None, None, None
-    for line in open(log):
-        words = line.split()
-        if words[:2] == ["Step", "Time"]:
-            cols, rows = words, []
-            continue
-        if rows is not None:
-            try:
-                values = [float(w) for w in words]
-            except ValueError:
-                values = None
-            if values and len(values) == len(cols):
-                rows.append(values)
-                continue
-            if best is None or len(rows) > len(best[1]):
-                best = (cols, rows)
-            rows = None
-    if rows is not None and (best is None or len(rows) > len(best[1])):
-        best = (cols, rows)
-    if not best or not best[1]:
-        sys.exit(f"analyse: no thermo table in {log}")
-    data = np.array(best[1])
-    return {name: data[:, k] for k, name in enumerate(best[0])}
-
-
 def main():
     p = argparse.ArgumentParser(description=__doc__)
     p.add_argument("dump", nargs="?", default="cavity.dump")
@@ -90,7 +64,9 @@ def main():
     args = p.parse_args()
 
     (nu_hot, nu_cold, t_end), grad = final_nu(args.log)
-    table = thermo_table(args.log)
+    table = longest_thermo_table(open(args.log).read())
+    if table is None or "Time" not in table:
+        sys.exit(f"analyse: no thermo table with Time in {args.log}")
     late = table["Time"] >= args.average_from * t_end
     mean = {k: table[k][late].mean() for k in table if k.startswith("c_nu_")}
     spread = {k: table[k][late].std() for k in table if k.startswith("c_nu_")}

@@ -39,33 +39,15 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import rb_linear  # noqa: E402
+from lammps_log import longest_thermo_table  # noqa: E402
 
 
 def thermo_table(log):
     """The longest thermo table of the log: {column name: array}."""
-    best, cols, rows = None, None, None
-    for line in open(log):
-        words = line.split()
-        if words[:2] == ["Step", "Time"]:
-            cols, rows = words, []
-            continue
-        if rows is not None:
-            try:
-                values = [float(w) for w in words]
-            except ValueError:
-                values = None
-            if values and len(values) == len(cols):
-                rows.append(values)
-                continue
-            if best is None or len(rows) > len(best[1]):
-                best = (cols, rows)
-            rows = None
-    if rows is not None and (best is None or len(rows) > len(best[1])):
-        best = (cols, rows)
-    if not best or not best[1]:
+    table = longest_thermo_table(open(log).read())
+    if table is None:
         sys.exit(f"analyse: no thermo table in {log}")
-    data = np.array(best[1])
-    return {name: data[:, k] for k, name in enumerate(best[0])}
+    return table
 
 
 def run_parameters(log):

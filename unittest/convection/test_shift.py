@@ -18,11 +18,12 @@ Usage: test_shift.py CHECK --lmp LMP --plugin PLUGIN
 import argparse
 import os
 import re
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
+
+from lammps_checks import read_dump, run_lammps
 
 BOX = """plugin load {plugin}
 units           si
@@ -48,30 +49,6 @@ neigh_modify    exclude type 2 2
 compute         e fluid property/atom esph
 compute         esum fluid reduce sum c_e
 """
-
-
-def run_lammps(lmp, script, cwd):
-    with tempfile.NamedTemporaryFile("w", suffix=".in", dir=cwd, delete=False) as f:
-        f.write(script)
-        path = f.name
-    try:
-        proc = subprocess.run([lmp, "-log", "none", "-in", path], cwd=cwd, text=True,
-                              capture_output=True)
-    finally:
-        os.unlink(path)
-    if proc.returncode != 0 or "ERROR" in proc.stdout:
-        sys.stdout.write(proc.stdout + proc.stderr)
-        sys.exit("FAIL: LAMMPS run failed")
-    return proc.stdout
-
-
-def read_dump(path):
-    with open(path) as f:
-        lines = f.read().splitlines()
-    start = next(i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))
-    names = lines[start].split()[2:]
-    data = np.array([[float(w) for w in line.split()] for line in lines[start + 1:]])
-    return {name: data[:, k] for k, name in enumerate(names)}
 
 
 def kernel_sums(x, y, volume, period=None, radius=0.4):

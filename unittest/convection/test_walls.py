@@ -33,6 +33,8 @@ import tempfile
 
 import numpy as np
 
+from lammps_checks import longest_thermo_table, read_dump, run_lammps
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 
@@ -59,30 +61,6 @@ pair_style      sph/cleary/heat quintic 0.3
 pair_coeff      * *
 neigh_modify    exclude type 2 2
 """
-
-
-def run_lammps(lmp, script, cwd):
-    with tempfile.NamedTemporaryFile("w", suffix=".in", dir=cwd, delete=False) as f:
-        f.write(script)
-        path = f.name
-    try:
-        proc = subprocess.run([lmp, "-log", "none", "-in", path], cwd=cwd, text=True,
-                              capture_output=True)
-    finally:
-        os.unlink(path)
-    if proc.returncode != 0 or "ERROR" in proc.stdout:
-        sys.stdout.write(proc.stdout + proc.stderr)
-        sys.exit("FAIL: LAMMPS run failed")
-    return proc.stdout
-
-
-def read_dump(path):
-    with open(path) as f:
-        lines = f.read().splitlines()
-    start = next(i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))
-    names = lines[start].split()[2:]
-    data = np.array([[float(w) for w in line.split()] for line in lines[start + 1:]])
-    return {name: data[:, k] for k, name in enumerate(names)}
 
 
 def check_linear(a, work):
@@ -210,29 +188,6 @@ def cavity_nu(a, work, thermal, n):
 DE_VAHL_DAVIS_NU = {1e3: 1.118, 1e4: 2.243, 1e5: 4.519, 1e6: 8.800}
 
 
-def thermo_rows(text):
-    """The rows of the longest thermo table: {column: array}."""
-    tables, cols, rows = [], None, None
-    for line in text.splitlines():
-        words = line.split()
-        if words[:2] == ["Step", "Time"]:
-            cols, rows = words, []
-            tables.append((cols, rows))
-        elif rows is not None:
-            try:
-                values = [float(w) for w in words]
-            except ValueError:
-                rows = None
-                continue
-            if len(values) == len(cols):
-                rows.append(values)
-            else:
-                rows = None
-    cols, rows = max(tables, key=lambda t: len(t[1]))
-    data = np.array(rows)
-    return {name: data[:, k] for k, name in enumerate(cols)}
-
-
 def check_cavity(a, work):
     cmd = [a.lmp, "-log", "none", "-in", os.path.join(ROOT, "examples/convection-cavity/in.cavity"),
            "-var", "plugin", a.plugin, "-var", "ra", str(a.ra), "-var", "n", str(a.n),
@@ -241,7 +196,7 @@ def check_cavity(a, work):
     if proc.returncode != 0 or "final:" not in proc.stdout:
         sys.stdout.write(proc.stdout + proc.stderr)
         sys.exit("FAIL: cavity run failed")
-    table = thermo_rows(proc.stdout)
+    table = longest_thermo_table(proc.stdout)
     late = table["Time"] >= 2.0 / 3.0 * a.tend
     hot, cold = table["c_nu_hot[1]"][late].mean(), table["c_nu_cold[1]"][late].mean()
     ref = DE_VAHL_DAVIS_NU[a.ra]

@@ -1,0 +1,40 @@
+"""Read the thermo tables of a LAMMPS log or screen output."""
+
+import numpy as np
+
+
+def thermo_tables(text):
+    """Every thermo table in text (a table starts at a header line whose
+    first word is 'Step'), as {column name: numpy array}, in order."""
+    tables, header, rows = [], None, None
+
+    def close():
+        if header and rows:
+            data = np.array(rows)
+            tables.append({name: data[:, k] for k, name in enumerate(header)})
+
+    for line in text.splitlines():
+        words = line.split()
+        if words[:1] == ["Step"]:
+            close()
+            header, rows = words, []
+            continue
+        if header is None:
+            continue
+        try:
+            values = [float(w) for w in words]
+        except ValueError:
+            values = None
+        if values is not None and len(values) == len(header):
+            rows.append(values)
+        else:
+            close()
+            header, rows = None, None
+    close()
+    return tables
+
+
+def longest_thermo_table(text):
+    """The thermo table with the most rows (that of the main run), or None."""
+    tables = thermo_tables(text)
+    return max(tables, key=lambda t: len(next(iter(t.values())))) if tables else None

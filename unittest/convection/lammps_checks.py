@@ -1,0 +1,32 @@
+"""Shared by the convection checks: run an input script through LAMMPS and
+read what it wrote (the readers of tools/)."""
+
+import os
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from lammps_dump import read_frames  # noqa: E402
+from lammps_log import longest_thermo_table  # noqa: E402,F401
+
+
+def run_lammps(lmp, script, cwd):
+    """Run script (text) with LAMMPS in cwd; stop the check on an error."""
+    with tempfile.NamedTemporaryFile("w", suffix=".in", dir=cwd, delete=False) as f:
+        f.write(script)
+        path = f.name
+    try:
+        proc = subprocess.run([lmp, "-log", "none", "-in", path], cwd=cwd, text=True,
+                              capture_output=True)
+    finally:
+        os.unlink(path)
+    if proc.returncode != 0 or "ERROR" in proc.stdout:
+        sys.stdout.write(proc.stdout + proc.stderr)
+        sys.exit("FAIL: LAMMPS run failed")
+    return proc.stdout
+
+
+def read_dump(path):
+    """The last frame of a dump custom file: {column: array}, by atom id."""
+    return read_frames(path)[-1][1]
