@@ -17,6 +17,10 @@
              --tend: the mean Nu of both walls (from their heat, averaged
              over the last third of the run) within --tolerance (relative)
              of de Vahl Davis (1983), and the flow upward at the hot wall
+  ranks      the cavity with buoyancy and shifting, 12 x 12, to t = 0.03, on
+             1 and --np ranks: the Nusselt numbers of compute sph/nusselt
+             (heat and gradient, both walls) and the shift's energy agree
+             to 1e-10
   conduction the cavity of examples/convection-cavity without buoyancy: the
              mean Nusselt number of both walls is 1 within --tolerance, and
              the zero-order walls (Shepard dummies, k = 0 top and bottom) are
@@ -211,6 +215,34 @@ def check_cavity(a, work):
     return ok
 
 
+def cavity_rows(a, work, np_):
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMP_NUM_THREADS="1")
+    cmd = ([a.mpirun, "--oversubscribe", "-np", str(np_)] if np_ > 1 else []) + [
+        a.lmp, "-log", "none", "-in", os.path.join(ROOT, "examples/convection-cavity/in.cavity"),
+        "-var", "plugin", a.plugin, "-var", "ra", "1e4", "-var", "n", "12", "-var", "tend",
+        "0.03", "-var", "every", "100", "-var", "shift", "2", "-var", "correct", "yes", "-var", "digits", "16",
+        "-var", "out", f"cavity{np_}.dump"]
+    proc = subprocess.run(cmd, cwd=work, text=True, capture_output=True, env=env)
+    if proc.returncode != 0 or "final:" not in proc.stdout:
+        sys.stdout.write(proc.stdout + proc.stderr)
+        sys.exit(f"FAIL: cavity run on {np_} ranks failed")
+    table = longest_thermo_table(proc.stdout)
+    return {k: v[:4] for k, v in table.items() if k.startswith("c_nu_")}
+
+
+def check_ranks(a, work):
+    one, more = cavity_rows(a, work, 1), cavity_rows(a, work, a.np)
+    ok = True
+    for name in sorted(one):
+        dev = np.abs(one[name] - more[name]).max() / np.abs(one[name]).max()
+        good = dev < 1e-10 and len(one[name]) >= 2
+        ok &= good
+        print(f"{'ok' if good else 'FAIL'}: {name} over {len(one[name])} thermo rows, 1 and "
+              f"{a.np} ranks: largest relative difference {dev:.1e} (limit 1e-10)")
+    return ok and len(one) == 4
+
+
 def check_conduction(a, work):
     hot, cold = cavity_nu(a, work, "mirror", a.n)
     ok = abs(hot - 1.0) < a.tolerance and abs(cold - 1.0) < a.tolerance
@@ -225,18 +257,20 @@ def check_conduction(a, work):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    p.add_argument("check", choices=["linear", "conserve", "nusselt", "conduction", "cavity"])
+    p.add_argument("check", choices=["linear", "conserve", "nusselt", "conduction", "cavity", "ranks"])
     p.add_argument("--lmp", required=True)
     p.add_argument("--plugin", required=True)
     p.add_argument("--n", type=int, default=20)
     p.add_argument("--tolerance", type=float, default=0.002)
     p.add_argument("--ra", type=float, default=1e4)
     p.add_argument("--tend", type=float, default=0.3)
+    p.add_argument("--np", type=int, default=2)
+    p.add_argument("--mpirun", default="mpirun")
     a = p.parse_args()
     a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
     with tempfile.TemporaryDirectory() as work:
         ok = {"linear": check_linear, "conserve": check_conserve, "nusselt": check_nusselt,
-              "cavity": check_cavity,
+              "cavity": check_cavity, "ranks": check_ranks,
               "conduction": check_conduction}[a.check](a, work)
     return 0 if ok else 1
 
