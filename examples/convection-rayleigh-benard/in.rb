@@ -71,7 +71,9 @@ variable        g equal ${ra}*${pr}
 # the buoyant pressure scale g beta dT H / 2 = Ra Pr / 2 (the conduction
 # state's pressure varies by g/8 over the layer): c0^2 = cfac^2 Ra Pr / 2
 variable        c0a equal ${cfac}*sqrt(v_g/2.0)
-variable        c0 equal ternary(v_c0a>${c0min},v_c0a,${c0min})
+# (LAMMPS 29Sep2021 has no ternary(): an if)
+variable        c0 equal ${c0min}
+if "$(v_c0a) > ${c0min}" then "variable c0 delete" "variable c0 equal ${c0a}"
 variable        qmax equal 2
 if "${kernel} == lucy" then "variable qmax delete" "variable qmax equal 1"
 if "${kernel} == quintic" then "variable qmax delete" "variable qmax equal 3"
