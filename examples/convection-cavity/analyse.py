@@ -58,6 +58,9 @@ def main():
     p.add_argument("--pr", type=float, default=0.71)
     p.add_argument("--ref-cells", type=int, default=64)
     p.add_argument("--png", default="cavity.png")
+    p.add_argument("--si", type=float, nargs=4, metavar=("L", "ALPHA", "T_C", "DT"),
+                   help="a run in SI units (in.air): scale x by L, v by alpha / L and T to "
+                        "(T - T_C) / DT")
     p.add_argument("--average-from", type=float, default=2.0 / 3.0,
                    help="average Nu over the thermo rows from this fraction of the run's time on")
     p.add_argument("--max-nu-error", type=float, help="fail (exit 1) above this error of mean Nu, %%")
@@ -73,6 +76,11 @@ def main():
     frames = list(read_frames(args.dump))
     c = frames[-1][1]
     x, y, vx, vy, T = c["x"], c["y"], c["vx"], c["vy"], c["c_T"]
+    if args.si:
+        length, alpha, t_cold, t_diff = args.si
+        x, y = x / length, y / length
+        vx, vy = vx * length / alpha, vy * length / alpha
+        T = (T - t_cold) / t_diff
     n = int(round(np.sqrt(len(x))))
     dx = 1.0 / n
 

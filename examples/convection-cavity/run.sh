@@ -5,6 +5,8 @@
 #                         (t = 0.6 at Ra = 1e3)
 #   ./run.sh quick        the same at 20 x 20 (about 10 s)
 #   ./run.sh conduction   Ra = 0: Nu must be 1 (20 x 20, to t = 0.6)
+#   ./run.sh air          Reece et al. 2024 section 3.2 in SI units (in.air),
+#                         N = 40 across to t* = 0.5 (TSTAR), about 5 minutes
 #   RA=1e5 N=60 ./run.sh  another Rayleigh number or resolution
 # Environment: LMP (LAMMPS binary), PLUGIN (sphthermalplugin.so), NP (MPI
 # ranks), OUT (output directory, default ./out), RA, N, TEND, KERNEL, HDX, BG
@@ -13,6 +15,14 @@ set -e
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../common.sh"
 
+if [ "${1:-}" = air ]; then
+  # Reece et al. 2024, section 3.2, in SI units (in.air): Ra = 1.203e5, Pr = 0.705
+  $run "$LMP" -in "$here/in.air" -var plugin "$PLUGIN" -var n "${N:-40}" \
+    -var tstar "${TSTAR:-0.5}" -var out air.dump -log log.air | grep -E "^Reece|final"
+  "$PYTHON" "$here/analyse.py" air.dump --log log.air --ra 1.2033e5 --pr 0.7051 \
+    --si 0.0386 2.13594e-5 283 20 --png air.png
+  exit 0
+fi
 case "${1:-}" in
   conduction) RA=0 N=${N:-20} TEND=${TEND:-0.6} ;;
   quick) N=${N:-20} ;;
