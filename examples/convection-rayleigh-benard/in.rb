@@ -145,10 +145,13 @@ run             0
 variable        reached equal (time>=${tend})||(c_ke>${kemax})
 fix             stop fluid halt 10 v_reached == 1 error continue
 run             100000000
-# the dump needs c_T and c_rho of this step: a thermo output that uses them
+# LAMMPS 29Sep2021 gives no thermo output on the step fix halt stops at, so
+# the computes of the final line are current only after a thermo output:
+# run 0; the dump also needs c_T and c_rho of this step
 if "${dump} == yes" then "compute T fluid sph/t/atom" &
    "compute Tsum fluid reduce sum c_T" &
-   "thermo_style custom step time c_Tsum c_rhomin" &
-   "run 0 post no" &
+   "thermo_style custom step time dt c_ke v_vymax c_nu_hot[1] c_nu_cold[1] c_rhomin c_Tsum"
+run             0 post no
+if "${dump} == yes" then &
    "write_dump fluid custom ${out} id x y vx vy c_T c_rho modify sort id format float %.15g"
 print           "final: Ra = ${ra} t = $(time:%.5f) steps = $(step) KE = $(c_ke:%.6e) vymax = $(v_vymax:%.6e) Nu_hot = $(v_nu_hot:%.6f) Nu_cold = $(v_nu_cold:%.6f)"
