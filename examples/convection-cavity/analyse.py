@@ -148,7 +148,7 @@ def main():
     ax[2].plot(ref["hmid"]["x"], np.asarray(ref["hmid"]["v"]) / scale, "-", label="v, cavity_fv.py")
     ax[2].set_xlabel("x (y = 0.5)")
     ax[2].legend(fontsize=8)
-    ax[2].set_title(f"Nu {nu:.3f} (heat) vs {nu_ref} ({err:+.1f} %)")
+    ax[2].set_title(f"Nu {nu:.3f} (heat) vs {nu_ref:.4g} ({err:+.1f} %)")
     fig.suptitle(f"differentially heated cavity, Ra = {args.ra:g}, Pr = {args.pr}, {n} x {n} particles")
     fig.tight_layout()
     fig.savefig(args.png, dpi=110)
