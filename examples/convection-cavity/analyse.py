@@ -58,6 +58,8 @@ def main():
     p.add_argument("--pr", type=float, default=0.71)
     p.add_argument("--ref-cells", type=int, default=64)
     p.add_argument("--png", default="cavity.png")
+    p.add_argument("--nz", type=int, default=0,
+                   help="layers in the periodic depth of a quasi-2-D run (values are averaged over z)")
     p.add_argument("--si", type=float, nargs=4, metavar=("L", "ALPHA", "T_C", "DT"),
                    help="a run in SI units (in.air): scale x by L, v by alpha / L and T to "
                         "(T - T_C) / DT")
@@ -81,7 +83,7 @@ def main():
         x, y = x / length, y / length
         vx, vy = vx * length / alpha, vy * length / alpha
         T = (T - t_cold) / t_diff
-    n = int(round(np.sqrt(len(x))))
+    n = int(round(np.sqrt(len(x) / max(args.nz, 1))))
     dx = 1.0 / n
 
     ref = cavity_fv.solve(args.ra, args.pr, n=args.ref_cells)

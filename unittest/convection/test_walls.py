@@ -21,7 +21,8 @@
              1 and --np ranks: the Nusselt numbers of compute sph/nusselt
              (heat and gradient, both walls) and the shift's energy agree
              to 1e-10
-  conduction the cavity of examples/convection-cavity without buoyancy: the
+  conduction the cavity of examples/convection-cavity without buoyancy (3-D
+             with a periodic depth of --nz layers when given): the
              mean Nusselt number of both walls is 1 within --tolerance, and
              the zero-order walls (Shepard dummies, k = 0 top and bottom) are
              further off than that
@@ -179,8 +180,9 @@ def check_conserve(a, work):
 
 def cavity_nu(a, work, thermal, n):
     cmd = [a.lmp, "-log", "none", "-in", os.path.join(ROOT, "examples/convection-cavity/in.cavity"),
-           "-var", "plugin", a.plugin, "-var", "ra", "0", "-var", "n", str(n), "-var", "tend", "0.6",
-           "-var", "thermal", thermal, "-var", "out", "cavity.dump"]
+           "-var", "plugin", a.plugin, "-var", "ra", "0", "-var", "n", str(n), "-var", "tend",
+           str(a.tend if a.nz else 0.6), "-var", "thermal", thermal, "-var", "nz", str(a.nz),
+           "-var", "out", "cavity.dump"]
     proc = subprocess.run(cmd, cwd=work, text=True, capture_output=True)
     m = re.search(r"final: Nu_hot = (\S+) Nu_cold = (\S+)", proc.stdout)
     if proc.returncode != 0 or not m:
@@ -246,7 +248,8 @@ def check_ranks(a, work):
 def check_conduction(a, work):
     hot, cold = cavity_nu(a, work, "mirror", a.n)
     ok = abs(hot - 1.0) < a.tolerance and abs(cold - 1.0) < a.tolerance
-    print(f"{'ok' if ok else 'FAIL'}: conduction, {a.n} x {a.n}, mirror walls: Nu hot {hot:.6f}, "
+    shape = f"{a.n} x {a.n}" + (f" x {a.nz} (3-D, periodic depth)" if a.nz else "")
+    print(f"{'ok' if ok else 'FAIL'}: conduction, {shape}, mirror walls: Nu hot {hot:.6f}, "
           f"cold {cold:.6f} (|Nu - 1| < {a.tolerance})")
     hot0, cold0 = cavity_nu(a, work, "zero", a.n)
     worse = abs(hot0 - 1.0) > a.tolerance
@@ -265,6 +268,7 @@ def main():
     p.add_argument("--ra", type=float, default=1e4)
     p.add_argument("--tend", type=float, default=0.3)
     p.add_argument("--np", type=int, default=2)
+    p.add_argument("--nz", type=int, default=0, help="3-D with this many layers of periodic depth")
     p.add_argument("--mpirun", default="mpirun")
     a = p.parse_args()
     a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
