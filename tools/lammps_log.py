@@ -38,3 +38,10 @@ def longest_thermo_table(text):
     """The thermo table with the most rows (that of the main run), or None."""
     tables = thermo_tables(text)
     return max(tables, key=lambda t: len(next(iter(t.values())))) if tables else None
+
+
+
+def late_rows(table, fraction=2.0 / 3.0):
+    """The rows at Time >= fraction of the last row's Time (the steady end
+    of a run), as a boolean mask."""
+    return table["Time"] >= fraction * table["Time"][-1]

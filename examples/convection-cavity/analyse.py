@@ -23,7 +23,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
 from lammps_dump import read_frames  # noqa: E402
-from lammps_log import longest_thermo_table  # noqa: E402
+from lammps_log import late_rows, longest_thermo_table  # noqa: E402
 import cavity_fv  # noqa: E402
 
 
@@ -72,7 +72,7 @@ def main():
     table = longest_thermo_table(open(args.log).read())
     if table is None or "Time" not in table:
         sys.exit(f"analyse: no thermo table with Time in {args.log}")
-    late = table["Time"] >= args.average_from * t_end
+    late = late_rows(table, args.average_from)
     mean = {k: table[k][late].mean() for k in table if k.startswith("c_nu_")}
     spread = {k: table[k][late].std() for k in table if k.startswith("c_nu_")}
     frames = list(read_frames(args.dump))

@@ -183,7 +183,7 @@ void ComputeSPHNusselt::compute_vector()
   for (int i = 0; i < atom->nlocal; i++)
     if (mask[i] & groupbit) sums[0] -= wall->rate_into(i) * scale;
   if (wall_surface) {
-    gradient_values();
+    gradient_values(first_layer_depth());
     for (int i = 0; i < atom->nlocal; i++)
       if ((mask[i] & groupbit) && local[i][1] != 0.0) {
         sums[1] += local[i][1];
@@ -204,10 +204,11 @@ void ComputeSPHNusselt::compute_vector()
 void ComputeSPHNusselt::compute_peratom()
 {
   invoked_peratom = update->ntimestep;
-  const double element = pow(wall_spacing(), domain->dimension - 1);
+  const double depth_min = wall_surface ? first_layer_depth() : INFINITY;
+  const double element = pow(wall_spacing(depth_min), domain->dimension - 1);
   const double scale = length / (conductivity * delta_t);
   if (wall_surface)
-    gradient_values();
+    gradient_values(depth_min);
   else
     grow_local();
   const int *const mask = atom->mask;
@@ -237,24 +238,33 @@ void ComputeSPHNusselt::grow_local()
 }
 
 /* ----------------------------------------------------------------------
-   local[i][1]: Nu from the wall-normal gradient on the surface next to
-   each wall atom of the first layer (those whose ghost points lie nearest
-   the surface), 0 elsewhere
+   the smallest depth of a ghost point of the group's atoms below the
+   surface (over all ranks), INFINITY when no atom has one
 ------------------------------------------------------------------------- */
 
-void ComputeSPHNusselt::gradient_values()
+double ComputeSPHNusselt::first_layer_depth()
 {
-  grow_local();
-  const int *const mask = atom->mask;
-  const int nlocal = atom->nlocal;
   double depth_min_local = INFINITY, depth_min = INFINITY;
-  for (int i = 0; i < nlocal; i++) {
+  for (int i = 0; i < atom->nlocal; i++) {
     double gradient, depth;
-    if ((mask[i] & groupbit) && wall_surface->surface_gradient(i, gradient, depth))
+    if ((atom->mask[i] & groupbit) && wall_surface->surface_gradient(i, gradient, depth))
       depth_min_local = MIN(depth_min_local, depth);
   }
   MPI_Allreduce(&depth_min_local, &depth_min, 1, MPI_DOUBLE, MPI_MIN, world);
-  for (int i = 0; i < nlocal; i++) {
+  return depth_min;
+}
+
+/* ----------------------------------------------------------------------
+   local[i][1]: Nu from the wall-normal gradient on the surface next to
+   each wall atom of the first layer (ghost points within FIRST_LAYER of
+   the smallest depth), 0 elsewhere
+------------------------------------------------------------------------- */
+
+void ComputeSPHNusselt::gradient_values(double depth_min)
+{
+  grow_local();
+  const int *const mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++) {
     local[i][1] = 0.0;
     double gradient, depth;
     if ((mask[i] & groupbit) && wall_surface->surface_gradient(i, gradient, depth) &&
@@ -268,18 +278,10 @@ void ComputeSPHNusselt::gradient_values()
    the wall fix, else twice the depth of the first layer's ghost points
 ------------------------------------------------------------------------- */
 
-double ComputeSPHNusselt::wall_spacing()
+double ComputeSPHNusselt::wall_spacing(double depth_min)
 {
   if (spacing > 0.0) return spacing;
   if (wall->spacing_given() > 0.0) return wall->spacing_given();
-  double depth_min_local = INFINITY, depth_min = INFINITY;
-  if (wall_surface)
-    for (int i = 0; i < atom->nlocal; i++) {
-      double gradient, depth;
-      if ((atom->mask[i] & groupbit) && wall_surface->surface_gradient(i, gradient, depth))
-        depth_min_local = MIN(depth_min_local, depth);
-    }
-  MPI_Allreduce(&depth_min_local, &depth_min, 1, MPI_DOUBLE, MPI_MIN, world);
   if (!std::isfinite(depth_min))
     error->all(FLERR,
                "{}: the spacing of the wall particles is unknown: give 'spacing' to the compute or "

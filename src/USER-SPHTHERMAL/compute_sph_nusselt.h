@@ -44,9 +44,10 @@ class ComputeSPHNusselt : public Compute {
   double *local_heat;    // per atom, without: local Nu from the heat
 
   void find_wall();
-  double wall_spacing();
+  double first_layer_depth();
+  double wall_spacing(double depth_min);
   void grow_local();
-  void gradient_values();
+  void gradient_values(double depth_min);
 };
 
 }    // namespace LAMMPS_NS

@@ -80,7 +80,7 @@ FixSPHShift::FixSPHShift(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
   nevery = 1;
   restart_global = 1;
-  comm_forward = 2;
+  comm_forward = correct ? 2 : 1;
 }
 
 int FixSPHShift::setmask()
@@ -111,9 +111,25 @@ void FixSPHShift::init_list(int /*id*/, NeighList *ptr)
 
 void FixSPHShift::end_of_step()
 {
+  // the ghosts' rho (and esph) as the step ended on their owners' ranks
+  SPHCompat::forward_comm(comm, this);
+  if (correct)
+    shift_group<1>();
+  else
+    shift_group<0>();
+}
+
+/* ----------------------------------------------------------------------
+   CORRECT: also move T with the atoms (the corrected gradient's sums)
+------------------------------------------------------------------------- */
+
+template <int CORRECT> void FixSPHShift::shift_group()
+{
   double *const *const x = atom->x;
   const double *const *const v = atom->v;
   const double *const rho = atom->rho;
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
   const double *const rmass = atom->rmass;
   const double *const mass = atom->mass;
   const int *const type = atom->type;
@@ -124,18 +140,16 @@ void FixSPHShift::end_of_step()
   const double h = cutoff / sphk_support(kernel_kind);
   const double cutsq = cutoff * cutoff;
   const double dt = update->dt;
-  // the ghosts' rho and esph as the step ended on their owners' ranks
-  SPHCompat::forward_comm(comm, this);
 
   shift.assign(3 * (size_t) nlocal, 0.0);
-  std::vector<double> dtemp(correct ? nlocal : 0, 0.0);
+  std::vector<double> dtemp(CORRECT ? nlocal : 0, 0.0);
   double largest_local = 0.0;
   int capped_local = 0;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
     const double speed = sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
-    const double t_i = correct ? atom->esph[i] / atom->cv[i] : 0.0;
+    const double t_i = CORRECT ? esph[i] / cv[i] : 0.0;
     double grad_c[3] = {0.0, 0.0, 0.0}, g[3] = {0.0, 0.0, 0.0};
     double L[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     const int *const jlist = list->firstneigh[i];
@@ -150,8 +164,8 @@ void FixSPHShift::end_of_step()
       const double f = sphk_dwdr(&kernel, r) / r;
       const double grad_w[3] = {f * del[0], f * del[1], f * del[2]};
       for (int a = 0; a < 3; a++) grad_c[a] += volume_j * grad_w[a];
-      if (correct) {
-        const double dT = atom->esph[j] / atom->cv[j] - t_i;
+      if (CORRECT) {
+        const double dT = esph[j] / cv[j] - t_i;
         for (int a = 0; a < 3; a++) g[a] += volume_j * dT * grad_w[a];
         for (int a = 0; a < 3; a++)
           for (int b = 0; b < 3; b++) L[3 * a + b] -= volume_j * del[a] * grad_w[b];
@@ -164,7 +178,7 @@ void FixSPHShift::end_of_step()
     capped_local += sphs_cap(dr, cap * spacing);
     largest_local = MAX(largest_local,
                         sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]) / spacing);
-    if (correct) {
+    if (CORRECT) {
       double grad_t[3] = {g[0], g[1], g[2]};
       sphg_solve_transposed(L, g, grad_t, dim);
       dtemp[i] = dr[0] * grad_t[0] + dr[1] * grad_t[1] + dr[2] * grad_t[2];
@@ -176,9 +190,9 @@ void FixSPHShift::end_of_step()
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     for (int a = 0; a < 3; a++) x[i][a] += shift[3 * (size_t) i + a];
-    if (correct) {
-      atom->esph[i] += atom->cv[i] * dtemp[i];
-      energy_local += (rmass ? rmass[i] : mass[type[i]]) * atom->cv[i] * dtemp[i];
+    if (CORRECT) {
+      atom->esph[i] += cv[i] * dtemp[i];
+      energy_local += (rmass ? rmass[i] : mass[type[i]]) * cv[i] * dtemp[i];
     }
   }
   double sums[2] = {energy_local, (double) capped_local}, totals[2];
@@ -193,7 +207,7 @@ int FixSPHShift::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag
   int m = 0;
   for (int k = 0; k < n; k++) {
     buf[m++] = atom->rho[send[k]];
-    buf[m++] = correct ? atom->esph[send[k]] : 0.0;
+    if (correct) buf[m++] = atom->esph[send[k]];
   }
   return m;
 }
@@ -203,9 +217,7 @@ void FixSPHShift::unpack_forward_comm(int n, int first, double *buf)
   int m = 0;
   for (int k = 0; k < n; k++) {
     atom->rho[first + k] = buf[m++];
-    if (correct)
-      atom->esph[first + k] = buf[m];
-    m++;
+    if (correct) atom->esph[first + k] = buf[m++];
   }
 }
 

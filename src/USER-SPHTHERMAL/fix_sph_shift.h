@@ -47,6 +47,8 @@ class FixSPHShift : public Fix {
   double energy;                // energy the correction has added since the fix was defined
   double largest;               // largest shift / spacing of the last step
   int capped;                   // atoms shortened to the cap in the last step
+
+  template <int CORRECT> void shift_group();
 };
 
 }    // namespace LAMMPS_NS

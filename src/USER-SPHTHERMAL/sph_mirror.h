@@ -78,7 +78,6 @@ class SPHMirror : protected Pointers {
   double cell_lo[3];
   int ncell[3];
 
-  void medium_groups();
   int ghost_point(const double *x, double *ghost, double *depth = nullptr);
   void bin_atoms();
   void cells_around(const double *p, int *c_lo, int *c_hi) const;

@@ -8,7 +8,8 @@ import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 from lammps_dump import read_frames  # noqa: E402
-from lammps_log import longest_thermo_table  # noqa: E402,F401
+from cavity_fv import DE_VAHL_DAVIS  # noqa: E402,F401
+from lammps_log import late_rows, longest_thermo_table  # noqa: E402,F401
 
 
 def run_lammps(lmp, script, cwd):

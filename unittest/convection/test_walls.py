@@ -38,7 +38,7 @@ import tempfile
 
 import numpy as np
 
-from lammps_checks import longest_thermo_table, read_dump, run_lammps
+from lammps_checks import DE_VAHL_DAVIS, late_rows, longest_thermo_table, read_dump, run_lammps
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -171,41 +171,42 @@ run             500
 def check_conserve(a, work):
     drift_yes, e_yes = fluid_energy_drift(a, work, "yes")
     drift_no, e_no = fluid_energy_drift(a, work, "no")
-    changed = np.abs(e_yes[-1] - e_yes[0]) / abs(e_yes[0])
     ok = drift_yes < 1e-13 and drift_no > 1e-9
     print(f"{'ok' if ok else 'FAIL'}: fluid energy over 500 steps: relative drift {drift_yes:.2e} "
           f"with conserve yes (limit 1e-13), {drift_no:.2e} with conserve no (must exceed 1e-9)")
     return ok
 
 
-def cavity_nu(a, work, thermal, n):
-    cmd = [a.lmp, "-log", "none", "-in", os.path.join(ROOT, "examples/convection-cavity/in.cavity"),
-           "-var", "plugin", a.plugin, "-var", "ra", "0", "-var", "n", str(n), "-var", "tend",
-           str(a.tend if a.nz else 0.6), "-var", "thermal", thermal, "-var", "nz", str(a.nz),
-           "-var", "out", "cavity.dump"]
-    proc = subprocess.run(cmd, cwd=work, text=True, capture_output=True)
-    m = re.search(r"final: Nu_hot = (\S+) Nu_cold = (\S+)", proc.stdout)
-    if proc.returncode != 0 or not m:
+def run_cavity(a, work, np_=1, **variables):
+    """examples/convection-cavity/in.cavity with these -var values on np_
+    ranks; its screen output (the check stops if the run fails)."""
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMP_NUM_THREADS="1")
+    cmd = ([a.mpirun, "--oversubscribe", "-np", str(np_)] if np_ > 1 else []) + [
+        a.lmp, "-log", "none", "-in", os.path.join(ROOT, "examples/convection-cavity/in.cavity"),
+        "-var", "plugin", a.plugin]
+    for name, value in variables.items():
+        cmd += ["-var", name, str(value)]
+    proc = subprocess.run(cmd, cwd=work, text=True, capture_output=True, env=env)
+    if proc.returncode != 0 or "final:" not in proc.stdout:
         sys.stdout.write(proc.stdout + proc.stderr)
-        sys.exit("FAIL: cavity run failed")
+        sys.exit(f"FAIL: cavity run ({' '.join(cmd)}) failed")
+    return proc.stdout
+
+
+def cavity_nu(a, work, thermal, n):
+    out = run_cavity(a, work, ra=0, n=n, tend=a.tend if a.nz else 0.6, thermal=thermal, nz=a.nz,
+                     out="cavity.dump")
+    m = re.search(r"final: Nu_hot = (\S+) Nu_cold = (\S+)", out)
     return float(m.group(1)), float(m.group(2))
 
 
-DE_VAHL_DAVIS_NU = {1e3: 1.118, 1e4: 2.243, 1e5: 4.519, 1e6: 8.800}
-
-
 def check_cavity(a, work):
-    cmd = [a.lmp, "-log", "none", "-in", os.path.join(ROOT, "examples/convection-cavity/in.cavity"),
-           "-var", "plugin", a.plugin, "-var", "ra", str(a.ra), "-var", "n", str(a.n),
-           "-var", "tend", str(a.tend), "-var", "out", "cavity.dump"]
-    proc = subprocess.run(cmd, cwd=work, text=True, capture_output=True)
-    if proc.returncode != 0 or "final:" not in proc.stdout:
-        sys.stdout.write(proc.stdout + proc.stderr)
-        sys.exit("FAIL: cavity run failed")
-    table = longest_thermo_table(proc.stdout)
-    late = table["Time"] >= 2.0 / 3.0 * a.tend
+    table = longest_thermo_table(run_cavity(a, work, ra=a.ra, n=a.n, tend=a.tend,
+                                            out="cavity.dump"))
+    late = late_rows(table)
     hot, cold = table["c_nu_hot[1]"][late].mean(), table["c_nu_cold[1]"][late].mean()
-    ref = DE_VAHL_DAVIS_NU[a.ra]
+    ref = DE_VAHL_DAVIS[a.ra][0]
     err = 0.5 * (hot + cold) / ref - 1.0
     d = read_dump(os.path.join(work, "cavity.dump"))
     rising = d["vy"][d["x"] < 0.15].mean()
@@ -218,18 +219,9 @@ def check_cavity(a, work):
 
 
 def cavity_rows(a, work, np_):
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OMP_NUM_THREADS="1")
-    cmd = ([a.mpirun, "--oversubscribe", "-np", str(np_)] if np_ > 1 else []) + [
-        a.lmp, "-log", "none", "-in", os.path.join(ROOT, "examples/convection-cavity/in.cavity"),
-        "-var", "plugin", a.plugin, "-var", "ra", "1e4", "-var", "n", "12", "-var", "tend",
-        "0.03", "-var", "every", "100", "-var", "shift", "2", "-var", "correct", "yes", "-var", "digits", "16",
-        "-var", "out", f"cavity{np_}.dump"]
-    proc = subprocess.run(cmd, cwd=work, text=True, capture_output=True, env=env)
-    if proc.returncode != 0 or "final:" not in proc.stdout:
-        sys.stdout.write(proc.stdout + proc.stderr)
-        sys.exit(f"FAIL: cavity run on {np_} ranks failed")
-    table = longest_thermo_table(proc.stdout)
+    out = run_cavity(a, work, np_, ra="1e4", n=12, tend=0.03, every=100, shift=2, correct="yes",
+                     digits=16, out=f"cavity{np_}.dump")
+    table = longest_thermo_table(out)
     return {k: v[:4] for k, v in table.items() if k.startswith("c_nu_")}
 
 
