@@ -256,3 +256,14 @@ void FixSPHShift::restart(char *buf)
 {
   energy = *(double *) buf;
 }
+
+/* ----------------------------------------------------------------------
+   correct: 1 when the temperature follows the shift
+------------------------------------------------------------------------- */
+
+void *FixSPHShift::extract(const char *name, int &dim)
+{
+  dim = 0;
+  if (strcmp(name, "correct") == 0) return (void *) &correct;
+  return nullptr;
+}

@@ -35,6 +35,7 @@ class FixSPHShift : public Fix {
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
   void restart(char *) override;
+  void *extract(const char *, int &) override;
 
  protected:
   double coefficient;    // D

@@ -81,14 +81,7 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
   }
   check_rates(atom->desph, "desph");
 
-  if (!flows.empty()) {
-    switch (kernel_kind) {
-      case SPHK_LUCY: tally_flows<SPHK_LUCY>(); break;
-      case SPHK_CUBIC: tally_flows<SPHK_CUBIC>(); break;
-      case SPHK_QUINTIC: tally_flows<SPHK_QUINTIC>(); break;
-      case SPHK_WENDLAND: tally_flows<SPHK_WENDLAND>(); break;
-    }
-  }
+  if (!flows.empty()) tally_flows();
 
   if (relax_wanted) {
     if (force->newton_pair) SPHCompat::reverse_comm(comm, this);
@@ -245,12 +238,22 @@ int PairSPHClearyHeat::request_heat_flow(int to_groupbit, int from_groupbit)
   return (int) flows.size() - 1;
 }
 
-template <int KERNEL> void PairSPHClearyHeat::tally_flows()
+double PairSPHClearyHeat::pair_term(int i, int j, double rsq, double temp_ij) const
+{
+  const double r = sqrt(rsq);
+  const double dwdr = kernel.dw_scale * sphk_df(kernel_kind, r * kernel.inv_h);
+  const int *const type = atom->type;
+  const double conductance_ij = conductivity_varies
+      ? sphc_conductance(mean, conductivity[i], conductivity[j])
+      : conductance[type[i]][type[j]];
+  return sphc_cleary_pair(conductance_ij, temp_ij, atom->rho[i], atom->rho[j], r, dwdr, eta2);
+}
+
+void PairSPHClearyHeat::tally_flows()
 {
   const double *const *const x = atom->x;
   const double *const esph = atom->esph;
   const double *const cv = atom->cv;
-  const double *const rho = atom->rho;
   const double *const mass = atom->mass;
   const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
   const int *const type = atom->type;
@@ -274,13 +277,7 @@ template <int KERNEL> void PairSPHClearyHeat::tally_flows()
       const double delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       if (rsq >= cutsq_kernel) continue;
-      const double r = sqrt(rsq);
-      const double dwdr = kernel.dw_scale * sphk_df(KERNEL, r * kernel.inv_h);
-      const double conductance_ij = conductivity_varies
-          ? sphc_conductance(mean, conductivity[i], conductivity[j])
-          : conductance[type[i]][type[j]];
-      const double f_ij = sphc_cleary_pair(conductance_ij, esph[i] / cv[i] - esph[j] / cv[j],
-                                           rho[i], rho[j], r, dwdr, eta2);
+      const double f_ij = pair_term(i, j, rsq, esph[i] / cv[i] - esph[j] / cv[j]);
       const double energy = (rmass ? rmass[i] : mass[type[i]]) *
           (rmass ? rmass[j] : mass[type[j]]) * f_ij;    // into i, out of j
       for (size_t k = 0; k < flows.size(); k++) {

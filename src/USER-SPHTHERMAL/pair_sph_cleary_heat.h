@@ -41,6 +41,15 @@ class PairSPHClearyHeat : public PairSPHKernel {
   // power into 'to' from 'from' at the last force evaluation (every rank)
   double heat_flow(int index) const { return flows[index].power; }
 
+  // F_ij of sph_conduction.h between atoms i and j (owned or ghost) at the
+  // squared distance rsq (inside the support) for the temperature
+  // difference temp_ij = T_i - T_j: compute() adds m_j F_ij to de_i/dt and
+  // takes m_i F_ij from de_j/dt. For the styles that change a few pairs
+  // after compute() (fix sph/inlet/temperature), with this style's list.
+  double pair_term(int i, int j, double rsq, double temp_ij) const;
+  class NeighList *pair_list() const { return list; }
+  double support() const { return cut_global; }
+
  protected:
   int mean;                   // SPHC_HARMONIC or SPHC_ARITHMETIC of sph_conduction.h
   double eta2;                // eta^2, regularises r -> 0
@@ -70,7 +79,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   template <int KERNEL, int MEAN> void eval_mean();
   template <int KERNEL, int MEAN, int VARYING_K, int NEWTON_PAIR, int RMASS, int RELAX>
   void eval();
-  template <int KERNEL> void tally_flows();
+  void tally_flows();
   std::string diagnose(int) override;
 };
 

@@ -9,17 +9,21 @@ import tempfile
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 from lammps_dump import read_frames  # noqa: E402
 from cavity_fv import DE_VAHL_DAVIS  # noqa: E402,F401
-from lammps_log import late_rows, longest_thermo_table  # noqa: E402,F401
+from lammps_log import late_rows, longest_thermo_table, thermo_tables  # noqa: E402,F401
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from sphtest import mpi_env, mpi_prefix  # noqa: E402
 
 
-def run_lammps(lmp, script, cwd):
-    """Run script (text) with LAMMPS in cwd; stop the check on an error."""
+def run_lammps(lmp, script, cwd, np_=1, mpirun="mpirun"):
+    """Run script (text) with LAMMPS in cwd (on np_ ranks); stop the check on
+    an error."""
     with tempfile.NamedTemporaryFile("w", suffix=".in", dir=cwd, delete=False) as f:
         f.write(script)
         path = f.name
     try:
-        proc = subprocess.run([lmp, "-log", "none", "-in", path], cwd=cwd, text=True,
-                              capture_output=True)
+        proc = subprocess.run(mpi_prefix(np_, mpirun) + [lmp, "-log", "none", "-in", path],
+                              cwd=cwd, text=True, capture_output=True, env=mpi_env())
     finally:
         os.unlink(path)
     if proc.returncode != 0 or "ERROR" in proc.stdout:

@@ -1,0 +1,348 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   fix sph/inlet/temperature: the inlet temperature of a channel periodic
+   along the flow, without a reset zone (Ng, Ng, Sheu & Mukhtar 2020,
+   section 3.2). The periodic plane (box face lo = box face hi of the axis)
+   is the channel's inlet and outlet:
+   - a particle of the group takes T_inlet in the step it passes the
+     outlet (the box face downstream), once;
+   - a pair across the plane exchanges no heat (the outlet is adiabatic,
+     as are the ends of solids), except that a particle of the group on the
+     inlet side receives the pair term with its neighbour at T_inlet: the
+     fluid upstream of the inlet is at T_inlet.
+   Which side of the plane a particle is on follows from the periodic cell
+   its coordinate lies in (ghost images lie in the next cells), so the rule
+   holds however the box is split between ranks. The pairs are corrected
+   after the pair style has computed them and before the ghosts' rates are
+   sent home (pre_reverse), so every style after it sees the corrected
+   rates.
+------------------------------------------------------------------------- */
+
+#include "fix_sph_inlet_temperature.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "group.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "pair_sph_cleary_heat.h"
+#include "sph_checks.h"
+#include "sph_compat.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static const char cmd[] = "fix sph/inlet/temperature";
+
+/* ----------------------------------------------------------------------
+   fix ID group sph/inlet/temperature T_inlet [flow +x|-x|+y|-y|+z|-z]
+------------------------------------------------------------------------- */
+
+FixSPHInletTemperature::FixSPHInletTemperature(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), t_inlet(0.0), axis(0), downstream(1), cuts_plane(0), pair(nullptr),
+    rate_previous(0.0), rate(0.0), energy_reset(0.0), energy_plane(0.0), passes(nullptr)
+{
+  if (!atom->esph_flag || !atom->cv_flag)
+    error->all(FLERR, "Fix sph/inlet/temperature requires atom style sph (esph, cv)");
+  if (narg < 4) error->all(FLERR, "Illegal {} command: expected <T_inlet>", cmd);
+  t_inlet = utils::numeric(FLERR, arg[3], false, lmp);
+  if (!std::isfinite(t_inlet))
+    error->all(FLERR, "Illegal {} command: T_inlet {} is not finite", cmd, arg[3]);
+  int iarg = 4;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "flow") == 0) {
+      if (iarg + 1 >= narg)
+        error->all(FLERR, "Illegal {} command: missing value after 'flow'", cmd);
+      const char *dir = arg[iarg + 1];
+      if (strlen(dir) != 2 || (dir[0] != '+' && dir[0] != '-') || dir[1] < 'x' || dir[1] > 'z')
+        error->all(FLERR,
+                   "Illegal {} command: flow '{}' must be one of +x -x +y -y +z -z (the "
+                   "direction the fluid leaves the box in)",
+                   cmd, dir);
+      downstream = (dir[0] == '+') ? 1 : -1;
+      axis = dir[1] - 'x';
+      iarg += 2;
+    } else
+      error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
+  }
+  if (domain->dimension == 2 && axis == 2)
+    error->all(FLERR, "Illegal {} command: flow along z in a 2d simulation", cmd);
+
+  scalar_flag = 1;
+  extscalar = 1;
+  vector_flag = 1;
+  size_vector = 4;
+  extvector = 1;
+  global_freq = 1;
+  restart_global = 1;
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+}
+
+FixSPHInletTemperature::~FixSPHInletTemperature()
+{
+  atom->delete_callback(id, Atom::GROW);
+  memory->destroy(passes);
+}
+
+int FixSPHInletTemperature::setmask()
+{
+  return PRE_REVERSE | POST_INTEGRATE;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHInletTemperature::init()
+{
+  pair = dynamic_cast<PairSPHClearyHeat *>(force->pair_match("^sph/cleary/heat", 0));
+  if (!pair) error->all(FLERR, "Fix sph/inlet/temperature requires pair style sph/cleary/heat");
+  const char xyz[] = "xyz";
+  if (!domain->periodicity[axis])
+    error->all(FLERR,
+               "Fix {} {}: the box must be periodic along {}, the direction of the flow (the "
+               "periodic plane is the channel's inlet and outlet)",
+               id, style, xyz[axis]);
+  if (domain->triclinic) error->all(FLERR, "Fix {} {}: the box must be orthogonal", id, style);
+  if (SPHCheck::group_count(lmp, groupbit) == 0)
+    error->all(FLERR, "Fix {} {}: group {} has no atoms", id, style, group->names[igroup]);
+
+  // one plane for all of them: the first removes the pairs across it, each
+  // gives its own group its inlet temperature
+  const auto inlets = SPHCompat::fixes_of_style(modify, style);
+  cuts_plane = (inlets.front() == this);
+  for (Fix *other : inlets) {
+    if (other == this) continue;
+    auto *inlet = dynamic_cast<FixSPHInletTemperature *>(other);
+    if (inlet->axis != axis)
+      error->all(FLERR, "Fix {} {}: its flow is along {}, that of fix {} along {}: one axis only",
+                 id, style, xyz[axis], other->id, xyz[inlet->axis]);
+    if (cuts_plane && SPHCheck::groups_overlap(lmp, groupbit, other->groupbit))
+      error->all(FLERR, "Fix {} {}: group {} shares atoms with group {} of fix {}", id, style,
+                 group->names[igroup], group->names[other->igroup], other->id);
+  }
+  SPHCheck::atom_state(lmp, cmd, groupbit, SPHCheck::CV | SPHCheck::ESPH);
+
+  for (Fix *shift : SPHCompat::fixes_of_style(modify, "sph/shift")) {
+    int dim;
+    const int *correct = (const int *) shift->extract("correct", dim);
+    if (correct && *correct && comm->me == 0)
+      error->warning(FLERR,
+                     "Fix {} {}: the temperature correction of fix {} sph/shift takes its "
+                     "gradient across the inlet plane too",
+                     id, style, shift->id);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHInletTemperature::setup_pre_reverse(int, int)
+{
+  for (int i = 0; i < atom->nlocal; i++) passes[i] = passes_now(i);
+  correct_pairs(1);
+}
+
+void FixSPHInletTemperature::pre_reverse(int, int)
+{
+  correct_pairs(0);
+}
+
+/* ----------------------------------------------------------------------
+   the pairs across the plane, as the pair style's list holds them (with
+   newton on, a ghost's share goes home in the reverse communication that
+   follows; with it off, the rank that owns j does j's share). The heat
+   that comes in through the plane is tallied as the wall fixes do it: fix
+   sph applies each rate half a step twice.
+------------------------------------------------------------------------- */
+
+void FixSPHInletTemperature::correct_pairs(int first)
+{
+  const double *const *const x = atom->x;
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+  const double *const mass = atom->mass;
+  const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  double *const desph = atom->desph;
+  const int nlocal = atom->nlocal;
+  const int newton = force->newton_pair;
+  const NeighList *const list = pair->pair_list();
+  const double cut = pair->support();
+  const double cutsq = cut * cut;
+  const double lo = domain->boxlo[axis];
+  const double length = domain->prd[axis];
+
+  double rate_local = 0.0;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const double cell_i = floor((x[i][axis] - lo) / length);
+    const double along = x[i][axis] - lo - cell_i * length;
+    if (along >= cut && length - along > cut) continue;    // no neighbour across the plane
+    const double mass_i = rmass ? rmass[i] : mass[type[i]];
+    const double temp_i = esph[i] / cv[i];
+    const int *const jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double cell_j = floor((x[j][axis] - lo) / length);
+      if (cell_j == cell_i) continue;
+      const double delx = x[i][0] - x[j][0];
+      const double dely = x[i][1] - x[j][1];
+      const double delz = x[i][2] - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      if (rsq >= cutsq) continue;
+      const double mass_j = rmass ? rmass[j] : mass[type[j]];
+      const double temp_j = esph[j] / cv[j];
+      const bool j_here = newton || j < nlocal;
+      if (cuts_plane) {
+        const double f = pair->pair_term(i, j, rsq, temp_i - temp_j);
+        desph[i] -= mass_j * f;
+        if (j_here) desph[j] += mass_i * f;
+      }
+      // the inlet side is the one in the periodic cell further downstream:
+      // it has passed the outlet and come back in
+      if (downstream * (cell_i - cell_j) > 0.0) {
+        if (mask[i] & groupbit) {
+          const double f = pair->pair_term(i, j, rsq, temp_i - t_inlet);
+          desph[i] += mass_j * f;
+          rate_local += mass_i * mass_j * f;
+        }
+      } else if (j_here && (mask[j] & groupbit)) {
+        const double f = pair->pair_term(j, i, rsq, temp_j - t_inlet);
+        desph[j] += mass_i * f;
+        rate_local += mass_i * mass_j * f;
+      }
+    }
+  }
+
+  MPI_Allreduce(&rate_local, &rate, 1, MPI_DOUBLE, MPI_SUM, world);
+  const double dt_half = 0.5 * update->dt * force->ftm2v;    // fix sph's half step
+  if (!first) energy_plane += dt_half * (rate_previous + rate);
+  rate_previous = rate;
+}
+
+/* ----------------------------------------------------------------------
+   the passes of owned atom i through the outlet so far: its periodic cell
+   along the axis (downstream counted positive), image flag included
+------------------------------------------------------------------------- */
+
+double FixSPHInletTemperature::passes_now(int i) const
+{
+  const imageint image = atom->image[i];
+  const imageint flag = (axis == 0) ? (image & IMGMASK)
+      : (axis == 1)                 ? ((image >> IMGBITS) & IMGMASK)
+                                    : (image >> IMG2BITS);
+  const double cell = floor((atom->x[i][axis] - domain->boxlo[axis]) / domain->prd[axis]);
+  return downstream * (cell + (double) ((int) flag - IMGMAX));
+}
+
+/* ----------------------------------------------------------------------
+   after the positions' update: the group's particles that have passed the
+   outlet in this step take T_inlet (once: wrapping them into the box does
+   not count as a pass)
+------------------------------------------------------------------------- */
+
+void FixSPHInletTemperature::post_integrate()
+{
+  double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+  const double *const mass = atom->mass;
+  const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+
+  double energy_local = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double now = passes_now(i);
+    // an atom that came from another rank in this step has its count from there
+    const bool passed = now > passes[i];
+    passes[i] = now;
+    if (!passed) continue;
+    const double esph_inlet = cv[i] * t_inlet;
+    energy_local += (rmass ? rmass[i] : mass[type[i]]) * (esph_inlet - esph[i]);
+    esph[i] = esph_inlet;
+  }
+  double energy_step = 0.0;
+  MPI_Allreduce(&energy_local, &energy_step, 1, MPI_DOUBLE, MPI_SUM, world);
+  energy_reset += energy_step;
+}
+
+/* ----------------------------------------------------------------------
+   scalar: energy the inlet has added (resets and plane); vector: that,
+   the resets' share, the plane's share, the heat rate through the plane
+------------------------------------------------------------------------- */
+
+double FixSPHInletTemperature::compute_scalar()
+{
+  return energy_reset + energy_plane;
+}
+
+double FixSPHInletTemperature::compute_vector(int n)
+{
+  if (n == 0) return energy_reset + energy_plane;
+  if (n == 1) return energy_reset;
+  if (n == 2) return energy_plane;
+  return rate;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHInletTemperature::write_restart(FILE *fp)
+{
+  if (comm->me == 0) {
+    const double state[2] = {energy_reset, energy_plane};
+    const int size = sizeof(state);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(state, sizeof(double), 2, fp);
+  }
+}
+
+void FixSPHInletTemperature::restart(char *buf)
+{
+  const double *state = (const double *) buf;
+  energy_reset = state[0];
+  energy_plane = state[1];
+}
+
+/* ----------------------------------------------------------------------
+   the pass counts travel with the atoms; they are set afresh at each run's
+   setup, so restarts need none
+------------------------------------------------------------------------- */
+
+void FixSPHInletTemperature::grow_arrays(int nmax)
+{
+  memory->grow(passes, nmax, "sph/inlet/temperature:passes");
+}
+
+void FixSPHInletTemperature::copy_arrays(int i, int j, int /*delflag*/)
+{
+  passes[j] = passes[i];
+}
+
+int FixSPHInletTemperature::pack_exchange(int i, double *buf)
+{
+  buf[0] = passes[i];
+  return 1;
+}
+
+int FixSPHInletTemperature::unpack_exchange(int nlocal, double *buf)
+{
+  passes[nlocal] = buf[0];
+  return 1;
+}
+
+double FixSPHInletTemperature::memory_usage()
+{
+  return (double) atom->nmax * sizeof(double);
+}

@@ -1,0 +1,64 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(sph/inlet/temperature,FixSPHInletTemperature);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_SPH_INLET_TEMPERATURE_H
+#define LMP_FIX_SPH_INLET_TEMPERATURE_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+// The inlet temperature of a channel that is periodic along the flow (Ng et
+// al. 2020, section 3.2): a particle of the group that leaves through the
+// outlet re-enters at the inlet with T_inlet; heat crosses the periodic
+// plane only into the group's particles on the inlet side, which see every
+// neighbour across the plane at T_inlet; nothing else crosses it.
+class FixSPHInletTemperature : public Fix {
+ public:
+  FixSPHInletTemperature(class LAMMPS *, int, char **);
+  ~FixSPHInletTemperature() override;
+  int setmask() override;
+  void init() override;
+  void setup_pre_reverse(int, int) override;
+  void pre_reverse(int, int) override;
+  void post_integrate() override;
+  double compute_scalar() override;
+  double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  double memory_usage() override;
+
+ protected:
+  double t_inlet;
+  int axis;                         // 0, 1, 2: x, y, z
+  int downstream;                   // +1 or -1: the flow's direction along the axis
+  int cuts_plane;                   // 1 for the first fix of this style: it removes the pairs across
+  class PairSPHClearyHeat *pair;
+  double rate_previous, rate;       // heat rate through the inlet plane (all ranks)
+  double energy_reset;              // energy the re-entering particles' resets added
+  double energy_plane;              // energy that came in through the inlet plane
+  // per atom: how often it has passed the outlet (image flag plus periodic
+  // cell along the axis, unchanged when LAMMPS wraps it), when last looked
+  double *passes;
+
+  double passes_now(int i) const;
+
+  void correct_pairs(int first);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
