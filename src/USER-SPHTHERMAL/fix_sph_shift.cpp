@@ -3,11 +3,15 @@
    This software is distributed under the GNU General Public License.
 
    fix sph/shift: particle shifting (sph_shift.h). At the end of each step,
-   with the positions of that step:
+   with the positions of that step, either
      dr_i = -D h |v_i| dt sum_j V_j grad_i W_ij    (Reece et al. 2024, eq 38)
-   over every neighbour j (walls too, so that particles keep off them),
-   shortened to at most cap * dx_i (dx_i = V_i^(1/d)); then x_i += dr_i for
-   the atoms of the group. With 'correct yes' the temperature follows:
+   or the delta-plus form (Sun et al. 2017; Ng et al. 2020, eqs 19-20)
+     dr_i = -C (U dt / h) (2h)^2 sum_j [1 + R (W_ij / W(dx_i))^n] grad_i W_ij V_j
+   with V_j = 2 m_j / (rho_i + rho_j) for a neighbour of the group (the
+   fluid) and V_j = dx_i^d for any other (walls, solids), over every
+   neighbour j (walls too, so that particles keep off them), shortened to
+   at most cap * dx_i (dx_i = V_i^(1/d)); then x_i += dr_i for the atoms of
+   the group. With 'correct yes' the temperature follows:
      T_i += dr_i . grad T_i
    with the first-order corrected gradient (sph_gradient.h), exact for a
    linear field; the energy that adds is tallied.
@@ -41,12 +45,18 @@ static const char cmd[] = "fix sph/shift";
 /* ---------------------------------------------------------------------- */
 
 FixSPHShift::FixSPHShift(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), coefficient(0.0), cap(0.1), correct(0), kernel_kind(0), cutoff(0.0),
-    list(nullptr), energy(0.0), largest(0.0), capped(0)
+    Fix(lmp, narg, arg), form(SKILLEN), coefficient(0.0), speed(0.0), r_coeff(0.2), r_power(4),
+    cap(0.1), correct(0), kernel_kind(0), cutoff(0.0), list(nullptr), energy(0.0), largest(0.0),
+    capped(0)
 {
   if (narg < 5) error->all(FLERR, "Illegal {} command: expected <form> <coefficient>", cmd);
-  if (strcmp(arg[3], "skillen") != 0)
-    error->all(FLERR, "Illegal {} command: unknown form '{}' (known: skillen)", cmd, arg[3]);
+  if (strcmp(arg[3], "skillen") == 0)
+    form = SKILLEN;
+  else if (strcmp(arg[3], "delta-plus") == 0)
+    form = DELTAPLUS;
+  else
+    error->all(FLERR, "Illegal {} command: unknown form '{}' (known: skillen, delta-plus)", cmd,
+               arg[3]);
   coefficient = utils::numeric(FLERR, arg[4], false, lmp);
   if (!(coefficient > 0.0) || !std::isfinite(coefficient))
     error->all(FLERR,
@@ -54,8 +64,29 @@ FixSPHShift::FixSPHShift(LAMMPS *lmp, int narg, char **arg) :
                "they crowd; Reece et al.'s D = -2 is 2 here)",
                cmd, arg[4]);
   int iarg = 5;
+  if (form == DELTAPLUS) {
+    if (narg < 6)
+      error->all(FLERR, "Illegal {} command: delta-plus expects <C> <U> (U: the flow's largest speed)",
+                 cmd);
+    speed = utils::numeric(FLERR, arg[5], false, lmp);
+    if (!(speed > 0.0) || !std::isfinite(speed))
+      error->all(FLERR, "Illegal {} command: delta-plus speed U {} must be > 0", cmd, arg[5]);
+    iarg = 6;
+  }
   while (iarg < narg) {
-    if (strcmp(arg[iarg], "cap") == 0) {
+    if (form == DELTAPLUS && strcmp(arg[iarg], "R") == 0) {
+      if (iarg + 1 >= narg) error->all(FLERR, "Illegal {} command: missing value after 'R'", cmd);
+      r_coeff = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(r_coeff >= 0.0) || !std::isfinite(r_coeff))
+        error->all(FLERR, "Illegal {} command: R {} must be >= 0", cmd, arg[iarg + 1]);
+      iarg += 2;
+    } else if (form == DELTAPLUS && strcmp(arg[iarg], "n") == 0) {
+      if (iarg + 1 >= narg) error->all(FLERR, "Illegal {} command: missing value after 'n'", cmd);
+      r_power = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (r_power < 1 || r_power > 16)
+        error->all(FLERR, "Illegal {} command: n {} must be 1 to 16", cmd, arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "cap") == 0) {
       if (iarg + 1 >= narg) error->all(FLERR, "Illegal {} command: missing value after 'cap'", cmd);
       cap = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (!(cap > 0.0) || !(cap <= 0.5))
@@ -113,17 +144,18 @@ void FixSPHShift::end_of_step()
 {
   // the ghosts' rho (and esph) as the step ended on their owners' ranks
   SPHCompat::forward_comm(comm, this);
-  if (correct)
-    shift_group<1>();
+  if (form == DELTAPLUS)
+    correct ? shift_group<DELTAPLUS, 1>() : shift_group<DELTAPLUS, 0>();
   else
-    shift_group<0>();
+    correct ? shift_group<SKILLEN, 1>() : shift_group<SKILLEN, 0>();
 }
 
 /* ----------------------------------------------------------------------
-   CORRECT: also move T with the atoms (the corrected gradient's sums)
+   FORM: SKILLEN or DELTAPLUS; CORRECT: also move T with the atoms (the
+   corrected gradient's sums)
 ------------------------------------------------------------------------- */
 
-template <int CORRECT> void FixSPHShift::shift_group()
+template <int FORM, int CORRECT> void FixSPHShift::shift_group()
 {
   double *const *const x = atom->x;
   const double *const *const v = atom->v;
@@ -148,7 +180,9 @@ template <int CORRECT> void FixSPHShift::shift_group()
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
-    const double speed = sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+    const double mass_i = rmass ? rmass[i] : mass[type[i]];
+    const double spacing = pow(mass_i / rho[i], 1.0 / dim);
+    const double w_spacing = FORM == DELTAPLUS ? sphk_w(&kernel, spacing) : 0.0;
     const double t_i = CORRECT ? esph[i] / cv[i] : 0.0;
     double grad_c[3] = {0.0, 0.0, 0.0}, g[3] = {0.0, 0.0, 0.0};
     double L[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
@@ -159,11 +193,18 @@ template <int CORRECT> void FixSPHShift::shift_group()
       const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
       if (rsq >= cutsq || rsq == 0.0) continue;
       const double r = sqrt(rsq);
-      const double volume_j = (rmass ? rmass[j] : mass[type[j]]) / rho[j];
+      const double mass_j = rmass ? rmass[j] : mass[type[j]];
+      const double volume_j = mass_j / rho[j];
       // grad_i W_ij = dW/dr (r_i - r_j) / r
       const double f = sphk_dwdr(&kernel, r) / r;
       const double grad_w[3] = {f * del[0], f * del[1], f * del[2]};
-      for (int a = 0; a < 3; a++) grad_c[a] += volume_j * grad_w[a];
+      if (FORM == DELTAPLUS) {
+        const double weight =
+            sphs_deltaplus_weight(sphk_w(&kernel, r), w_spacing, r_coeff, r_power) *
+            ((mask[j] & groupbit) ? 2.0 * mass_j / (rho[i] + rho[j]) : mass_i / rho[i]);
+        for (int a = 0; a < 3; a++) grad_c[a] += weight * grad_w[a];
+      } else
+        for (int a = 0; a < 3; a++) grad_c[a] += volume_j * grad_w[a];
       if (CORRECT) {
         const double dT = esph[j] / cv[j] - t_i;
         for (int a = 0; a < 3; a++) g[a] += volume_j * dT * grad_w[a];
@@ -172,9 +213,12 @@ template <int CORRECT> void FixSPHShift::shift_group()
       }
     }
     double *dr = &shift[3 * (size_t) i];
-    sphs_skillen(coefficient, h, speed, dt, grad_c, dr);
+    if (FORM == DELTAPLUS)
+      sphs_deltaplus(coefficient, h, speed, dt, grad_c, dr);
+    else
+      sphs_skillen(coefficient, h, sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]),
+                   dt, grad_c, dr);
     if (dim == 2) dr[2] = 0.0;
-    const double spacing = pow((rmass ? rmass[i] : mass[type[i]]) / rho[i], 1.0 / dim);
     capped_local += sphs_cap(dr, cap * spacing);
     largest_local = MAX(largest_local,
                         sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]) / spacing);

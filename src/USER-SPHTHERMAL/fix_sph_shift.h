@@ -20,7 +20,8 @@ namespace LAMMPS_NS {
 
 // Particle shifting at the end of each step: the atoms of the group move
 // down the gradient of the kernel sum of the particles' volumes (Skillen
-// et al. 2013; Reece et al. 2024, eq 38), by at most a fraction of their
+// et al. 2013; Reece et al. 2024, eq 38) or of its delta-plus form (Sun et
+// al. 2017; Ng et al. 2020, eqs 19-20), by at most a fraction of their
 // spacing; optionally their temperature follows, to first order.
 class FixSPHShift : public Fix {
  public:
@@ -38,7 +39,12 @@ class FixSPHShift : public Fix {
   void *extract(const char *, int &) override;
 
  protected:
-  double coefficient;    // D
+  enum { SKILLEN, DELTAPLUS };
+  int form;
+  double coefficient;    // D (skillen) or C (delta-plus)
+  double speed;          // delta-plus: the reference speed U of CFL Ma = U dt / h
+  double r_coeff;        // delta-plus: R and n of the pair weight
+  int r_power;
   double cap;            // largest shift / spacing
   int correct;           // 1: T_i += dr_i . grad T_i
   int kernel_kind;
@@ -49,7 +55,7 @@ class FixSPHShift : public Fix {
   double largest;               // largest shift / spacing of the last step
   int capped;                   // atoms shortened to the cap in the last step
 
-  template <int CORRECT> void shift_group();
+  template <int FORM, int CORRECT> void shift_group();
 };
 
 }    // namespace LAMMPS_NS

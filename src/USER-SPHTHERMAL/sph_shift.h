@@ -9,6 +9,14 @@
    both signs the particles would move towards crowding: D = -2 is the
    coefficient of DualSPHysics, whose formula has no leading minus, so
    D = 2 here is their setting.
+
+   The delta-plus shift of Sun, Colagrossi, Marrone & Zhang 2017 (as Ng,
+   Ng, Sheu & Mukhtar 2020 use it, eqs 19-20, whose printed prefactor lacks
+   the (2h)^2 that gives it units of length squared):
+     dr_i = -C CFL Ma (2h)^2 sum_j [1 + R (W_ij / W(dx))^n] grad_i W_ij V_j
+   with CFL Ma = (c0 dt / h) (U / c0) = U dt / h for a reference speed U;
+   R = 0.2 and n = 4 as in Monaghan's artificial pressure, which keeps
+   particles from pairing.
 ------------------------------------------------------------------------- */
 
 #ifndef SPH_SHIFT_H
@@ -24,6 +32,26 @@ static inline void sphs_skillen(double coefficient, double h, double speed, doub
   dr[0] = s * grad_c[0];
   dr[1] = s * grad_c[1];
   dr[2] = s * grad_c[2];
+}
+
+/* the delta-plus pair weight 1 + R (W_ij / W(dx))^n */
+static inline double sphs_deltaplus_weight(double w_ij, double w_spacing, double r_coeff,
+                                           int n)
+{
+  const double ratio = w_ij / w_spacing;
+  double power = 1.0;
+  for (int k = 0; k < n; k++) power *= ratio;
+  return 1.0 + r_coeff * power;
+}
+
+/* dr = -C (U dt / h) (2h)^2 sum_grad, sum_grad = sum_j weight_ij grad_i W_ij V_j */
+static inline void sphs_deltaplus(double coefficient, double h, double speed, double dt,
+                                  const double sum_grad[3], double dr[3])
+{
+  const double s = -coefficient * speed * dt / h * 4.0 * h * h;
+  dr[0] = s * sum_grad[0];
+  dr[1] = s * sum_grad[1];
+  dr[2] = s * sum_grad[2];
 }
 
 /* shorten dr to at most 'limit' long; returns 1 when it was shortened */

@@ -2,7 +2,7 @@
    (sph_buoyancy.h) and the first-order corrected interpolation at a point
    (sph_interpolation.h) that the mirror walls use at their ghost points,
    and particle shifting (sph_shift.h).
-   Usage: test_convection_terms buoyancy | linear | thin | shift          */
+   Usage: test_convection_terms buoyancy | linear | thin | shift | deltaplus */
 
 #include "sph_buoyancy.h"
 #include "sph_interpolation.h"
@@ -139,6 +139,29 @@ static void test_thin(void)
 
 /* the shift runs down grad C, scales with D h |v| dt, and the cap shortens
    it to the limit without turning it */
+/* delta-plus: the pair weight is 1 + R at one spacing, tends to 1 far
+   out, grows as (W_ij/W(dx))^n close in; the shift runs down the weighted
+   sum with the length C (U dt / h) (2h)^2 |sum| */
+static void test_deltaplus(void)
+{
+  const double w_dx = 2.5;
+  check(fabs(sphs_deltaplus_weight(w_dx, w_dx, 0.2, 4) - 1.2) < 1e-15, "weight 1 + R at r = dx",
+        sphs_deltaplus_weight(w_dx, w_dx, 0.2, 4), 1.2);
+  check(sphs_deltaplus_weight(0.0, w_dx, 0.2, 4) == 1.0, "weight 1 where W = 0",
+        sphs_deltaplus_weight(0.0, w_dx, 0.2, 4), 1.0);
+  check(fabs(sphs_deltaplus_weight(2.0 * w_dx, w_dx, 0.2, 4) - (1.0 + 0.2 * 16.0)) < 1e-14,
+        "weight 1 + R 2^n at W = 2 W(dx)", sphs_deltaplus_weight(2.0 * w_dx, w_dx, 0.2, 4), 4.2);
+  const double sum[3] = {-6.0, 8.0, 0.0};
+  double dr[3];
+  const double c = 0.5, h = 0.2, u = 3.0, dt = 1e-3;
+  sphs_deltaplus(c, h, u, dt, sum, dr);
+  const double length = c * u * dt / h * 4.0 * h * h * 10.0;
+  check(dr[0] > 0.0 && dr[1] < 0.0 && dr[2] == 0.0, "down the weighted sum",
+        dr[0] * sum[0] + dr[1] * sum[1], -1.0);
+  check(fabs(sqrt(dr[0] * dr[0] + dr[1] * dr[1]) - length) < 1e-17,
+        "length C (U dt / h) (2h)^2 |sum|", sqrt(dr[0] * dr[0] + dr[1] * dr[1]), length);
+}
+
 static void test_shift(void)
 {
   const double grad_c[3] = {3.0, -4.0, 0.0};
@@ -161,7 +184,7 @@ static void test_shift(void)
 int main(int argc, char **argv)
 {
   if (argc < 2) {
-    fprintf(stderr, "usage: %s buoyancy|linear|thin|shift\n", argv[0]);
+    fprintf(stderr, "usage: %s buoyancy|linear|thin|shift|deltaplus\n", argv[0]);
     return 2;
   }
   if (strcmp(argv[1], "buoyancy") == 0)
@@ -172,6 +195,8 @@ int main(int argc, char **argv)
     test_thin();
   else if (strcmp(argv[1], "shift") == 0)
     test_shift();
+  else if (strcmp(argv[1], "deltaplus") == 0)
+    test_deltaplus();
   else {
     fprintf(stderr, "unknown test %s\n", argv[1]);
     return 2;

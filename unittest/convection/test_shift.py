@@ -13,7 +13,11 @@
             shifted particles exactly (to 1e-10), next to walls too, and the
             fix's energy equals the change of sum m cv T of the group
 
-Usage: test_shift.py CHECK --lmp LMP --plugin PLUGIN
+Every check runs with either form of the shift (--form): skillen
+(Reece et al. 2024, eq 38) or delta-plus (Sun et al. 2017; Ng et al. 2020,
+eqs 19-20), each with a coefficient that shifts by about as much.
+
+Usage: test_shift.py CHECK --lmp LMP --plugin PLUGIN [--form skillen|delta-plus]
 """
 import argparse
 import os
@@ -65,12 +69,22 @@ def kernel_sums(x, y, volume, period=None, radius=0.4):
     return (w * volume).sum(axis=1)
 
 
+# the form and its coefficients: D = 2 (5 in 'linear'), or C = 1 (2.5) with
+# U the particles' speed
+FORMS = {"skillen": ("skillen 2.0", "skillen 5.0"),
+         "delta-plus": ("delta-plus 1.0 {speed}", "delta-plus 2.5 {speed}")}
+
+
+def shift_args(a, speed, strong=False):
+    return FORMS[a.form][1 if strong else 0].format(speed=speed)
+
+
 def check_lattice(a, work):
-    script = BOX.format(plugin=a.plugin, boundary="p p", lo=0, hi=10) + """
+    script = BOX.format(plugin=a.plugin, boundary="p p", lo=0, hi=10) + f"""
 mass            2 0.01
 velocity        all set 0.3 0.2 0.0 units box
 fix             integrate all sph
-fix             shift all sph/shift skillen 2.0
+fix             shift all sph/shift {shift_args(a, 0.36)}
 timestep        1.0e-3
 thermo_style    custom step f_shift[2]
 run             100
@@ -83,13 +97,13 @@ write_dump      all custom lattice.dump id x y modify sort id format float %.17g
     gy = (d["y"] - 0.2 * 0.1 - 0.05) / 0.1
     off = max(np.abs(gx - np.round(gx)).max(), np.abs(gy - np.round(gy)).max()) * 0.1
     ok = off < 1e-12
-    print(f"{'ok' if ok else 'FAIL'}: moving periodic lattice, 100 steps: largest distance from the "
+    print(f"{'ok' if ok else 'FAIL'}: {a.form}: moving periodic lattice, 100 steps: largest distance from the "
           f"lattice {off:.2e} (limit 1e-12)")
     return ok
 
 
 def check_spread(a, work):
-    script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + """
+    script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + f"""
 region          corner block 0 0.3 0 0.3 INF INF units box
 group           corner region corner
 group           moved subtract fluid corner
@@ -99,7 +113,7 @@ displace_atoms  fluid move v_jx v_jy 0.0 units box
 velocity        all set 1.0 0.5 0.0 units box
 write_dump      all custom before.dump id x y modify sort id format float %.17g
 fix             hold all sph/stationary
-fix             shift moved sph/shift skillen 2.0
+fix             shift moved sph/shift {shift_args(a, 1.12)}
 timestep        1.0e-3
 thermo_style    custom step f_shift[2] f_shift[3]
 run             200
@@ -119,14 +133,14 @@ write_dump      all custom after.dump id x y modify sort id format float %.17g
     still = np.abs(f["x"] - b["x"]).max(initial=0.0, where=~moved) + \
         np.abs(f["y"] - b["y"]).max(initial=0.0, where=~moved)
     ok = spread1 < 0.5 * spread0 and step[moved].max() > 0.0 and still == 0.0
-    print(f"{'ok' if ok else 'FAIL'}: spread of the kernel sums of the shifted particles "
+    print(f"{'ok' if ok else 'FAIL'}: {a.form}: spread of the kernel sums of the shifted particles "
           f"{spread0:.4e} -> {spread1:.4e} (must halve); largest shift {step[moved].max():.3e}; "
           f"largest move of walls and the group left out {still:.1e} (must be 0)")
     return ok
 
 
 def check_linear(a, work):
-    script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + """
+    script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + f"""
 variable        jx atom 0.03*sin(37.0*x+11.0*y)
 variable        jy atom 0.03*cos(23.0*x-29.0*y)
 displace_atoms  fluid move v_jx v_jy 0.0 units box
@@ -136,7 +150,7 @@ pair_style      sph/harmonic/visc wendland 0.4
 pair_coeff      * *
 velocity        all set 1.0 0.5 0.0 units box
 # no integrator: only the shift moves particles and changes T
-fix             shift fluid sph/shift skillen 5.0 correct yes
+fix             shift fluid sph/shift {shift_args(a, 1.12, True)} correct yes
 timestep        2.0e-3
 variable        energy equal c_esum*mass[1]
 thermo_style    custom step v_energy f_shift
@@ -158,7 +172,7 @@ write_dump      fluid custom linear.dump id x y c_T modify sort id format float 
     err = np.abs(d["c_T"] - (0.2 + 0.7 * d["x"] - 0.4 * d["y"])).max()
     energy_err = abs((e_last - e_first) - tally)
     ok = err < 1e-10 and energy_err < 1e-12 * max(1.0, abs(e_first)) and abs(tally) > 1e-9
-    print(f"{'ok' if ok else 'FAIL'}: linear T follows the shifted particles: largest error "
+    print(f"{'ok' if ok else 'FAIL'}: {a.form}: linear T follows the shifted particles: largest error "
           f"{err:.2e} (limit 1e-10); energy change {e_last - e_first:.6e}, tallied {tally:.6e} "
           f"(difference {energy_err:.1e})")
     return ok
@@ -167,6 +181,7 @@ write_dump      fluid custom linear.dump id x y c_T modify sort id format float 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("check", choices=["lattice", "spread", "linear"])
+    p.add_argument("--form", choices=sorted(FORMS), default="skillen")
     p.add_argument("--lmp", required=True)
     p.add_argument("--plugin", required=True)
     a = p.parse_args()
