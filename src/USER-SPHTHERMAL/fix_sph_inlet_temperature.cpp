@@ -127,7 +127,7 @@ void FixSPHInletTemperature::init()
     if (inlet->axis != axis)
       error->all(FLERR, "Fix {} {}: its flow is along {}, that of fix {} along {}: one axis only",
                  id, style, xyz[axis], other->id, xyz[inlet->axis]);
-    if (cuts_plane && SPHCheck::groups_overlap(lmp, groupbit, other->groupbit))
+    if (SPHCheck::groups_overlap(lmp, groupbit, other->groupbit))
       error->all(FLERR, "Fix {} {}: group {} shares atoms with group {} of fix {}", id, style,
                  group->names[igroup], group->names[other->igroup], other->id);
   }
