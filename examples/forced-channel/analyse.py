@@ -1,0 +1,152 @@
+#!/usr/bin/env python3
+"""Analyse the heated channel (in.channel): the last frame of <out>.dump
+against the finite-volume reference of tools/channel_fv.py.
+
+Printed and checked:
+- temperature across the channel (fluid, and the slabs with --walls thick)
+  at x = 5, 50, 100, 150, 195 m: the particles of the column nearest each
+  station against the reference profile there; the largest error in % of
+  T_w - T_in;
+- the bulk (mixing-cup) temperature along x and the local Nusselt number
+  Nu = q D_h / (k (T_w - T_b)), D_h = 2 W, from the heat the wall's dummy
+  particles give to the fluid (walls = dirichlet), against the reference;
+- the flow: u against the Poiseuille profile (in % of u_max) and the
+  largest |v| (in % of u_max; 0 exactly for a laminar flow).
+A PNG shows the profiles, the bulk temperature and Nu.
+
+  analyse.py channel.dump [--walls dirichlet|thick] [--ksk 1] [--re 652]
+             [--n 20] [--png channel.png] [--max-t-error PCT] [--max-vy PCT]
+"""
+import argparse
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+import channel_fv  # noqa: E402
+from lammps_dump import read_frames  # noqa: E402
+
+W, LENGTH, MU, RHO, K, T_W, T_IN = 20.0, 200.0, 0.248, 1.0, 131914.89, 420.0, 300.0
+STATIONS = (5.0, 50.0, 100.0, 150.0, 195.0)
+
+
+def reference(a):
+    case = "thick-wall" if a.walls == "thick" else "heated"
+    problem = channel_fv.preset(case, re=a.re, ks_ratio=a.ksk)
+    return channel_fv.solve(problem, nx=a.ref_nx, ny=a.ref_ny)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    p.add_argument("dump", nargs="?", default="channel.dump")
+    p.add_argument("--walls", choices=["dirichlet", "thick"], default="dirichlet")
+    p.add_argument("--ksk", type=float, default=1.0)
+    p.add_argument("--re", type=float, default=652.0)
+    p.add_argument("--n", type=int, default=20, help="particles across W")
+    p.add_argument("--ref-nx", type=int, default=None, help="reference cells along x (its default)")
+    p.add_argument("--ref-ny", type=int, default=None, help="reference cells across W (its default)")
+    p.add_argument("--png", default="channel.png")
+    p.add_argument("--label", default="")
+    p.add_argument("--max-t-error", type=float, help="fail if the largest T error (%%) is above")
+    p.add_argument("--max-vy", type=float, help="fail if the largest |v| (%% of u_max) is above")
+    a = p.parse_args()
+
+    step, d = read_frames(a.dump)[-1]
+    dx = W / a.n
+    u_max = a.re * MU / (RHO * W)
+    fluid = d["type"] == 1
+    medium = d["type"] < 3
+    ref = reference(a)
+    dT = T_W - T_IN
+
+    # columns: particles of one lattice column share x to within the drift
+    x = np.mod(d["x"], LENGTH)
+    worst_t = 0.0
+    rows = []
+    for xs in STATIONS:
+        col = medium & (np.abs(x - xs) < 0.5 * dx)
+        y = d["y"][col]
+        t = d["c_T"][col]
+        _, t_ref = channel_fv.profile_at(ref, xs, y)
+        err = 100.0 * np.abs(t - t_ref).max() / dT
+        worst_t = max(worst_t, err)
+        rows.append((xs, y, t, t_ref, err))
+        print(f"x = {xs:5.0f} m: {col.sum():3d} particles, T from {t.min():.2f} to {t.max():.2f} K, "
+              f"largest error {err:.3f} % of T_w - T_in")
+
+    # the flow
+    u_exact = 4.0 * u_max * d["y"][fluid] * (W - d["y"][fluid]) / W**2
+    u_err = 100.0 * np.abs(d["vx"][fluid] - u_exact).max() / u_max
+    vy = 100.0 * np.abs(d["vy"][fluid]).max() / u_max
+    print(f"flow: largest |u - u_Poiseuille| {u_err:.3f} % of u_max, largest |v| {vy:.4f} % of u_max")
+
+    # bulk temperature and local Nu per column (walls = dirichlet: the dummies' heat)
+    ncol = int(round(LENGTH / dx))
+    centres = (np.arange(ncol) + 0.5) * dx
+    index = np.clip((x / dx).astype(int), 0, ncol - 1)
+    uf = d["vx"][fluid]
+    t_bulk = np.bincount(index[fluid], uf * d["c_T"][fluid], ncol) / \
+        np.bincount(index[fluid], uf, ncol)
+    nu = None
+    if a.walls == "dirichlet" and "f_hot[1]" in d:
+        dummy = d["type"] == 3
+        # heat per unit depth from both walls into the fluid, per column
+        q = -np.bincount(index[dummy], d["f_hot[1]"][dummy], ncol) / (2.0 * dx)
+        nu = q * 2.0 * W / (K * (T_W - t_bulk))
+    ref_bulk = channel_fv.bulk_at(ref, 0, centres)
+    bulk_err = 100.0 * np.abs(t_bulk - ref_bulk).max() / dT
+    print(f"bulk temperature: largest error {bulk_err:.3f} % of T_w - T_in; outlet "
+          f"{t_bulk[-1]:.2f} K (reference {ref_bulk[-1]:.2f} K)")
+    if nu is not None:
+        ref_nu = channel_fv.nu_at(ref, centres)
+        for xs in (50.0, 100.0, 150.0, 195.0):
+            k = int(xs / dx)
+            print(f"  Nu at x = {xs:5.0f} m: {nu[k]:.3f} (reference {ref_nu[k]:.3f})")
+
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(1, 3, figsize=(15, 4.5))
+        for xs, y, t, t_ref, err in rows:
+            yr, tr = channel_fv.profile_at(ref, xs)
+            line, = ax[0].plot((tr - T_IN) / dT, yr, "-", lw=1)
+            ax[0].plot((t - T_IN) / dT, y, "o", ms=3, color=line.get_color(), label=f"x = {xs:g} m")
+        ax[0].set_xlabel("(T - T_in) / (T_w - T_in)")
+        ax[0].set_ylabel("y (m)")
+        ax[0].legend(fontsize=8)
+        ax[1].plot(centres, (t_bulk - T_IN) / dT, "o", ms=2, label="SPH")
+        ax[1].plot(centres, (ref_bulk - T_IN) / dT, "-", label="finite volume")
+        ax[1].set_xlabel("x (m)")
+        ax[1].set_ylabel("bulk (T - T_in) / (T_w - T_in)")
+        ax[1].legend()
+        if nu is not None:
+            ax[2].plot(centres, nu, "o", ms=2, label="SPH")
+            ax[2].plot(centres, ref_nu, "-", label="finite volume")
+            ax[2].axhline(7.541, ls=":", color="k", label="7.541 (fully developed)")
+            ax[2].set_ylim(0, 30)
+            ax[2].set_xlabel("x (m)")
+            ax[2].set_ylabel("local Nu (D_h = 2W)")
+            ax[2].legend()
+        fig.suptitle(f"Heated channel, Re = {a.re:g}, {a.walls} walls"
+                     + (f", k_s/k = {a.ksk:g}" if a.walls == "thick" else "")
+                     + (f", {a.label}" if a.label else "") + f": step {step}")
+        fig.tight_layout()
+        fig.savefig(a.png, dpi=110)
+        print(f"wrote {a.png}")
+    except ImportError:
+        print("no matplotlib: no PNG")
+
+    ok = True
+    if a.max_t_error is not None and not worst_t <= a.max_t_error:
+        print(f"FAIL: largest T error {worst_t:.3f} % above {a.max_t_error} %")
+        ok = False
+    if a.max_vy is not None and not vy <= a.max_vy:
+        print(f"FAIL: largest |v| {vy:.4f} % of u_max above {a.max_vy} %")
+        ok = False
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,34 @@
+#!/bin/sh
+# Run the heated channel and compare it with the finite-volume reference
+# (tools/channel_fv.py); writes channel.png.
+#   ./run.sh            Re = 652, walls at 420 K, 20 particles across (the
+#                       paper's resolution), from the developed flow to
+#                       t = 150 s (about 8 minutes on one core)
+#   ./run.sh quick      10 across to t = 100 s (the CI test
+#                       forced.validation.channel_10)
+#   ./run.sh thick      the thick-wall channel (10 m slabs, KSK = k_s/k)
+# Environment: LMP, PLUGIN, NP, OUT as in the other examples; N (particles
+# across), TEND (s), RE, KSK, SHIFT (yes|no), START (developed|rest),
+# DTFAC (dt = DTFAC h / c0), MAX_T_ERROR (exit 1 above it, % of T_w - T_in),
+# MAX_VY (exit 1 above it, % of u_max).
+set -e
+here=$(cd "$(dirname "$0")" && pwd)
+. "$here/../common.sh"
+
+WALLS=dirichlet
+case "${1:-}" in
+  quick) N=${N:-10} TEND=${TEND:-100} ;;
+  thick) WALLS=thick ;;
+esac
+N=${N:-20}
+TEND=${TEND:-150}
+RE=${RE:-652}
+KSK=${KSK:-1}
+name=channel-$WALLS
+rm -f "$name.dump"
+$run "$LMP" -in "$here/in.channel" -var plugin "$PLUGIN" -var n "$N" -var tend "$TEND" \
+  -var re "$RE" -var walls "$WALLS" -var ksk "$KSK" -var shift "${SHIFT:-no}" \
+  -var start "${START:-developed}" -var dtfac "${DTFAC:-0.15}" -var every "$TEND" \
+  -var out "$name" -log "log.$name" | grep -E "^u_max|Loop time"
+"$PYTHON" "$here/analyse.py" "$name.dump" --walls "$WALLS" --ksk "$KSK" --re "$RE" --n "$N" \
+  --png "$name.png" ${MAX_T_ERROR:+--max-t-error "$MAX_T_ERROR"} ${MAX_VY:+--max-vy "$MAX_VY"}
