@@ -14,6 +14,20 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from lammps_dump import read_frames  # noqa: E402
 
 
+def poiseuille_from_rest(y, t, u_max, nu, width, terms=200):
+    """Poiseuille flow started from rest by a body force (the series solution
+    of Morris, Fox & Zhu 1997), steady centre-line velocity u_max:
+    u = F/(2 nu) y (W - y)
+        - sum_{n>=0} 4 F W^2 / (nu pi^3 (2n+1)^3) sin((2n+1) pi y / W) exp(-(2n+1)^2 pi^2 nu t / W^2)
+    with F = 8 u_max nu / W^2."""
+    y = np.asarray(y, dtype=float)
+    force = 8.0 * u_max * nu / width ** 2
+    k = 2 * np.arange(terms)[:, None] + 1
+    series = 4 * force * width ** 2 / (nu * np.pi ** 3 * k ** 3) * np.sin(k * np.pi * y / width) \
+        * np.exp(-k ** 2 * np.pi ** 2 * nu * t / width ** 2)
+    return force / (2 * nu) * y * (width - y) - series.sum(axis=0)
+
+
 def run(description, exact, times, speed, speed_name, title, name, width):
     """exact(y, t): the reference; speed: the reference speed (speed_name, e.g.
     'u_max'); name: default dump prefix and PNG (name.dump, name.png); width:

@@ -14,8 +14,13 @@ Printed and checked:
   largest |v| (in % of u_max; 0 exactly for a laminar flow).
 A PNG shows the profiles, the bulk temperature and Nu.
 
+With --series (a run started from rest): every frame's u against the
+series solution of Poiseuille flow started from rest (Morris, Fox & Zhu
+1997), at the frame's time step * dt (dt = dtfac hdx dx / (cfac u_max)).
+
   analyse.py channel.dump [--walls dirichlet|thick] [--ksk 1] [--re 652]
              [--n 20] [--png channel.png] [--max-t-error PCT] [--max-vy PCT]
+             [--series --hdx 1.3 --dtfac 0.15 --cfac 10]
 """
 import argparse
 import os
@@ -26,6 +31,9 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 import channel_fv  # noqa: E402
 from lammps_dump import read_frames  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from channel_flow import poiseuille_from_rest  # noqa: E402
 
 W, LENGTH, MU, RHO, K, T_W, T_IN = 20.0, 200.0, 0.248, 1.0, 131914.89, 420.0, 300.0
 STATIONS = (5.0, 50.0, 100.0, 150.0, 195.0)
@@ -50,11 +58,26 @@ def main():
     p.add_argument("--label", default="")
     p.add_argument("--max-t-error", type=float, help="fail if the largest T error (%%) is above")
     p.add_argument("--max-vy", type=float, help="fail if the largest |v| (%% of u_max) is above")
+    p.add_argument("--series", action="store_true",
+                   help="compare every frame's u with the flow started from rest")
+    p.add_argument("--hdx", type=float, default=1.3)
+    p.add_argument("--dtfac", type=float, default=0.15)
+    p.add_argument("--cfac", type=float, default=10.0)
     a = p.parse_args()
 
-    step, d = read_frames(a.dump)[-1]
+    frames = read_frames(a.dump)
+    step, d = frames[-1]
     dx = W / a.n
     u_max = a.re * MU / (RHO * W)
+    if a.series:
+        dt = a.dtfac * a.hdx * dx / (a.cfac * u_max)
+        print(f"{'t (s)':>8} {'mean |u err| %':>15} {'max |u err| %':>14} {'max |v| %':>10}  (of u_max)")
+        for fstep, f in frames[1:]:
+            fl = f["type"] == 1
+            t = fstep * dt
+            err = 100.0 * np.abs(f["vx"][fl] - poiseuille_from_rest(f["y"][fl], t, u_max, MU / RHO, W)) / u_max
+            print(f"{t:8.1f} {err.mean():15.3f} {err.max():14.3f} "
+                  f"{100.0 * np.abs(f['vy'][fl]).max() / u_max:10.4f}")
     fluid = d["type"] == 1
     medium = d["type"] < 3
     ref = reference(a)

@@ -28,7 +28,7 @@ KSK=${KSK:-1}
 name=channel-$WALLS
 rm -f "$name.dump"
 $run "$LMP" -in "$here/in.channel" -var plugin "$PLUGIN" -var n "$N" -var tend "$TEND" \
-  -var re "$RE" -var walls "$WALLS" -var ksk "$KSK" -var shift "${SHIFT:-no}" \
+  -var re "$RE" -var walls "$WALLS" -var ksk "$KSK" -var shift "${SHIFT:-yes}" \
   -var start "${START:-developed}" -var dtfac "${DTFAC:-0.15}" -var every "$TEND" \
   -var out "$name" -log "log.$name" | grep -E "^u_max|Loop time"
 "$PYTHON" "$here/analyse.py" "$name.dump" --walls "$WALLS" --ksk "$KSK" --re "$RE" --n "$N" \
