@@ -316,6 +316,18 @@ void FixSPHInletTemperature::restart(char *buf)
 }
 
 /* ----------------------------------------------------------------------
+   axis: 0, 1, 2 for the flow along x, y, z (the styles that interpolate
+   near the plane keep to one side of it)
+------------------------------------------------------------------------- */
+
+void *FixSPHInletTemperature::extract(const char *name, int &dim)
+{
+  dim = 0;
+  if (strcmp(name, "axis") == 0) return (void *) &axis;
+  return nullptr;
+}
+
+/* ----------------------------------------------------------------------
    the pass counts travel with the atoms; they are set afresh at each run's
    setup, so restarts need none
 ------------------------------------------------------------------------- */

@@ -33,7 +33,7 @@ static const char *const thermal_walls[] = {"sph/wall/adiabatic", "sph/wall/diri
 
 SPHMirror::SPHMirror(LAMMPS *lmp, const std::string &cmd, bool returns) :
     Pointers(lmp), command(cmd), returns_heat(returns), region(nullptr), groupbit(0),
-    medium_exclude(0), held_walls(0), kernel_kind(0), cutoff(0.0)
+    medium_exclude(0), held_walls(0), kernel_kind(0), cutoff(0.0), inlet_axis(-1)
 {
   for (int k = 0; k < 3; k++) {
     cell_lo[k] = 0.0;
@@ -68,6 +68,12 @@ void SPHMirror::init(int groupbit_in, int kind, double cut)
 
   // the interpolation reads the volume and temperature of the medium
   SPHCheck::atom_state(lmp, command.c_str(), 0, SPHCheck::RHO | SPHCheck::CV);
+
+  inlet_axis = -1;
+  for (Fix *inlet : SPHCompat::fixes_of_style(modify, "sph/inlet/temperature")) {
+    int dim;
+    inlet_axis = *(const int *) inlet->extract("axis", dim);
+  }
 
   medium_exclude = held_walls = 0;
   for (const char *style : thermal_walls)
@@ -142,6 +148,12 @@ int SPHMirror::ghost_point(const double *x, double *ghost, double *depth)
   const int inside = region->interior ? region->match(x[0], x[1], x[2])
                                       : !region->match(x[0], x[1], x[2]);
   return inside ? -1 : 0;
+}
+
+// the periodic image of the box a coordinate along 'axis' lies in
+double SPHMirror::periodic_cell(double coord, int axis) const
+{
+  return floor((coord - domain->boxlo[axis]) / domain->prd[axis]);
 }
 
 /* ----------------------------------------------------------------------
@@ -229,6 +241,7 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
     sphi_point point;
     sphi_begin(&point, dim);
     double shepard = 0.0;
+    const double side = (inlet_axis < 0) ? 0.0 : periodic_cell(g[inlet_axis], inlet_axis);
     const size_t start = neighbours.size();
     for (int cz = c_lo[2]; cz <= c_hi[2]; cz++)
       for (int cy = c_lo[1]; cy <= c_hi[1]; cy++)
@@ -236,6 +249,7 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
           for (int j = cell_head[(static_cast<long>(cz) * ncell[1] + cy) * ncell[0] + cx]; j >= 0;
                j = cell_next[j]) {
             if (mask[j] & medium_exclude) continue;
+            if (inlet_axis >= 0 && periodic_cell(x[j][inlet_axis], inlet_axis) != side) continue;
             const double d[3] = {x[j][0] - g[0], x[j][1] - g[1], x[j][2] - g[2]};
             const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if (rsq >= cutsq) continue;

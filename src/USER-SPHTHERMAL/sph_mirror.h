@@ -21,7 +21,8 @@ namespace LAMMPS_NS {
 // medium is interpolated with the first-order correction of Liu & Liu
 // (sph_interpolation.h). The wall fixes set their particles' temperature
 // from it: T_w = T_ghost (adiabatic), T_w = 2 T_surface - T_ghost (Dirichlet).
-// The medium's particles are those in no thermal wall group.
+// The medium's particles are those in no thermal wall group; with fix
+// sph/inlet/temperature, those on the ghost point's side of its plane.
 class SPHMirror : protected Pointers {
  public:
   // returns_heat: the owner gives heat back to the medium (return_heat),
@@ -68,6 +69,9 @@ class SPHMirror : protected Pointers {
   int held_walls;    // walls that hold a temperature (Dirichlet, isothermal)
   int kernel_kind;
   double cutoff;
+  // the axis of the inlet plane of fix sph/inlet/temperature (-1: none):
+  // medium across that plane is not interpolated from
+  int inlet_axis;
   // the medium atoms near each ghost point and their Shepard weights
   std::vector<int> first_neighbour, neighbours;
   std::vector<double> weights;
@@ -81,6 +85,7 @@ class SPHMirror : protected Pointers {
   int ghost_point(const double *x, double *ghost, double *depth = nullptr);
   void bin_atoms();
   void cells_around(const double *p, int *c_lo, int *c_hi) const;
+  double periodic_cell(double coord, int axis) const;
 };
 
 }    // namespace LAMMPS_NS

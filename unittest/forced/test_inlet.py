@@ -15,6 +15,10 @@ velocity, so that the exact outcome is known).
   balance    moving at u with conduction: the change of sum m esph equals the
              fix's energy (resets and plane) to round-off; the heat rate
              through the plane is negative (the inlet is colder)
+  walls      the dummies of fix sph/wall/dirichlet next to the inlet take
+             their temperature from the inlet side only: hotter fluid at the
+             outlet end leaves them unchanged (to 1e-14), while without the
+             inlet fix it changes them
   restart    the balance scene run in two halves through write_restart and
              read_restart gives the same temperatures and the same energy as
              the two halves run one after the other
@@ -67,7 +71,7 @@ def dump_now(name):
     return f"""
 thermo_style    custom step c_Tsum
 run             0 post no
-write_dump      all custom {name} id x y ix c_T modify sort id format float %.17g
+write_dump      all custom {name} id type x y ix c_T modify sort id format float %.17g
 """
 
 
@@ -116,6 +120,55 @@ run             {steps}
         print(f"{'ok' if good else 'FAIL'}: at rest, {steps} steps, {np_} rank(s): inlet against a "
               f"reservoir at T_inlet upstream and nothing downstream: largest difference "
               f"{dev:.1e} (limit 1e-12); the inlet cooled the first column by {cooled:.3f} on average")
+    return ok
+
+
+WALLED = """plugin load {plugin}
+units           si
+dimension       2
+atom_style      sph
+boundary        p p p
+atom_modify     map array
+lattice         sq 0.1 origin 0.5 0.5 0.0
+region          box block 0 20 -3 9 -0.5 0.5
+create_box      2 box
+create_atoms    1 box
+region          channel block INF INF 0 0.6 INF INF units box
+group           fluid region channel
+group           wall subtract all fluid
+set             group wall type 2
+fix             materials all sph/materials type * conductivity constant 1.0 cv 2.0 &
+                eos linear 10.0 rho0 1.0
+sph/set         all materials spacing 0.1 temperature 1.0
+region          outlet_end block 1.7 INF INF INF INF INF units box
+group           outlet_end region outlet_end
+group           hot_end intersect fluid outlet_end
+sph/set         hot_end temperature {t_outlet}
+pair_style      sph/cleary/heat wendland 0.3
+pair_coeff      * *
+neigh_modify    exclude type 2 2
+fix             walls wall sph/wall/dirichlet 2.0 surface channel
+fix             integrate fluid sph
+{inlet}
+compute         T all sph/t/atom
+compute         Tsum all reduce sum c_T
+"""
+
+
+def check_walls(a, work):
+    def dummies(t_outlet, inlet):
+        script = WALLED.format(plugin=a.plugin, t_outlet=t_outlet,
+                               inlet=f"fix inlet fluid sph/inlet/temperature {T_INLET}" if inlet else "")
+        d, _ = run_dump(a, work, script, "walls.dump")
+        near = (d["type"] == 2) & (d["x"] < 0.3)
+        return d["c_T"][near]
+
+    same = np.abs(dummies(1.0, True) - dummies(5.0, True)).max()
+    without = np.abs(dummies(1.0, False) - dummies(5.0, False)).max()
+    ok = same < 1e-14 and without > 1e-3
+    print(f"{'ok' if ok else 'FAIL'}: dummies within 0.3 of the inlet, fluid at the outlet end at 1 "
+          f"or at 5: largest change {same:.1e} with the inlet fix (limit 1e-14), {without:.3f} "
+          f"without it (must be > 1e-3)")
     return ok
 
 
@@ -212,7 +265,7 @@ run             300
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    p.add_argument("check", choices=["reservoir", "reenter", "balance", "restart"])
+    p.add_argument("check", choices=["reservoir", "reenter", "balance", "walls", "restart"])
     p.add_argument("--lmp", required=True)
     p.add_argument("--plugin", required=True)
     p.add_argument("--np", type=int, default=1)
@@ -221,7 +274,7 @@ def main():
     a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
     with tempfile.TemporaryDirectory() as work:
         ok = {"reservoir": check_reservoir, "reenter": check_reenter, "balance": check_balance,
-              "restart": check_restart}[a.check](a, work)
+              "walls": check_walls, "restart": check_restart}[a.check](a, work)
     return 0 if ok else 1
 
 
