@@ -49,11 +49,14 @@ lattice         sq 0.1 origin 0.5 0.5 0.0
 region          box block {xlo} 20 0 6 -0.5 0.5
 create_box      1 box
 create_atoms    1 box
-fix             materials all sph/materials type * conductivity constant {k} cv 2.0 &
-                eos linear 10.0 rho0 1.0
-sph/set         all materials spacing 0.1
+{settings}sph/set         all materials spacing 0.1
 variable        Tinit atom 1.0+0.3*sin(2.0*PI*y/0.6)+0.2*x
 sph/set         all temperature v_Tinit
+timestep        1.0e-3
+"""
+# what a restarted run defines again: materials, pair, the computes read
+SETTINGS = """fix             materials all sph/materials type * conductivity constant {k} cv 2.0 &
+                eos linear 10.0 rho0 1.0
 pair_style      sph/cleary/heat wendland 0.3
 pair_coeff      * *
 compute         T all sph/t/atom
@@ -61,8 +64,12 @@ compute         Tsum all reduce sum c_T
 compute         e all property/atom esph
 variable        me atom mass*c_e
 compute         energy all reduce sum v_me
-timestep        1.0e-3
 """
+
+
+def box(a, xboundary, xlo, k):
+    return BOX.format(plugin=a.plugin, xboundary=xboundary, xlo=xlo,
+                      settings=SETTINGS.format(k=k))
 
 
 def dump_now(name):
@@ -92,12 +99,12 @@ def by_position(d, keep):
 
 def check_reservoir(a, work):
     steps = 200
-    inlet = BOX.format(plugin=a.plugin, xboundary="p", xlo=0, k=1.0) + f"""
+    inlet = box(a, "p", 0, 1.0) + f"""
 fix             integrate all sph
 fix             inlet all sph/inlet/temperature {T_INLET}
 run             {steps}
 """
-    cut = BOX.format(plugin=a.plugin, xboundary="f", xlo=-3, k=1.0) + f"""
+    cut = box(a, "f", -3, 1.0) + f"""
 region          upstream block INF 0 INF INF INF INF units box
 group           reservoir region upstream
 group           channel subtract all reservoir
@@ -174,7 +181,7 @@ def check_walls(a, work):
 
 def check_reenter(a, work):
     # 0.5 m/s for 1.01 s: the last five columns pass the outlet
-    script = BOX.format(plugin=a.plugin, xboundary="p", xlo=0, k=1e-30) + f"""
+    script = box(a, "p", 0, 1e-30) + f"""
 velocity        all set 0.5 0.0 0.0 units box
 fix             integrate all sph
 fix             inlet all sph/inlet/temperature {T_INLET}
@@ -210,7 +217,7 @@ thermo          50
 
 
 def check_balance(a, work):
-    script = BOX.format(plugin=a.plugin, xboundary="p", xlo=0, k=1.0) + \
+    script = box(a, "p", 0, 1.0) + \
         BALANCE.format(t_inlet=T_INLET) + "run 600\n"
     _, out = run_dump(a, work, script, "balance.dump", a.np)
     t = last_table(out, "f_inlet")
@@ -228,26 +235,17 @@ def check_balance(a, work):
 
 
 def check_restart(a, work):
-    box = BOX.format(plugin=a.plugin, xboundary="p", xlo=0, k=1.0)
+    scene = box(a, "p", 0, 1.0)
     # fix sph evaluates the rates at a run's setup from the full-step energy,
     # within a run from the half-step one: a run split in two differs from
     # one run by O(dt^2), so the restart is held against the same split
-    whole, out1 = run_dump(a, work, box + BALANCE.format(t_inlet=T_INLET) + "run 300\nrun 300\n",
+    whole, out1 = run_dump(a, work, scene + BALANCE.format(t_inlet=T_INLET) + "run 300\nrun 300\n",
                            "whole.dump")
-    first = box + BALANCE.format(t_inlet=T_INLET) + "run 300\nwrite_restart half.restart\n"
+    first = scene + BALANCE.format(t_inlet=T_INLET) + "run 300\nwrite_restart half.restart\n"
     run_lammps(a.lmp, first, work)
     second = f"""plugin load {a.plugin}
 read_restart    half.restart
-fix             materials all sph/materials type * conductivity constant 1.0 cv 2.0 &
-                eos linear 10.0 rho0 1.0
-pair_style      sph/cleary/heat wendland 0.3
-pair_coeff      * *
-compute         T all sph/t/atom
-compute         Tsum all reduce sum c_T
-compute         e all property/atom esph
-variable        me atom mass*c_e
-compute         energy all reduce sum v_me
-fix             integrate all sph
+{SETTINGS.format(k=1.0)}fix             integrate all sph
 fix             inlet all sph/inlet/temperature {T_INLET}
 thermo_style    custom step c_energy f_inlet
 thermo_modify   format float %.17g
