@@ -157,6 +157,8 @@ def main():
             ax[2].set_xlabel("x (m)")
             ax[2].set_ylabel("local Nu (D_h = 2W)")
             ax[2].legend()
+        else:
+            ax[2].set_visible(False)
         fig.suptitle(f"Heated channel, Re = {a.re:g}, {a.walls} walls"
                      + (f", k_s/k = {a.ksk:g}" if a.walls == "thick" else "")
                      + (f", {a.label}" if a.label else "") + f": step {step}")
