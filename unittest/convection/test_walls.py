@@ -38,7 +38,8 @@ import tempfile
 
 import numpy as np
 
-from lammps_checks import DE_VAHL_DAVIS, late_rows, longest_thermo_table, read_dump, run_lammps
+from lammps_checks import (DE_VAHL_DAVIS, late_rows, longest_thermo_table, mpi_env, mpi_prefix,
+                           read_dump, run_lammps)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -180,14 +181,12 @@ def check_conserve(a, work):
 def run_cavity(a, work, np_=1, **variables):
     """examples/convection-cavity/in.cavity with these -var values on np_
     ranks; its screen output (the check stops if the run fails)."""
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OMP_NUM_THREADS="1")
-    cmd = ([a.mpirun, "--oversubscribe", "-np", str(np_)] if np_ > 1 else []) + [
+    cmd = mpi_prefix(np_, a.mpirun) + [
         a.lmp, "-log", "none", "-in", os.path.join(ROOT, "examples/convection-cavity/in.cavity"),
         "-var", "plugin", a.plugin]
     for name, value in variables.items():
         cmd += ["-var", name, str(value)]
-    proc = subprocess.run(cmd, cwd=work, text=True, capture_output=True, env=env)
+    proc = subprocess.run(cmd, cwd=work, text=True, capture_output=True, env=mpi_env())
     if proc.returncode != 0 or "final:" not in proc.stdout:
         sys.stdout.write(proc.stdout + proc.stderr)
         sys.exit(f"FAIL: cavity run ({' '.join(cmd)}) failed")
