@@ -11,7 +11,8 @@
    fluid) and V_j = dx_i^d for any other (walls, solids), over every
    neighbour j (walls too, so that particles keep off them), shortened to
    at most cap * dx_i (dx_i = V_i^(1/d)); then x_i += dr_i for the atoms of
-   the group. With 'correct yes' the temperature follows:
+   the group. With 'correct yes' the temperature follows (with 'correct
+   all' the density and the velocity too, the same way):
      T_i += dr_i . grad T_i
    with the first-order corrected gradient (sph_gradient.h), exact for a
    linear field; the energy that adds is tallied.
@@ -96,7 +97,11 @@ FixSPHShift::FixSPHShift(LAMMPS *lmp, int narg, char **arg) :
     } else if (strcmp(arg[iarg], "correct") == 0) {
       if (iarg + 1 >= narg)
         error->all(FLERR, "Illegal {} command: missing value after 'correct'", cmd);
-      correct = SPHCompat::yes_no(error, FLERR, cmd, "correct", arg[iarg + 1]) ? 1 : 0;
+      // all: T, rho and v; yes: T only
+      if (strcmp(arg[iarg + 1], "all") == 0)
+        correct = CORRECT_ALL;
+      else
+        correct = SPHCompat::yes_no(error, FLERR, cmd, "correct", arg[iarg + 1]) ? CORRECT_T : 0;
       iarg += 2;
     } else
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
@@ -111,7 +116,7 @@ FixSPHShift::FixSPHShift(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
   nevery = 1;
   restart_global = 1;
-  comm_forward = correct ? 2 : 1;
+  comm_forward = (correct == CORRECT_ALL) ? 5 : correct ? 2 : 1;
 }
 
 int FixSPHShift::setmask()
@@ -144,22 +149,29 @@ void FixSPHShift::end_of_step()
 {
   // the ghosts' rho (and esph) as the step ended on their owners' ranks
   SPHCompat::forward_comm(comm, this);
-  if (form == DELTAPLUS)
-    correct ? shift_group<DELTAPLUS, 1>() : shift_group<DELTAPLUS, 0>();
-  else
-    correct ? shift_group<SKILLEN, 1>() : shift_group<SKILLEN, 0>();
+  if (form == DELTAPLUS) {
+    if (correct == CORRECT_ALL)
+      shift_group<DELTAPLUS, CORRECT_ALL>();
+    else
+      correct ? shift_group<DELTAPLUS, CORRECT_T>() : shift_group<DELTAPLUS, 0>();
+  } else {
+    if (correct == CORRECT_ALL)
+      shift_group<SKILLEN, CORRECT_ALL>();
+    else
+      correct ? shift_group<SKILLEN, CORRECT_T>() : shift_group<SKILLEN, 0>();
+  }
 }
 
 /* ----------------------------------------------------------------------
-   FORM: SKILLEN or DELTAPLUS; CORRECT: also move T with the atoms (the
-   corrected gradient's sums)
+   FORM: SKILLEN or DELTAPLUS; CORRECT: 0, CORRECT_T (move T with the
+   atoms, from the corrected gradient's sums) or CORRECT_ALL (T, rho, v)
 ------------------------------------------------------------------------- */
 
 template <int FORM, int CORRECT> void FixSPHShift::shift_group()
 {
   double *const *const x = atom->x;
-  const double *const *const v = atom->v;
-  const double *const rho = atom->rho;
+  double *const *const v = atom->v;
+  double *const rho = atom->rho;
   const double *const esph = atom->esph;
   const double *const cv = atom->cv;
   const double *const rmass = atom->rmass;
@@ -175,6 +187,8 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
 
   shift.assign(3 * (size_t) nlocal, 0.0);
   std::vector<double> dtemp(CORRECT ? nlocal : 0, 0.0);
+  // CORRECT_ALL: the changes of rho, vx, vy, vz
+  std::vector<double> dflow(CORRECT == CORRECT_ALL ? 4 * (size_t) nlocal : 0, 0.0);
   double largest_local = 0.0;
   int capped_local = 0;
   for (int ii = 0; ii < list->inum; ii++) {
@@ -185,6 +199,8 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
     const double w_spacing = FORM == DELTAPLUS ? sphk_w(&kernel, spacing) : 0.0;
     const double t_i = CORRECT ? esph[i] / cv[i] : 0.0;
     double grad_c[3] = {0.0, 0.0, 0.0}, g[3] = {0.0, 0.0, 0.0};
+    // CORRECT_ALL: the sums of rho, vx, vy, vz as g is of T
+    double g_flow[4][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
     double L[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     const int *const jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
@@ -210,6 +226,12 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
         for (int a = 0; a < 3; a++) g[a] += volume_j * dT * grad_w[a];
         for (int a = 0; a < 3; a++)
           for (int b = 0; b < 3; b++) L[3 * a + b] -= volume_j * del[a] * grad_w[b];
+        if (CORRECT == CORRECT_ALL) {
+          const double diff[4] = {rho[j] - rho[i], v[j][0] - v[i][0], v[j][1] - v[i][1],
+                                  v[j][2] - v[i][2]};
+          for (int q = 0; q < 4; q++)
+            for (int a = 0; a < 3; a++) g_flow[q][a] += volume_j * diff[q] * grad_w[a];
+        }
       }
     }
     double *dr = &shift[3 * (size_t) i];
@@ -226,6 +248,12 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
       double grad_t[3] = {g[0], g[1], g[2]};
       sphg_solve_transposed(L, g, grad_t, dim);
       dtemp[i] = dr[0] * grad_t[0] + dr[1] * grad_t[1] + dr[2] * grad_t[2];
+      if (CORRECT == CORRECT_ALL)
+        for (int q = 0; q < 4; q++) {
+          double grad_q[3];
+          sphg_solve_transposed(L, g_flow[q], grad_q, dim);
+          dflow[4 * (size_t) i + q] = dr[0] * grad_q[0] + dr[1] * grad_q[1] + dr[2] * grad_q[2];
+        }
     }
   }
 
@@ -237,6 +265,10 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
     if (CORRECT) {
       atom->esph[i] += cv[i] * dtemp[i];
       energy_local += (rmass ? rmass[i] : mass[type[i]]) * cv[i] * dtemp[i];
+    }
+    if (CORRECT == CORRECT_ALL) {
+      rho[i] += dflow[4 * (size_t) i];
+      for (int a = 0; a < 3; a++) v[i][a] += dflow[4 * (size_t) i + 1 + a];
     }
   }
   double sums[2] = {energy_local, (double) capped_local}, totals[2];
@@ -252,6 +284,8 @@ int FixSPHShift::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag
   for (int k = 0; k < n; k++) {
     buf[m++] = atom->rho[send[k]];
     if (correct) buf[m++] = atom->esph[send[k]];
+    if (correct == CORRECT_ALL)
+      for (int a = 0; a < 3; a++) buf[m++] = atom->v[send[k]][a];
   }
   return m;
 }
@@ -262,6 +296,8 @@ void FixSPHShift::unpack_forward_comm(int n, int first, double *buf)
   for (int k = 0; k < n; k++) {
     atom->rho[first + k] = buf[m++];
     if (correct) atom->esph[first + k] = buf[m++];
+    if (correct == CORRECT_ALL)
+      for (int a = 0; a < 3; a++) atom->v[first + k][a] = buf[m++];
   }
 }
 

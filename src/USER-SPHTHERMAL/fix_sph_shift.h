@@ -46,7 +46,8 @@ class FixSPHShift : public Fix {
   double r_coeff;        // delta-plus: R and n of the pair weight
   int r_power;
   double cap;            // largest shift / spacing
-  int correct;           // 1: T_i += dr_i . grad T_i
+  enum { CORRECT_T = 1, CORRECT_ALL = 2 };
+  int correct;           // 0, CORRECT_T: T_i += dr_i . grad T_i, CORRECT_ALL: T, rho and v
   int kernel_kind;
   double cutoff;
   class NeighList *list;

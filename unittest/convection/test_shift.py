@@ -9,6 +9,8 @@
             the kernel sums of volumes falls by at least half in 200 steps
             (with the sign reversed, particles would crowd and it would
             grow), and the walls and a group left out do not move at all
+  follow    with 'correct all' linear density and velocity fields follow
+            the shifted particles exactly (to 1e-10)
   linear    with 'correct yes' the temperature of a linear field follows the
             shifted particles exactly (to 1e-10), next to walls too, and the
             fix's energy equals the change of sum m cv T of the group
@@ -18,6 +20,7 @@ Every check runs with either form of the shift (--form): skillen
 eqs 19-20), each with a coefficient that shifts by about as much.
 
 Usage: test_shift.py CHECK --lmp LMP --plugin PLUGIN [--form skillen|delta-plus]
+                     [--np N --mpirun MPIRUN]
 """
 import argparse
 import os
@@ -178,16 +181,60 @@ write_dump      fluid custom linear.dump id x y c_T modify sort id format float 
     return ok
 
 
+def check_follow(a, work):
+    script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + f"""
+variable        jx atom 0.03*sin(37.0*x+11.0*y)
+variable        jy atom 0.03*cos(23.0*x-29.0*y)
+displace_atoms  fluid move v_jx v_jy 0.0 units box
+variable        rholin atom 1.0+0.05*x-0.03*y
+variable        vxlin atom 1.0+0.2*x-0.1*y
+variable        vylin atom 0.5-0.15*x+0.1*y
+set             group all sph/rho v_rholin
+velocity        all set v_vxlin v_vylin 0.0 units box
+pair_style      sph/harmonic/visc wendland 0.4
+pair_coeff      * *
+# no integrator: only the shift moves particles and changes rho and v
+fix             shift fluid sph/shift {shift_args(a, 1.12, True)} correct all
+timestep        2.0e-3
+write_dump      fluid custom start.dump id x y modify sort id format float %.17g
+run             50
+write_dump      fluid custom follow.dump id x y vx vy modify sort id format float %.17g
+compute         rho fluid property/atom rho
+compute         rhomax fluid reduce max c_rho
+thermo_style    custom step c_rhomax
+run             0 post no
+write_dump      fluid custom follow_rho.dump id c_rho modify sort id format float %.17g
+"""
+    run_lammps(a.lmp, script, work, np_=a.np, mpirun=a.mpirun)
+    d = read_dump(os.path.join(work, "follow.dump"))
+    r = read_dump(os.path.join(work, "follow_rho.dump"))
+    x, y = d["x"], d["y"]
+    err = max(np.abs(r["c_rho"] - (1.0 + 0.05 * x - 0.03 * y)).max(),
+              np.abs(d["vx"] - (1.0 + 0.2 * x - 0.1 * y)).max(),
+              np.abs(d["vy"] - (0.5 - 0.15 * x + 0.1 * y)).max())
+    b = read_dump(os.path.join(work, "start.dump"))
+    moved = np.hypot(x - b["x"], y - b["y"]).max()
+    # uncorrected, rho and v would be off by their gradients (0.03 to 0.2) times the shift
+    ok = err < 1e-10 and moved > 1e-3
+    print(f"{'ok' if ok else 'FAIL'}: {a.form}, {a.np} rank(s): with 'correct all' linear rho and v "
+          f"follow the shifted particles: largest error {err:.2e} (limit 1e-10); largest shift {moved:.2e} "
+          f"(must be > 1e-3)")
+    return ok
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    p.add_argument("check", choices=["lattice", "spread", "linear"])
+    p.add_argument("check", choices=["lattice", "spread", "linear", "follow"])
     p.add_argument("--form", choices=sorted(FORMS), default="skillen")
+    p.add_argument("--np", type=int, default=1, help="MPI ranks ('follow' only)")
+    p.add_argument("--mpirun", default="mpirun")
     p.add_argument("--lmp", required=True)
     p.add_argument("--plugin", required=True)
     a = p.parse_args()
     a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
     with tempfile.TemporaryDirectory() as work:
-        ok = {"lattice": check_lattice, "spread": check_spread, "linear": check_linear}[a.check](
+        ok = {"lattice": check_lattice, "spread": check_spread, "linear": check_linear,
+              "follow": check_follow}[a.check](
             a, work)
     return 0 if ok else 1
 
