@@ -31,10 +31,11 @@ def cpu_seconds(cmd, workdir):
     return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
 
 
-def cost(args, workdir, lmp_vars):
+def cost(args, workdir, lmp_vars, whole_run=False):
     """Pair CPU time per particle-step (s), the fastest of --repeat runs: the
     CPU time of the run (set-up included, a few % of it) times the pair's
-    share of the loop time in LAMMPS's timing breakdown."""
+    share of the loop time in LAMMPS's timing breakdown (whole_run: the
+    run's CPU time per particle-step)."""
     cmd = [args.lmp, "-in", os.path.join(here, "in.bench"), "-var", "plugin", args.plugin]
     for k, v in lmp_vars.items():
         if k != "steps":
@@ -46,7 +47,8 @@ def cost(args, workdir, lmp_vars):
         log = open(os.path.join(workdir, "log.lammps")).read()
         steps, natoms = (int(v) for v in re.findall(
             r"Loop time of [0-9.eE+-]+ on \d+ procs for (\d+) steps with (\d+) atoms", log)[-1])
-        share = float(re.findall(r"^Pair\s+\|.*\|\s+([0-9.]+)\s*$", log, re.M)[-1]) / 100.0
+        share = 1.0 if whole_run else \
+            float(re.findall(r"^Pair\s+\|.*\|\s+([0-9.]+)\s*$", log, re.M)[-1]) / 100.0
         c = total * share / (steps * natoms)
         best = c if best is None or c < best else best
     return best

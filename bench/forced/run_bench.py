@@ -17,29 +17,17 @@ particle-step (the fastest of --repeat runs each).
 
 import argparse
 import os
-import re
 import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "bench", "flow"))
-from run_bench import cpu_seconds  # noqa: E402
+from run_bench import cost  # noqa: E402
 
 
 def per_particle_step(a, workdir, **lmp_vars):
-    cmd = [a.lmp, "-in", os.path.join(ROOT, "bench", "flow", "in.bench"), "-var", "plugin", a.plugin]
-    for k, v in lmp_vars.items():
-        cmd += ["-var", k, str(v)]
-    best = None
-    for _ in range(a.repeat):
-        total = cpu_seconds(cmd + ["-log", "log.lammps"], workdir)
-        log = open(os.path.join(workdir, "log.lammps")).read()
-        steps, natoms = (int(v) for v in re.findall(
-            r"Loop time of [0-9.eE+-]+ on \d+ procs for (\d+) steps with (\d+) atoms", log)[-1])
-        c = total / (steps * natoms)
-        best = c if best is None or c < best else best
-    return best
+    return cost(a, workdir, lmp_vars, whole_run=True)
 
 
 def main():

@@ -58,6 +58,13 @@ compute         esum fluid reduce sum c_e
 """
 
 
+# the fluid's particles displaced by up to 0.03 (0.3 spacings), reproducibly
+JITTER = """variable        jx atom 0.03*sin(37.0*x+11.0*y)
+variable        jy atom 0.03*cos(23.0*x-29.0*y)
+displace_atoms  fluid move v_jx v_jy 0.0 units box
+"""
+
+
 def kernel_sums(x, y, volume, period=None, radius=0.4):
     """sum_j V_j W_ij (Wendland C2 in 2d, support radius), periodic in both
     directions when period is given; i = j included."""
@@ -106,13 +113,10 @@ write_dump      all custom lattice.dump id x y modify sort id format float %.17g
 
 
 def check_spread(a, work):
-    script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + f"""
+    script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + JITTER + f"""
 region          corner block 0 0.3 0 0.3 INF INF units box
 group           corner region corner
 group           moved subtract fluid corner
-variable        jx atom 0.03*sin(37.0*x+11.0*y)
-variable        jy atom 0.03*cos(23.0*x-29.0*y)
-displace_atoms  fluid move v_jx v_jy 0.0 units box
 velocity        all set 1.0 0.5 0.0 units box
 write_dump      all custom before.dump id x y modify sort id format float %.17g
 fix             hold all sph/stationary
@@ -143,10 +147,7 @@ write_dump      all custom after.dump id x y modify sort id format float %.17g
 
 
 def check_linear(a, work):
-    script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + f"""
-variable        jx atom 0.03*sin(37.0*x+11.0*y)
-variable        jy atom 0.03*cos(23.0*x-29.0*y)
-displace_atoms  fluid move v_jx v_jy 0.0 units box
+    script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + JITTER + f"""
 variable        Tlin atom 0.2+0.7*x-0.4*y
 sph/set         all temperature v_Tlin
 pair_style      sph/harmonic/visc wendland 0.4
@@ -182,10 +183,7 @@ write_dump      fluid custom linear.dump id x y c_T modify sort id format float 
 
 
 def check_follow(a, work):
-    script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + f"""
-variable        jx atom 0.03*sin(37.0*x+11.0*y)
-variable        jy atom 0.03*cos(23.0*x-29.0*y)
-displace_atoms  fluid move v_jx v_jy 0.0 units box
+    script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + JITTER + f"""
 variable        rholin atom 1.0+0.05*x-0.03*y
 variable        vxlin atom 1.0+0.2*x-0.1*y
 variable        vylin atom 0.5-0.15*x+0.1*y
