@@ -186,15 +186,15 @@ void FixSPHInletTemperature::correct_pairs(int first)
   double rate_local = 0.0;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
-    const double cell_i = floor((x[i][axis] - lo) / length);
-    const double along = x[i][axis] - lo - cell_i * length;
-    if (along >= cut && length - along > cut) continue;    // no neighbour across the plane
+    // no neighbour across the plane (and inside the box: cell 0)
+    if (x[i][axis] >= lo + cut && x[i][axis] < lo + length - cut) continue;
+    const double cell_i = periodic_cell(domain, x[i][axis], axis);
     const double mass_i = rmass ? rmass[i] : mass[type[i]];
     const double temp_i = esph[i] / cv[i];
     const int *const jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      const double cell_j = floor((x[j][axis] - lo) / length);
+      const double cell_j = periodic_cell(domain, x[j][axis], axis);
       if (cell_j == cell_i) continue;
       const double delx = x[i][0] - x[j][0];
       const double dely = x[i][1] - x[j][1];
@@ -242,8 +242,7 @@ double FixSPHInletTemperature::passes_now(int i) const
   const imageint flag = (axis == 0) ? (image & IMGMASK)
       : (axis == 1)                 ? ((image >> IMGBITS) & IMGMASK)
                                     : (image >> IMG2BITS);
-  const double cell = floor((atom->x[i][axis] - domain->boxlo[axis]) / domain->prd[axis]);
-  return downstream * (cell + (double) ((int) flag - IMGMAX));
+  return downstream * (periodic_cell(domain, atom->x[i][axis], axis) + (double) ((int) flag - IMGMAX));
 }
 
 /* ----------------------------------------------------------------------

@@ -12,7 +12,10 @@ FixStyle(sph/inlet/temperature,FixSPHInletTemperature);
 #ifndef LMP_FIX_SPH_INLET_TEMPERATURE_H
 #define LMP_FIX_SPH_INLET_TEMPERATURE_H
 
+#include "domain.h"
 #include "fix.h"
+
+#include <cmath>
 
 namespace LAMMPS_NS {
 
@@ -35,6 +38,15 @@ class FixSPHInletTemperature : public Fix {
   void write_restart(FILE *) override;
   void restart(char *) override;
   void *extract(const char *, int &) override;
+
+  // the periodic image of the box that a coordinate along 'axis' lies in
+  // (ghost images across the plane lie in the next ones): which side of the
+  // inlet plane a point is on, for this fix and the styles that keep to one
+  // side of it
+  static double periodic_cell(const Domain *domain, double coord, int axis)
+  {
+    return floor((coord - domain->boxlo[axis]) / domain->prd[axis]);
+  }
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
   int pack_exchange(int, double *) override;

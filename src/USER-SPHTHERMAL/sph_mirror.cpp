@@ -12,6 +12,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
+#include "fix_sph_inlet_temperature.h"
 #include "modify.h"
 #include "neighbor.h"
 #include "region.h"
@@ -150,12 +151,6 @@ int SPHMirror::ghost_point(const double *x, double *ghost, double *depth)
   return inside ? -1 : 0;
 }
 
-// the periodic image of the box a coordinate along 'axis' lies in
-double SPHMirror::periodic_cell(double coord, int axis) const
-{
-  return floor((coord - domain->boxlo[axis]) / domain->prd[axis]);
-}
-
 /* ----------------------------------------------------------------------
    cells of side 'cutoff' over the atoms of the medium and of the other
    thermal walls, owned and ghost
@@ -241,7 +236,8 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
     sphi_point point;
     sphi_begin(&point, dim);
     double shepard = 0.0;
-    const double side = (inlet_axis < 0) ? 0.0 : periodic_cell(g[inlet_axis], inlet_axis);
+    const double side =
+        (inlet_axis < 0) ? 0.0 : FixSPHInletTemperature::periodic_cell(domain, g[inlet_axis], inlet_axis);
     const size_t start = neighbours.size();
     for (int cz = c_lo[2]; cz <= c_hi[2]; cz++)
       for (int cy = c_lo[1]; cy <= c_hi[1]; cy++)
@@ -249,7 +245,9 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
           for (int j = cell_head[(static_cast<long>(cz) * ncell[1] + cy) * ncell[0] + cx]; j >= 0;
                j = cell_next[j]) {
             if (mask[j] & medium_exclude) continue;
-            if (inlet_axis >= 0 && periodic_cell(x[j][inlet_axis], inlet_axis) != side) continue;
+            if (inlet_axis >= 0 &&
+                FixSPHInletTemperature::periodic_cell(domain, x[j][inlet_axis], inlet_axis) != side)
+              continue;
             const double d[3] = {x[j][0] - g[0], x[j][1] - g[1], x[j][2] - g[2]};
             const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if (rsq >= cutsq) continue;

@@ -85,7 +85,6 @@ class SPHMirror : protected Pointers {
   int ghost_point(const double *x, double *ghost, double *depth = nullptr);
   void bin_atoms();
   void cells_around(const double *p, int *c_lo, int *c_hi) const;
-  double periodic_cell(double coord, int axis) const;
 };
 
 }    // namespace LAMMPS_NS
