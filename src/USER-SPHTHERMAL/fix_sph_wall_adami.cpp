@@ -105,7 +105,7 @@ void FixSPHWallAdami::init()
     }
   MPI_Allreduce(&local_solid, &any_solid, 1, MPI_INT, MPI_MAX, world);
   // rho and vest, and with solids their pressure, density and viscosity
-  comm_forward = any_solid ? 7 : 4;
+  comm_forward = any_solid ? 8 : 4;
   if (any_solid) SPHCheck::atom_state(lmp, "Fix sph/wall/adami", groupbit, SPHCheck::RHO);
   // without 'body', the fluid's body force is the run's (a resting wall)
   body_force = body_given ? nullptr : SPHBodyForce::find(lmp, "Fix sph/wall/adami");
@@ -152,7 +152,7 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
   if (any_solid && atom->nmax > nmax) {
     nmax = atom->nmax;
     memory->destroy(solid_state);
-    memory->create(solid_state, nmax, 3, "sph/wall/adami:solid_state");
+    memory->create(solid_state, nmax, 4, "sph/wall/adami:solid_state");
   }
   const double *const esph = atom->esph;
   const double *const cv = atom->cv;
@@ -195,15 +195,19 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
       // the density and viscosity of the fluid at the wall pressure: the
       // kernel-weighted mean over the fluid neighbours' materials
       const double p_wall = (weight > 0.0) ? (weighted_p + hydrostatic) / weight : 0.0;
-      double weighted_rho = 0.0;
+      double weighted_rho = 0.0, weighted_rho0 = 0.0;
       for (int t = 1; t <= ntypes; t++)
-        if (fluid_weight[t] > 0.0)
+        if (fluid_weight[t] > 0.0) {
           weighted_rho += fluid_weight[t] * sphe_density(materials->eos(t), p_wall);
+          weighted_rho0 += fluid_weight[t] * materials->eos(t)->rho0;
+        }
       // no fluid in reach: a wall at the background pressure of no fluid, whose
       // density and viscosity no fluid particle sees
       solid_state[i][0] = p_wall;
       solid_state[i][1] = (weight > 0.0) ? weighted_rho / weight : materials->rho0(type[i]);
       solid_state[i][2] = (weight > 0.0) ? weighted_mu / weight : 0.0;
+      // its volume compressed as the fluid is: rho0 / rho of the fluid at P_w
+      solid_state[i][3] = (weight > 0.0 && weighted_rho > 0.0) ? weighted_rho0 / weighted_rho : 1.0;
       if (weight > 0.0 && solid_state[i][1] <= 0.0) below_eos++;
     } else {
       const sphe_eos *eos = materials->eos(type[i]);
@@ -239,7 +243,7 @@ int FixSPHWallAdami::pack_forward_comm(int n, int *send, double *buf, int /*pbc_
     buf[m++] = atom->vest[i][1];
     buf[m++] = atom->vest[i][2];
     if (any_solid)
-      for (int c = 0; c < 3; c++) buf[m++] = solid_state[i][c];
+      for (int c = 0; c < 4; c++) buf[m++] = solid_state[i][c];
   }
   return m;
 }
@@ -248,7 +252,7 @@ void FixSPHWallAdami::unpack_forward_comm(int n, int first, double *buf)
 {
   if (any_solid && atom->nmax > nmax) {
     nmax = atom->nmax;
-    memory->grow(solid_state, nmax, 3, "sph/wall/adami:solid_state");
+    memory->grow(solid_state, nmax, 4, "sph/wall/adami:solid_state");
   }
   int m = 0;
   for (int i = first; i < first + n; i++) {
@@ -257,7 +261,7 @@ void FixSPHWallAdami::unpack_forward_comm(int n, int first, double *buf)
     atom->vest[i][1] = buf[m++];
     atom->vest[i][2] = buf[m++];
     if (any_solid)
-      for (int c = 0; c < 3; c++) solid_state[i][c] = buf[m++];
+      for (int c = 0; c < 4; c++) solid_state[i][c] = buf[m++];
   }
 }
 
@@ -265,6 +269,12 @@ void FixSPHWallAdami::unpack_forward_comm(int n, int first, double *buf)
    a solid wall does not move: the continuity equation must not change its
    own density (fix sph/stationary integrates rho with esph)
 ------------------------------------------------------------------------- */
+
+void FixSPHWallAdami::setup(int vflag)
+{
+  // the setup forces' drho too: fix sph/stationary's first half-step uses it
+  post_force(vflag);
+}
 
 void FixSPHWallAdami::post_force(int /*vflag*/)
 {

@@ -26,6 +26,7 @@ class FixSPHWallAdami : public Fix {
   void init_list(int, class NeighList *) override;
   void setup_pre_force(int) override;
   void pre_force(int) override;
+  void setup(int) override;
   void post_force(int) override;
   ~FixSPHWallAdami() override;
 
@@ -38,6 +39,7 @@ class FixSPHWallAdami : public Fix {
   double pressure(int i) const { return solid_state[i][0]; }
   double fluid_density(int i) const { return solid_state[i][1]; }
   double viscosity(int i) const { return solid_state[i][2]; }
+  double compression(int i) const { return solid_state[i][3]; }
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
 
@@ -54,7 +56,7 @@ class FixSPHWallAdami : public Fix {
   int *solid_type;          // per type: 1 when the type has no equation of state
   double *fluid_weight;     // per type: kernel weight of its fluid around one solid particle
   int any_solid;            // 1 when some wall particle of this fix is solid
-  double **solid_state;     // per atom (owned and ghost): P, rho, viscosity seen by the flow
+  double **solid_state;     // per atom (owned and ghost): P, rho, viscosity, rho0/rho seen by the flow
   int nmax;
 };
 

@@ -183,8 +183,9 @@ void PairSPHHarmonicVisc::update_atom_state()
     for (auto wall : solid_walls)
       if ((mask[i] & wall->groupbit) && wall->solid(i)) solid = wall;
     if (solid) {
-      // its own volume, filled with the fluid as the wall extrapolates it
-      volume[i] = mass_of[i] / rho[i];
+      // its own volume, filled with the fluid as the wall extrapolates it and
+      // compressed with it (so that wall and fluid particles keep their share)
+      volume[i] = mass_of[i] / rho[i] * solid->compression(i);
       pressure[i] = solid->pressure(i);
       density[i] = solid->fluid_density(i);
       viscosity[i] = solid->viscosity(i);
