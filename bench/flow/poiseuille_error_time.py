@@ -1,6 +1,7 @@
 """Poiseuille error against run time: examples/flow-poiseuille at 10, 20, 40
 (and with --fine 80) particles across, quintic kernel (h = dx) and Wendland
-C2 (h = 2 dx), in the example's 4 m long periodic channel (n / 5 columns),
+C2 (h = 2 dx; at the example's dt = 0.2 h / c0, and at 0.15 h / c0 with
+delta-plus shifting, C = 1), in the example's 4 m long periodic channel (n / 5 columns),
 against the series solution; the error is the largest over
 the four output times in % of u_max, the time the run's CPU seconds. Serial,
 one run per point. Writes poiseuille_error_time.png and appends a table to
@@ -30,10 +31,19 @@ poiseuille = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(poiseuille)
 
 
-def run(args, workdir, n, kernel, hdx):
+# label, kernel, h / dx, further -var settings of in.poiseuille
+SETTINGS = [
+    ("quintic, h = dx", "quintic", 1.0, []),
+    ("wendland, h = 2 dx", "wendland", 2.0, []),
+    ("wendland, h = 2 dx, dt = 0.15 h / c0, shifted", "wendland", 2.0,
+     ["-var", "dtfac", "0.15", "-var", "shift", "1"]),
+]
+
+
+def run(args, workdir, n, kernel, hdx, extra):
     cmd = [args.lmp, "-in", os.path.join(example, "in.poiseuille"), "-var", "plugin", args.plugin,
            "-var", "n", str(n), "-var", "ncol", str(n // 5), "-var", "kernel", kernel,
-           "-var", "hdx", str(hdx), "-var", "out", "p.dump", "-log", "none", "-screen", "none"]
+           "-var", "hdx", str(hdx), "-var", "out", "p.dump", "-log", "none", "-screen", "none"] + extra
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     subprocess.run(cmd, cwd=workdir, check=True, env=dict(os.environ, OMP_NUM_THREADS="1"))
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -55,20 +65,20 @@ def main():
     workdir = tempfile.mkdtemp(prefix="sphpoiseuille")
     sizes = [10, 20, 40] + ([80] if args.fine else [])
     rows = []
-    for kernel, hdx in [("quintic", 1.0), ("wendland", 2.0)]:
+    for label, kernel, hdx, extra in SETTINGS:
         for n in sizes:
-            cpu, err = run(args, workdir, n, kernel, hdx)
-            rows.append((kernel, hdx, n, cpu, err))
-            print(f"{kernel} h = {hdx} dx, {n} across: {cpu:.1f} s, max error {err:.3f} % of u_max")
+            cpu, err = run(args, workdir, n, kernel, hdx, extra)
+            rows.append((label, n, cpu, err))
+            print(f"{label}, {n} across: {cpu:.1f} s, max error {err:.3f} % of u_max")
 
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(figsize=(5.6, 4.2))
-    for kernel, hdx in [("quintic", 1.0), ("wendland", 2.0)]:
-        pts = [(r[3], r[4], r[2]) for r in rows if r[0] == kernel]
-        ax.loglog([q[0] for q in pts], [q[1] for q in pts], "o-", label=f"{kernel}, h = {hdx} dx")
+    for label, _, _, _ in SETTINGS:
+        pts = [(r[2], r[3], r[1]) for r in rows if r[0] == label]
+        ax.loglog([q[0] for q in pts], [q[1] for q in pts], "o-", label=label)
         for cpu, err, n in pts:
             ax.annotate(str(n), (cpu, err), fontsize=7)
     ax.set_xlabel("CPU time (s)")
@@ -82,9 +92,9 @@ def main():
         f.write("\n## Poiseuille: error against run time\n\n")
         f.write("`poiseuille_error_time.py`: examples/flow-poiseuille (Re = 65.2, to t = 1200 s), "
                 "largest error over t = 100, 300, 600, 1200 s in % of u_max; serial CPU time.\n\n")
-        f.write("| kernel | particles across | CPU time (s) | max error |\n|---|---|---|---|\n")
-        for kernel, hdx, n, cpu, err in rows:
-            f.write(f"| {kernel}, h = {hdx} dx | {n} | {cpu:.1f} | {err:.3f} % |\n")
+        f.write("| setting | particles across | CPU time (s) | max error |\n|---|---|---|---|\n")
+        for label, n, cpu, err in rows:
+            f.write(f"| {label} | {n} | {cpu:.1f} | {err:.3f} % |\n")
         f.write("\n![error against run time](poiseuille_error_time.png)\n")
     print("wrote", png)
 

@@ -16,11 +16,13 @@ A PNG shows the profiles, the bulk temperature and Nu.
 
 With --series (a run started from rest): every frame's u against the
 series solution of Poiseuille flow started from rest (Morris, Fox & Zhu
-1997), at the frame's time step * dt (dt = dtfac hdx dx / (cfac u_max)).
+1997), at the frame's time step * dt (dt = dtfac hdx dx / (cfac u_max)),
+and with --series-png a plot of u(y) (the fluid averaged in rows of one
+spacing) against the series at t = 50, 100, 200, 300 s and the last frame.
 
   analyse.py channel.dump [--walls dirichlet|thick] [--ksk 1] [--re 652]
              [--n 20] [--png channel.png] [--max-t-error PCT] [--max-vy PCT]
-             [--series --hdx 1.3 --dtfac 0.15 --cfac 10]
+             [--series --hdx 1.3 --dtfac 0.15 --cfac 10 [--series-png FILE]]
 """
 import argparse
 import os
@@ -45,6 +47,41 @@ def reference(a):
     return channel_fv.solve(problem, nx=a.ref_nx, ny=a.ref_ny)
 
 
+def plot_series(a, frames, dt, dx, u_max, times=(50.0, 100.0, 200.0, 300.0)):
+    """u(y) of the frames nearest to times and of the last one, rows of one spacing."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    chosen = []
+    for t in times:
+        k = min(range(1, len(frames)), key=lambda i: abs(frames[i][0] * dt - t))
+        if abs(frames[k][0] * dt - t) < 0.5 * t and k not in chosen:
+            chosen.append(k)
+    if len(frames) - 1 not in chosen:
+        chosen.append(len(frames) - 1)
+    y_fine = np.linspace(0.0, W, 201)
+    rows = np.arange(a.n)
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    for k in chosen:
+        fstep, f = frames[k]
+        t = fstep * dt
+        fl = f["type"] == 1
+        row = np.clip((f["y"][fl] / dx).astype(int), 0, a.n - 1)
+        u_row = np.bincount(row, f["vx"][fl], a.n) / np.maximum(np.bincount(row, None, a.n), 1)
+        line, = ax.plot(poiseuille_from_rest(y_fine, t, u_max, MU / RHO, W) / u_max, y_fine, "-",
+                        lw=1)
+        ax.plot(u_row / u_max, (rows + 0.5) * dx, "o", ms=3, color=line.get_color(),
+                label=f"t = {t:.0f} s")
+    ax.set_xlabel("u / u_max (lines: series, Morris et al. 1997)")
+    ax.set_ylabel("y (m)")
+    ax.set_title(f"Channel from rest, Re = {a.re:g}, {a.n} particles across"
+                 + (f", {a.label}" if a.label else ""))
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(a.series_png, dpi=110)
+    print(f"wrote {a.series_png}")
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("dump", nargs="?", default="channel.dump")
@@ -60,6 +97,7 @@ def main():
     p.add_argument("--max-vy", type=float, help="fail if the largest |v| (%% of u_max) is above")
     p.add_argument("--series", action="store_true",
                    help="compare every frame's u with the flow started from rest")
+    p.add_argument("--series-png", help="with --series: u(y) against the series, as a PNG")
     p.add_argument("--hdx", type=float, default=1.3)
     p.add_argument("--dtfac", type=float, default=0.15)
     p.add_argument("--cfac", type=float, default=10.0)
@@ -78,6 +116,8 @@ def main():
             err = 100.0 * np.abs(f["vx"][fl] - poiseuille_from_rest(f["y"][fl], t, u_max, MU / RHO, W)) / u_max
             print(f"{t:8.1f} {err.mean():15.3f} {err.max():14.3f} "
                   f"{100.0 * np.abs(f['vy'][fl]).max() / u_max:10.4f}")
+        if a.series_png:
+            plot_series(a, frames, dt, dx, u_max)
     fluid = d["type"] == 1
     ref = reference(a)
     dT = T_W - T_IN
