@@ -35,6 +35,9 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "convection"))
 from lammps_checks import read_dump, run_lammps, thermo_tables  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from sphtest import lammps_arguments  # noqa: E402
+
 SPACING = 0.1
 T_INLET = 0.25
 # the box: 20 columns along x (x = 0 .. 2), 6 rows along y, periodic in y
@@ -264,10 +267,7 @@ run             300
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("check", choices=["reservoir", "reenter", "balance", "walls", "restart"])
-    p.add_argument("--lmp", required=True)
-    p.add_argument("--plugin", required=True)
-    p.add_argument("--np", type=int, default=1)
-    p.add_argument("--mpirun", default="mpirun")
+    lammps_arguments(p)
     a = p.parse_args()
     a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
     with tempfile.TemporaryDirectory() as work:

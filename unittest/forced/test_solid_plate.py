@@ -31,7 +31,7 @@ sys.path.insert(0, os.path.join(ROOT, "tools"))
 from lammps_dump import read_frames  # noqa: E402
 
 sys.path.insert(0, os.path.join(ROOT, "unittest", "tools"))
-from sphtest import mpi_env, mpi_prefix  # noqa: E402
+from sphtest import finish, lammps_arguments, mpi_env, mpi_prefix  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DX, SPEED, RHO0 = 0.01, 0.2, 1000.0
@@ -53,10 +53,7 @@ def run(a, tmp, plate):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__)
-    p.add_argument("--lmp", required=True)
-    p.add_argument("--plugin", required=True)
-    p.add_argument("--np", type=int, default=1)
-    p.add_argument("--mpirun", default="mpirun")
+    lammps_arguments(p)
     a = p.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         solid, solid_rho = run(a, tmp, "solid")
@@ -72,9 +69,7 @@ def main():
         failures.append("the flow tells a solid from a fluid-like wall")
     if solid_rho != (8000.0, 8000.0):
         failures.append("the solid plates' density moved")
-    if failures:
-        sys.exit("FAIL: " + "; ".join(failures))
-    print("ok")
+    finish(failures)
 
 
 if __name__ == "__main__":

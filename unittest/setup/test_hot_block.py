@@ -28,7 +28,7 @@ import tempfile
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 sys.path.insert(0, os.path.join(ROOT, "unittest", "tools"))
-from sphtest import mpi_env, mpi_prefix  # noqa: E402
+from sphtest import lammps_arguments, mpi_env, mpi_prefix  # noqa: E402
 
 EXAMPLE = os.path.join(ROOT, "examples", "howto-hot-block", "in.hot-block")
 HOWTO = os.path.join(ROOT, "doc", "src", "Howto_thermal_scene.rst")
@@ -49,10 +49,7 @@ print "CHECK $(c_block[1]:%.17g) $(f_from_block:%.17g) $(count(block)) $(sqrt(c_
 
 def main():
     p = argparse.ArgumentParser(description=__doc__)
-    p.add_argument("--lmp", required=True)
-    p.add_argument("--plugin", required=True)
-    p.add_argument("--np", type=int, default=1)
-    p.add_argument("--mpirun", default="mpirun")
+    lammps_arguments(p)
     a = p.parse_args()
     failures = []
 

@@ -31,18 +31,15 @@ import fv1d  # noqa: E402
 from lammps_dump import read_frames  # noqa: E402
 
 sys.path.insert(0, os.path.join(ROOT, "unittest", "tools"))
-from sphtest import mpi_env, mpi_prefix  # noqa: E402
+from sphtest import finish, lammps_arguments, mpi_env, mpi_prefix  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
 def main():
     p = argparse.ArgumentParser(description=__doc__)
-    p.add_argument("--lmp", required=True)
-    p.add_argument("--plugin", required=True)
+    lammps_arguments(p)
     p.add_argument("--potentials", required=True)
-    p.add_argument("--np", type=int, default=1)
-    p.add_argument("--mpirun", default="mpirun")
     a = p.parse_args()
     length, steps, dt = 0.04, 2000, 0.01
     with tempfile.TemporaryDirectory() as tmp:
@@ -85,9 +82,7 @@ def main():
         failures.append("steel density")
     if speed > 1e-9:
         failures.append("water at rest")
-    if failures:
-        sys.exit("FAIL: " + ", ".join(failures))
-    print("ok")
+    finish(failures)
 
 
 if __name__ == "__main__":

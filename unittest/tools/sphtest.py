@@ -34,6 +34,23 @@ def mpi_prefix(np_, mpirun):
     return [mpirun, "--oversubscribe", "-np", str(np_)]
 
 
+def lammps_arguments(parser, mpi=True):
+    """The options every test that runs LAMMPS takes: --lmp, --plugin and, with mpi, --np, --mpirun."""
+    parser.add_argument("--lmp", required=True)
+    parser.add_argument("--plugin", required=True)
+    if mpi:
+        parser.add_argument("--np", type=int, default=1)
+        parser.add_argument("--mpirun", default="mpirun")
+    return parser
+
+
+def finish(failures):
+    """Exit with the failed checks named, or print ok."""
+    if failures:
+        sys.exit("FAIL: " + ", ".join(failures))
+    print("ok")
+
+
 def mpi_env():
     env = dict(os.environ)
     # Open MPI refuses root unless told; CI containers often run as root
