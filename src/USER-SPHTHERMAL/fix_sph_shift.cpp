@@ -199,9 +199,11 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
     const double w_spacing = FORM == DELTAPLUS ? sphk_w(&kernel, spacing) : 0.0;
     const double t_i = CORRECT ? esph[i] / cv[i] : 0.0;
     double grad_c[3] = {0.0, 0.0, 0.0}, g[3] = {0.0, 0.0, 0.0};
-    // CORRECT_ALL: the sums of rho, vx, vy, vz as g is of T
+    // CORRECT_ALL: the sums of rho, vx, vy, vz as g is of T, over the group's
+    // neighbours only (a wall's rho and v are not the fluid's), with their own L
     double g_flow[4][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
     double L[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    double L_flow[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     const int *const jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
@@ -226,11 +228,13 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
         for (int a = 0; a < 3; a++) g[a] += volume_j * dT * grad_w[a];
         for (int a = 0; a < 3; a++)
           for (int b = 0; b < 3; b++) L[3 * a + b] -= volume_j * del[a] * grad_w[b];
-        if (CORRECT == CORRECT_ALL) {
+        if (CORRECT == CORRECT_ALL && (mask[j] & groupbit)) {
           const double diff[4] = {rho[j] - rho[i], v[j][0] - v[i][0], v[j][1] - v[i][1],
                                   v[j][2] - v[i][2]};
           for (int q = 0; q < 4; q++)
             for (int a = 0; a < 3; a++) g_flow[q][a] += volume_j * diff[q] * grad_w[a];
+          for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++) L_flow[3 * a + b] -= volume_j * del[a] * grad_w[b];
         }
       }
     }
@@ -251,7 +255,7 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
       if (CORRECT == CORRECT_ALL)
         for (int q = 0; q < 4; q++) {
           double grad_q[3];
-          sphg_solve_transposed(L, g_flow[q], grad_q, dim);
+          sphg_solve_transposed(L_flow, g_flow[q], grad_q, dim);
           dflow[4 * (size_t) i + q] = dr[0] * grad_q[0] + dr[1] * grad_q[1] + dr[2] * grad_q[2];
         }
     }

@@ -189,6 +189,9 @@ variable        vxlin atom 1.0+0.2*x-0.1*y
 variable        vylin atom 0.5-0.15*x+0.1*y
 set             group all sph/rho v_rholin
 velocity        all set v_vxlin v_vylin 0.0 units box
+# walls at rest with a solid's density: the fluid's gradients must not see them
+set             group wall sph/rho 8000.0
+velocity        wall set 0.0 0.0 0.0 units box
 pair_style      sph/harmonic/visc wendland 0.4
 pair_coeff      * *
 # no integrator: only the shift moves particles and changes rho and v
