@@ -147,19 +147,19 @@ void FixSPHShift::init_list(int /*id*/, NeighList *ptr)
 
 void FixSPHShift::end_of_step()
 {
-  // the ghosts' rho (and esph) as the step ended on their owners' ranks
+  // the ghosts' rho (esph, v when correcting) as the step ended on their owners' ranks
   SPHCompat::forward_comm(comm, this);
-  if (form == DELTAPLUS) {
-    if (correct == CORRECT_ALL)
-      shift_group<DELTAPLUS, CORRECT_ALL>();
-    else
-      correct ? shift_group<DELTAPLUS, CORRECT_T>() : shift_group<DELTAPLUS, 0>();
-  } else {
-    if (correct == CORRECT_ALL)
-      shift_group<SKILLEN, CORRECT_ALL>();
-    else
-      correct ? shift_group<SKILLEN, CORRECT_T>() : shift_group<SKILLEN, 0>();
-  }
+  form == DELTAPLUS ? shift_corrected<DELTAPLUS>() : shift_corrected<SKILLEN>();
+}
+
+template <int FORM> void FixSPHShift::shift_corrected()
+{
+  if (correct == CORRECT_ALL)
+    shift_group<FORM, CORRECT_ALL>();
+  else if (correct == CORRECT_T)
+    shift_group<FORM, CORRECT_T>();
+  else
+    shift_group<FORM, 0>();
 }
 
 /* ----------------------------------------------------------------------
@@ -211,6 +211,7 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
       const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
       if (rsq >= cutsq || rsq == 0.0) continue;
       const double r = sqrt(rsq);
+      const int j_in_group = mask[j] & groupbit;
       const double mass_j = rmass ? rmass[j] : mass[type[j]];
       const double volume_j = mass_j / rho[j];
       // grad_i W_ij = dW/dr (r_i - r_j) / r
@@ -219,7 +220,7 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
       if (FORM == DELTAPLUS) {
         const double weight =
             sphs_deltaplus_weight(sphk_w(&kernel, r), w_spacing, r_coeff, r_power) *
-            ((mask[j] & groupbit) ? 2.0 * mass_j / (rho[i] + rho[j]) : mass_i / rho[i]);
+            (j_in_group ? 2.0 * mass_j / (rho[i] + rho[j]) : mass_i / rho[i]);
         for (int a = 0; a < 3; a++) grad_c[a] += weight * grad_w[a];
       } else
         for (int a = 0; a < 3; a++) grad_c[a] += volume_j * grad_w[a];
@@ -228,7 +229,7 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
         for (int a = 0; a < 3; a++) g[a] += volume_j * dT * grad_w[a];
         for (int a = 0; a < 3; a++)
           for (int b = 0; b < 3; b++) L[3 * a + b] -= volume_j * del[a] * grad_w[b];
-        if (CORRECT == CORRECT_ALL && (mask[j] & groupbit)) {
+        if (CORRECT == CORRECT_ALL && j_in_group) {
           const double diff[4] = {rho[j] - rho[i], v[j][0] - v[i][0], v[j][1] - v[i][1],
                                   v[j][2] - v[i][2]};
           for (int q = 0; q < 4; q++)

@@ -56,6 +56,7 @@ class FixSPHShift : public Fix {
   double largest;               // largest shift / spacing of the last step
   int capped;                   // atoms shortened to the cap in the last step
 
+  template <int FORM> void shift_corrected();
   template <int FORM, int CORRECT> void shift_group();
 };
 
