@@ -22,8 +22,8 @@ namespace LAMMPS_NS {
 // down the gradient of the kernel sum of the particles' volumes (Skillen
 // et al. 2013; Reece et al. 2024, eq 38) or of its delta-plus form (Sun et
 // al. 2017; Ng et al. 2020, eqs 19-20), by at most a fraction of their
-// spacing; their density follows the volume that leaves them, and
-// optionally their temperature (and velocity) follow, to first order.
+// spacing; the group's mean density follows the change of the kernel sums,
+// and optionally their temperature (and velocity) follow, to first order.
 class FixSPHShift : public Fix {
  public:
   FixSPHShift(class LAMMPS *, int, char **);
@@ -49,7 +49,7 @@ class FixSPHShift : public Fix {
   double cap;            // largest shift / spacing
   enum { CORRECT_T = 1, CORRECT_ALL = 2 };
   int correct;           // 0, CORRECT_T: T_i += dr_i . grad T_i, CORRECT_ALL: T, rho and v
-  int continuity;        // rho follows the volume the shift gives the particle
+  int continuity;        // the group's mean rho follows the shift's change of the kernel sums
   int kernel_kind;
   double cutoff;
   class NeighList *list;
