@@ -9,9 +9,9 @@
             the kernel sums of volumes falls by at least half in 200 steps
             (with the sign reversed, particles would crowd and it would
             grow), and the walls and a group left out do not move at all
-  follow    with 'correct all continuity no' linear density and velocity
+  follow    with 'correct all' linear density and velocity
             fields follow the shifted particles exactly (to 1e-10)
-  volume    with 'continuity yes' (the default) the group's mean density
+  volume    with 'continuity yes' the group's mean density
             follows the kernel sums: in one step the group's densities
             change in all as much as their kernel sums of mass do, to first
             order in the shift (within 2 %, the difference halving with the
@@ -202,7 +202,7 @@ velocity        wall set 0.0 0.0 0.0 units box
 pair_style      sph/harmonic/visc wendland 0.4
 pair_coeff      * *
 # no integrator: only the shift moves particles and changes rho and v
-fix             shift fluid sph/shift {shift_args(a, 1.12, True)} correct all continuity no
+fix             shift fluid sph/shift {shift_args(a, 1.12, True)} correct all
 timestep        2.0e-3
 write_dump      fluid custom start.dump id x y modify sort id format float %.17g
 run             50
@@ -240,7 +240,7 @@ velocity        all set v_vxlin v_vylin 0.0 units box
 pair_style      sph/harmonic/visc wendland 0.4
 pair_coeff      * *
 # no integrator: only the shift moves particles and changes rho and v
-fix             shift fluid sph/shift {shift_args(a, 1.12)} correct all
+fix             shift fluid sph/shift {shift_args(a, 1.12)} correct all continuity yes
 timestep        {dt}
 compute         rho all property/atom rho
 run             0 post no
