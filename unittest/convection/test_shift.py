@@ -243,6 +243,9 @@ pair_coeff      * *
 fix             shift fluid sph/shift {shift_args(a, 1.12)} correct all continuity yes
 timestep        {dt}
 compute         rho all property/atom rho
+# thermo invokes the compute at each run's end, so that the dumps may use it
+compute         rhomax all reduce max c_rho
+thermo_style    custom step c_rhomax
 run             0 post no
 write_dump      all custom start.dump id x y c_rho modify sort id format float %.17g
 run             1
