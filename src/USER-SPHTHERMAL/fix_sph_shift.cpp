@@ -65,8 +65,8 @@ static const char cmd[] = "fix sph/shift";
 
 FixSPHShift::FixSPHShift(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), form(SKILLEN), coefficient(0.0), speed(0.0), r_coeff(0.2), r_power(4),
-    cap(0.1), correct(0), continuity(0), kernel_kind(0), cutoff(0.0), list(nullptr), energy(0.0), largest(0.0),
-    capped(0)
+    cap(0.1), correct(0), continuity(0), kernel_kind(0), cutoff(0.0), list(nullptr), energy(0.0),
+    largest(0.0), capped(0)
 {
   if (narg < 5) error->all(FLERR, "Illegal {} command: expected <form> <coefficient>", cmd);
   if (strcmp(arg[3], "skillen") == 0)
@@ -178,19 +178,26 @@ void FixSPHShift::end_of_step()
 template <int FORM> void FixSPHShift::shift_corrected()
 {
   if (correct == CORRECT_ALL)
-    shift_group<FORM, CORRECT_ALL>();
+    shift_continuity<FORM, CORRECT_ALL>();
   else if (correct == CORRECT_T)
-    shift_group<FORM, CORRECT_T>();
+    shift_continuity<FORM, CORRECT_T>();
   else
-    shift_group<FORM, 0>();
+    shift_continuity<FORM, 0>();
+}
+
+template <int FORM, int CORRECT> void FixSPHShift::shift_continuity()
+{
+  continuity ? shift_group<FORM, CORRECT, 1>() : shift_group<FORM, CORRECT, 0>();
 }
 
 /* ----------------------------------------------------------------------
    FORM: SKILLEN or DELTAPLUS; CORRECT: 0, CORRECT_T (move T with the
-   atoms, from the corrected gradient's sums) or CORRECT_ALL (T, rho, v)
+   atoms, from the corrected gradient's sums) or CORRECT_ALL (T, rho, v);
+   CONTINUITY: scale the group's densities by the shift's change of the
+   kernel sums (then rho's own gradient is not needed)
 ------------------------------------------------------------------------- */
 
-template <int FORM, int CORRECT> void FixSPHShift::shift_group()
+template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
 {
   double *const *const x = atom->x;
   double *const *const v = atom->v;
@@ -249,8 +256,10 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
         for (int a = 0; a < 3; a++) grad_c[a] += weight * grad_w[a];
       } else
         for (int a = 0; a < 3; a++) grad_c[a] += volume_j * grad_w[a];
-      const double share = j_in_group ? 2.0 * volume_j : volume_j;
-      for (int a = 0; a < 3; a++) grad_volume[a] += share * grad_w[a];
+      if (CONTINUITY) {
+        const double share = j_in_group ? 2.0 * volume_j : volume_j;
+        for (int a = 0; a < 3; a++) grad_volume[a] += share * grad_w[a];
+      }
       if (CORRECT) {
         const double dT = esph[j] / cv[j] - t_i;
         for (int a = 0; a < 3; a++) g[a] += volume_j * dT * grad_w[a];
@@ -259,7 +268,7 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
         if (CORRECT == CORRECT_ALL && j_in_group) {
           const double diff[4] = {rho[j] - rho[i], v[j][0] - v[i][0], v[j][1] - v[i][1],
                                   v[j][2] - v[i][2]};
-          for (int q = 0; q < 4; q++)
+          for (int q = CONTINUITY; q < 4; q++)
             for (int a = 0; a < 3; a++) g_flow[q][a] += volume_j * diff[q] * grad_w[a];
           for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++) L_flow[3 * a + b] -= volume_j * del[a] * grad_w[b];
@@ -274,7 +283,7 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
                    dt, grad_c, dr);
     if (dim == 2) dr[2] = 0.0;
     capped_local += sphs_cap(dr, cap * spacing);
-    if (continuity) {
+    if (CONTINUITY) {
       rho_change_local +=
           rho[i] * (dr[0] * grad_volume[0] + dr[1] * grad_volume[1] + dr[2] * grad_volume[2]);
       rho_sum_local += rho[i];
@@ -286,7 +295,7 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
       sphg_solve_transposed(L, g, grad_t, dim);
       dtemp[i] = dr[0] * grad_t[0] + dr[1] * grad_t[1] + dr[2] * grad_t[2];
       if (CORRECT == CORRECT_ALL)
-        for (int q = 0; q < 4; q++) {
+        for (int q = CONTINUITY; q < 4; q++) {
           double grad_q[3];
           sphg_solve_transposed(L_flow, g_flow[q], grad_q, dim);
           dflow[4 * (size_t) i + q] = dr[0] * grad_q[0] + dr[1] * grad_q[1] + dr[2] * grad_q[2];
@@ -296,7 +305,7 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
 
   // the group's densities scale together (continuity yes)
   double rho_sums[2] = {rho_change_local, rho_sum_local}, rho_totals[2] = {0.0, 0.0};
-  if (continuity) MPI_Allreduce(rho_sums, rho_totals, 2, MPI_DOUBLE, MPI_SUM, world);
+  if (CONTINUITY) MPI_Allreduce(rho_sums, rho_totals, 2, MPI_DOUBLE, MPI_SUM, world);
   const double rho_scale = rho_totals[1] > 0.0 ? 1.0 + rho_totals[0] / rho_totals[1] : 1.0;
 
   // move only after every shift is known: each used the positions of the step
@@ -308,7 +317,7 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_group()
       atom->esph[i] += cv[i] * dtemp[i];
       energy_local += (rmass ? rmass[i] : mass[type[i]]) * cv[i] * dtemp[i];
     }
-    if (continuity)
+    if (CONTINUITY)
       rho[i] *= rho_scale;
     else if (CORRECT == CORRECT_ALL)
       rho[i] += dflow[4 * (size_t) i];

@@ -22,8 +22,8 @@ namespace LAMMPS_NS {
 // down the gradient of the kernel sum of the particles' volumes (Skillen
 // et al. 2013; Reece et al. 2024, eq 38) or of its delta-plus form (Sun et
 // al. 2017; Ng et al. 2020, eqs 19-20), by at most a fraction of their
-// spacing; the group's mean density follows the change of the kernel sums,
-// and optionally their temperature (and velocity) follow, to first order.
+// spacing; optionally their temperature (and velocity) follow, to first
+// order, and the group's mean density the change of the kernel sums.
 class FixSPHShift : public Fix {
  public:
   FixSPHShift(class LAMMPS *, int, char **);
@@ -59,7 +59,8 @@ class FixSPHShift : public Fix {
   int capped;                   // atoms shortened to the cap in the last step
 
   template <int FORM> void shift_corrected();
-  template <int FORM, int CORRECT> void shift_group();
+  template <int FORM, int CORRECT> void shift_continuity();
+  template <int FORM, int CORRECT, int CONTINUITY> void shift_group();
 };
 
 }    // namespace LAMMPS_NS

@@ -9,15 +9,15 @@
             the kernel sums of volumes falls by at least half in 200 steps
             (with the sign reversed, particles would crowd and it would
             grow), and the walls and a group left out do not move at all
-  follow    with 'correct all' linear density and velocity
-            fields follow the shifted particles exactly (to 1e-10)
-  volume    with 'continuity yes' the group's mean density
-            follows the kernel sums: in one step the group's densities
-            change in all as much as their kernel sums of mass do, to first
-            order in the shift (within 2 %, the difference halving with the
-            step), where without it they would not change at all, and all
-            by one factor (to 1e-10); with 'correct all' a linear velocity
-            field follows exactly
+  follow    with 'correct all' linear density and velocity fields follow
+            the shifted particles exactly (to 1e-10)
+  volume    with 'continuity yes' the group's mean density follows the
+            kernel sums: in one step the group's densities change in all as
+            much as their kernel sums of mass do, to first order in the
+            shift (within 2 %, the difference halving with the step), where
+            without it they would not change at all, and all by one factor
+            (to 1e-10); with 'correct all' a linear velocity field follows
+            exactly
   linear    with 'correct yes' the temperature of a linear field follows the
             shifted particles exactly (to 1e-10), next to walls too, and the
             fix's energy equals the change of sum m cv T of the group
