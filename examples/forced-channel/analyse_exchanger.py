@@ -11,7 +11,10 @@ T* = (T - T_C) / (T_H - T_C) of both streams (Ng et al. 2020, Fig 23) in a
 PNG. Checks that the counter-flow cold outlet is the warmer.
 
   analyse_exchanger.py exchanger-parallel.dump exchanger-counter.dump [--n 10]
-                       [--png exchanger.png] [--max-outlet-error PCT]
+                       [--png exchanger.png] [--max-outlet-error PCT] [--history]
+
+--history prints the outlet temperatures of every frame, to show whether the
+run has reached its steady state.
 """
 import argparse
 import os
@@ -26,11 +29,11 @@ from lammps_dump import read_frames  # noqa: E402
 W, LENGTH, T_C, T_H = 0.1, 2.0, 300.0, 800.0
 
 
-def streams(dump, n):
+def streams(frame, n):
     """Bulk temperature per column of the cold (type 1) and hot (type 2)
     streams, and their centre-line temperatures (the row nearest y = W/2,
-    5 W/2)."""
-    step, d = read_frames(dump)[-1]
+    5 W/2), of one dump frame (step, columns)."""
+    step, d = frame
     dx = W / n
     ncol = int(round(LENGTH / dx))
     x = np.mod(d["x"], LENGTH)
@@ -54,13 +57,24 @@ def main():
     p.add_argument("--png", default="exchanger.png")
     p.add_argument("--max-outlet-error", type=float,
                    help="fail if an outlet temperature is off the reference by more than PCT %% of T_H - T_C")
+    p.add_argument("--history", action="store_true", help="the outlet temperatures of every frame")
+    p.add_argument("--dtfac", type=float, default=0.15, help="the run's dtfac (for --history's times)")
     a = p.parse_args()
     dT = T_H - T_C
     ok = True
     results = {}
     for arrangement, dump in (("parallel", a.parallel), ("counter", a.counter)):
         ref = channel_fv.solve(channel_fv.preset("exchanger", counter=arrangement == "counter"))
-        s = streams(dump, a.n)
+        frames = read_frames(dump)
+        s = streams(frames[-1], a.n)
+        if a.history:
+            # in.exchanger's dt: dtfac h / c0, h = 1.3 dx, c0 = 10 u_max of the hot stream
+            dt = a.dtfac * 1.3 * (W / a.n) / 2.0
+            for frame in frames[1:]:
+                f = streams(frame, a.n)
+                cold = f["cold"][-1] if arrangement == "parallel" else f["cold"][0]
+                print(f"{arrangement} t = {frame[0] * dt:7.1f} s: cold outlet {cold:.2f} K, "
+                      f"hot outlet {f['hot'][-1]:.2f} K")
         ref_cold = channel_fv.bulk_at(ref, "cold", s["x"])
         ref_hot = channel_fv.bulk_at(ref, "hot", s["x"])
         # outlets: the hot stream leaves at x = L; the cold one at x = L

@@ -10,8 +10,13 @@
      outlet (the box face downstream), once;
    - a pair across the plane exchanges no heat (the outlet is adiabatic,
      as are the ends of solids), except that a particle of the group on the
-     inlet side receives the pair term with its neighbour at T_inlet: the
-     fluid upstream of the inlet is at T_inlet.
+     inlet side receives the pair term with its neighbour at T_inlet (held:
+     the fluid upstream of the inlet is at T_inlet, as in the paper), or at
+     2 T_inlet - T(g), g the neighbour's mirror point across the plane and
+     T(g) from the particle's first-order corrected temperature gradient
+     (mirror: exact for linear T, so T_inlet holds on the plane itself;
+     held ghosts put it about a kernel radius upstream, as held wall
+     particles do at walls).
    Which side of the plane a particle is on follows from the periodic cell
    its coordinate lies in (ghost images lie in the next cells), so the rule
    holds however the box is split between ranks. The pairs are corrected
@@ -31,11 +36,14 @@
 #include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
+#include "neighbor.h"
 #include "pair_sph_cleary_heat.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
+#include "sph_gradient.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -46,11 +54,13 @@ static const char cmd[] = "fix sph/inlet/temperature";
 
 /* ----------------------------------------------------------------------
    fix ID group sph/inlet/temperature T_inlet [flow +x|-x|+y|-y|+z|-z]
+                                              [ghosts mirror|held]
 ------------------------------------------------------------------------- */
 
 FixSPHInletTemperature::FixSPHInletTemperature(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), t_inlet(0.0), axis(0), downstream(1), cuts_plane(0), pair(nullptr),
-    rate_previous(0.0), rate(0.0), energy_reset(0.0), energy_plane(0.0), passes(nullptr)
+    Fix(lmp, narg, arg), t_inlet(0.0), axis(0), downstream(1), cuts_plane(0), mirror(1),
+    list(nullptr), pair(nullptr), rate_previous(0.0), rate(0.0), energy_reset(0.0),
+    energy_plane(0.0), passes(nullptr)
 {
   if (!atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Fix sph/inlet/temperature requires atom style sph (esph, cv)");
@@ -71,6 +81,19 @@ FixSPHInletTemperature::FixSPHInletTemperature(LAMMPS *lmp, int narg, char **arg
                    cmd, dir);
       downstream = (dir[0] == '+') ? 1 : -1;
       axis = dir[1] - 'x';
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "ghosts") == 0) {
+      if (iarg + 1 >= narg)
+        error->all(FLERR, "Illegal {} command: missing value after 'ghosts'", cmd);
+      if (strcmp(arg[iarg + 1], "mirror") == 0)
+        mirror = 1;
+      else if (strcmp(arg[iarg + 1], "held") == 0)
+        mirror = 0;
+      else
+        error->all(FLERR,
+                   "Illegal {} command: ghosts '{}' must be mirror or held (the neighbours "
+                   "across the inlet plane at their mirror value or at T_inlet)",
+                   cmd, arg[iarg + 1]);
       iarg += 2;
     } else
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
@@ -132,6 +155,8 @@ void FixSPHInletTemperature::init()
                  group->names[igroup], group->names[other->igroup], other->id);
   }
   SPHCheck::atom_state(lmp, cmd, groupbit, SPHCheck::CV | SPHCheck::ESPH);
+  // the inlet side's particles see all their neighbours, on both sides
+  SPHCompat::request_full_list(neighbor, this, instance_me);
 
   for (Fix *shift : SPHCompat::fixes_of_style(modify, "sph/shift")) {
     int dim;
@@ -142,6 +167,11 @@ void FixSPHInletTemperature::init()
                      "gradient across the inlet plane too",
                      id, style, shift->id);
   }
+}
+
+void FixSPHInletTemperature::init_list(int /*id*/, NeighList *ptr)
+{
+  list = ptr;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -158,14 +188,32 @@ void FixSPHInletTemperature::pre_reverse(int, int)
 }
 
 /* ----------------------------------------------------------------------
-   the pairs across the plane, as the pair style's list holds them (with
-   newton on, a ghost's share goes home in the reverse communication that
-   follows; with it off, the rank that owns j does j's share). The heat
-   that comes in through the plane is tallied as the wall fixes do it: fix
-   sph applies each rate half a step twice.
+   the pairs across the plane: the first fix of this style removes what the
+   pair style computed for them (with its list; with newton on, a ghost's
+   share goes home in the reverse communication that follows, with it off
+   the rank that owns j does j's share); then each fix gives its group's
+   owned particles on the inlet side the pair term with every neighbour
+   across the plane at its ghost temperature (with its own full list). The
+   heat that comes in through the plane is tallied as the wall fixes do it:
+   fix sph applies each rate half a step twice.
 ------------------------------------------------------------------------- */
 
 void FixSPHInletTemperature::correct_pairs(int first)
+{
+  if (cuts_plane) remove_plane_pairs();
+  const double rate_local = mirror ? inlet_terms<1>() : inlet_terms<0>();
+  MPI_Allreduce(&rate_local, &rate, 1, MPI_DOUBLE, MPI_SUM, world);
+  const double dt_half = 0.5 * update->dt * force->ftm2v;    // fix sph's half step
+  if (!first) energy_plane += dt_half * (rate_previous + rate);
+  rate_previous = rate;
+}
+
+/* ----------------------------------------------------------------------
+   the inlet terms of the group's owned particles on the inlet side; returns
+   their heat rate (this rank)
+------------------------------------------------------------------------- */
+
+template <int MIRROR> double FixSPHInletTemperature::inlet_terms()
 {
   const double *const *const x = atom->x;
   const double *const esph = atom->esph;
@@ -176,8 +224,6 @@ void FixSPHInletTemperature::correct_pairs(int first)
   const int *const mask = atom->mask;
   double *const desph = atom->desph;
   const int nlocal = atom->nlocal;
-  const int newton = force->newton_pair;
-  const NeighList *const list = pair->pair_list();
   const double cut = pair->support();
   const double cutsq = cut * cut;
   const double lo = domain->boxlo[axis];
@@ -186,49 +232,129 @@ void FixSPHInletTemperature::correct_pairs(int first)
   double rate_local = 0.0;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
-    // no neighbour across the plane (and inside the box: cell 0)
+    if (i >= nlocal || !(mask[i] & groupbit)) continue;
     if (x[i][axis] >= lo + cut && x[i][axis] < lo + length - cut) continue;
     const double cell_i = periodic_cell(domain, x[i][axis], axis);
     const double mass_i = rmass ? rmass[i] : mass[type[i]];
     const double temp_i = esph[i] / cv[i];
+    double grad[3] = {0.0, 0.0, 0.0};
+    int gradient_known = 0;
     const int *const jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const double cell_j = periodic_cell(domain, x[j][axis], axis);
-      if (cell_j == cell_i) continue;
+      // j across the plane, upstream of i: i is on the inlet side
+      if (!(downstream * (cell_i - cell_j) > 0.0)) continue;
       const double delx = x[i][0] - x[j][0];
       const double dely = x[i][1] - x[j][1];
       const double delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       if (rsq >= cutsq) continue;
+      // walls and solids across the plane stand at T_inlet: mirrored, the
+      // hot wall's own extension would give the corner ghosts far below it
+      double temp_ghost = t_inlet;
+      if (MIRROR && (mask[j] & groupbit)) {
+        if (!gradient_known) temperature_gradient(i, cell_i, grad), gradient_known = 1;
+        // j's mirror point g across the plane, which lies between the cells
+        const double plane = lo + length * std::max(cell_i, cell_j);
+        double to_mirror[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+        to_mirror[axis] = 2.0 * plane - x[j][axis] - x[i][axis];
+        const double temp_mirror =
+            temp_i + grad[0] * to_mirror[0] + grad[1] * to_mirror[1] + grad[2] * to_mirror[2];
+        temp_ghost = 2.0 * t_inlet - temp_mirror;
+      }
       const double mass_j = rmass ? rmass[j] : mass[type[j]];
-      const double temp_j = esph[j] / cv[j];
-      const bool j_here = newton || j < nlocal;
-      if (cuts_plane) {
-        const double f = pair->pair_term(i, j, rsq, temp_i - temp_j);
-        desph[i] -= mass_j * f;
-        if (j_here) desph[j] += mass_i * f;
-      }
-      // the inlet side is the one in the periodic cell further downstream:
-      // it has passed the outlet and come back in
-      if (downstream * (cell_i - cell_j) > 0.0) {
-        if (mask[i] & groupbit) {
-          const double f = pair->pair_term(i, j, rsq, temp_i - t_inlet);
-          desph[i] += mass_j * f;
-          rate_local += mass_i * mass_j * f;
-        }
-      } else if (j_here && (mask[j] & groupbit)) {
-        const double f = pair->pair_term(j, i, rsq, temp_j - t_inlet);
-        desph[j] += mass_i * f;
-        rate_local += mass_i * mass_j * f;
-      }
+      const double f = pair->pair_term(i, j, rsq, temp_i - temp_ghost);
+      desph[i] += mass_j * f;
+      rate_local += mass_i * mass_j * f;
     }
   }
+  return rate_local;
+}
 
-  MPI_Allreduce(&rate_local, &rate, 1, MPI_DOUBLE, MPI_SUM, world);
-  const double dt_half = 0.5 * update->dt * force->ftm2v;    // fix sph's half step
-  if (!first) energy_plane += dt_half * (rate_previous + rate);
-  rate_previous = rate;
+/* ----------------------------------------------------------------------
+   take back what the pair style conducted across the plane
+------------------------------------------------------------------------- */
+
+void FixSPHInletTemperature::remove_plane_pairs()
+{
+  const double *const *const x = atom->x;
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+  const double *const mass = atom->mass;
+  const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
+  const int *const type = atom->type;
+  double *const desph = atom->desph;
+  const int nlocal = atom->nlocal;
+  const int newton = force->newton_pair;
+  const NeighList *const pair_list = pair->pair_list();
+  const double cut = pair->support();
+  const double cutsq = cut * cut;
+  const double lo = domain->boxlo[axis];
+  const double length = domain->prd[axis];
+
+  for (int ii = 0; ii < pair_list->inum; ii++) {
+    const int i = pair_list->ilist[ii];
+    // no neighbour across the plane (and inside the box: cell 0)
+    if (x[i][axis] >= lo + cut && x[i][axis] < lo + length - cut) continue;
+    const double cell_i = periodic_cell(domain, x[i][axis], axis);
+    const double mass_i = rmass ? rmass[i] : mass[type[i]];
+    const double temp_i = esph[i] / cv[i];
+    const int *const jlist = pair_list->firstneigh[i];
+    for (int jj = 0; jj < pair_list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (periodic_cell(domain, x[j][axis], axis) == cell_i) continue;
+      const double delx = x[i][0] - x[j][0];
+      const double dely = x[i][1] - x[j][1];
+      const double delz = x[i][2] - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      if (rsq >= cutsq) continue;
+      const double f = pair->pair_term(i, j, rsq, temp_i - esph[j] / cv[j]);
+      desph[i] -= (rmass ? rmass[j] : mass[type[j]]) * f;
+      if (newton || j < nlocal) desph[j] += mass_i * f;
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   grad T at owned atom i from its neighbours on its own side of the plane,
+   with the first-order correction (sph_gradient.h: exact for linear T, also
+   with the support cut by the plane, a wall or a corner); the kernel
+   estimate where the neighbours are too few to correct it
+------------------------------------------------------------------------- */
+
+void FixSPHInletTemperature::temperature_gradient(int i, double cell_i, double *grad) const
+{
+  const double *const *const x = atom->x;
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+  const double *const rho = atom->rho;
+  const double *const mass = atom->mass;
+  const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
+  const int *const type = atom->type;
+  const double cut = pair->support();
+  const double cutsq = cut * cut;
+  const double temp_i = esph[i] / cv[i];
+  double g[3] = {0.0, 0.0, 0.0};
+  double L[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  const int *const jlist = list->firstneigh[i];
+  for (int jj = 0; jj < list->numneigh[i]; jj++) {
+    const int j = jlist[jj] & NEIGHMASK;
+    if (periodic_cell(domain, x[j][axis], axis) != cell_i) continue;
+    const double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+    const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+    if (rsq >= cutsq || rsq == 0.0) continue;
+    const double r = sqrt(rsq);
+    // V_j grad_i W_ij, grad_i W_ij = dW/dr (r_i - r_j) / r
+    const double vdw = (rmass ? rmass[j] : mass[type[j]]) / rho[j] * pair->kernel_dwdr(r) / r;
+    const double dtemp = esph[j] / cv[j] - temp_i;
+    for (int a = 0; a < 3; a++) {
+      const double grad_w = -vdw * del[a];
+      g[a] += dtemp * grad_w;
+      for (int b = 0; b < 3; b++) L[3 * b + a] += del[b] * grad_w;
+    }
+  }
+  sphg_solve_transposed(L, g, grad, domain->dimension);
 }
 
 /* ----------------------------------------------------------------------

@@ -23,13 +23,15 @@ namespace LAMMPS_NS {
 // al. 2020, section 3.2): a particle of the group that leaves through the
 // outlet re-enters at the inlet with T_inlet; heat crosses the periodic
 // plane only into the group's particles on the inlet side, which see every
-// neighbour across the plane at T_inlet; nothing else crosses it.
+// neighbour across the plane at T_inlet (held) or at its mirror value
+// 2 T_inlet - T(mirror point) (mirror); nothing else crosses it.
 class FixSPHInletTemperature : public Fix {
  public:
   FixSPHInletTemperature(class LAMMPS *, int, char **);
   ~FixSPHInletTemperature() override;
   int setmask() override;
   void init() override;
+  void init_list(int, class NeighList *) override;
   void setup_pre_reverse(int, int) override;
   void pre_reverse(int, int) override;
   void post_integrate() override;
@@ -58,6 +60,8 @@ class FixSPHInletTemperature : public Fix {
   int axis;                         // 0, 1, 2: x, y, z
   int downstream;                   // +1 or -1: the flow's direction along the axis
   int cuts_plane;                   // 1 for the first fix of this style: it removes the pairs across
+  int mirror;                       // 1: the neighbours across are mirrored, 0: held at T_inlet
+  class NeighList *list;            // full: the inlet side's neighbours, both sides of the plane
   class PairSPHClearyHeat *pair;
   double rate_previous, rate;       // heat rate through the inlet plane (all ranks)
   double energy_reset;              // energy the re-entering particles' resets added
@@ -69,6 +73,9 @@ class FixSPHInletTemperature : public Fix {
   double passes_now(int i) const;
 
   void correct_pairs(int first);
+  void remove_plane_pairs();
+  template <int MIRROR> double inlet_terms();
+  void temperature_gradient(int i, double cell_i, double *grad) const;
 };
 
 }    // namespace LAMMPS_NS

@@ -241,7 +241,7 @@ int PairSPHClearyHeat::request_heat_flow(int to_groupbit, int from_groupbit)
 double PairSPHClearyHeat::pair_term(int i, int j, double rsq, double temp_ij) const
 {
   const double r = sqrt(rsq);
-  const double dwdr = kernel.dw_scale * sphk_df(kernel_kind, r * kernel.inv_h);
+  const double dwdr = kernel_dwdr(r);
   const int *const type = atom->type;
   const double conductance_ij = conductivity_varies
       ? sphc_conductance(mean, conductivity[i], conductivity[j])

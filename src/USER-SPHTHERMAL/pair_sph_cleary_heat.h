@@ -47,6 +47,12 @@ class PairSPHClearyHeat : public PairSPHKernel {
   // takes m_i F_ij from de_j/dt. For the styles that change a few pairs
   // after compute() (fix sph/inlet/temperature), with this style's list.
   double pair_term(int i, int j, double rsq, double temp_ij) const;
+  // dW/dr of this style's kernel at distance r (for the styles that take
+  // gradients with the same kernel)
+  double kernel_dwdr(double r) const
+  {
+    return kernel.dw_scale * sphk_df(kernel_kind, r * kernel.inv_h);
+  }
   class NeighList *pair_list() const { return list; }
   double support() const { return cut_global; }
 

@@ -3,7 +3,8 @@
 a lattice of particles, periodic along x, at rest or moving at a uniform
 velocity, so that the exact outcome is known).
 
-  reservoir  at rest: the inlet fix on the periodic box gives every particle
+  reservoir  at rest: the inlet fix with 'ghosts held' (Ng et al. 2020) on
+             the periodic box gives every particle
              the same temperature history (to 1e-12) as the box cut open at
              the periodic plane with, upstream of the inlet, three columns of
              particles held at T_inlet and, downstream of the outlet, nothing
@@ -19,6 +20,12 @@ velocity, so that the exact outcome is known).
              their temperature from the inlet side only: hotter fluid at the
              outlet end leaves them unchanged (to 1e-14), while without the
              inlet fix it changes them
+  mirror     at rest, T linear along x and T_inlet on the plane: with the
+             neighbours across the plane mirrored (the default), the columns
+             at the inlet keep their temperature to round-off (the plane
+             is where the inlet holds T_inlet); with them held at T_inlet
+             they warm (the plane lies upstream); on 1 rank and on --np
+             ranks split along x
   restart    the balance scene run in two halves through write_restart and
              read_restart gives the same temperatures and the same energy as
              the two halves run one after the other
@@ -104,7 +111,7 @@ def check_reservoir(a, work):
     steps = 200
     inlet = box(a, "p", 0, 1.0) + f"""
 fix             integrate all sph
-fix             inlet all sph/inlet/temperature {T_INLET}
+fix             inlet all sph/inlet/temperature {T_INLET} ghosts held
 run             {steps}
 """
     cut = box(a, "f", -3, 1.0) + f"""
@@ -130,6 +137,28 @@ run             {steps}
         print(f"{'ok' if good else 'FAIL'}: at rest, {steps} steps, {np_} rank(s): inlet against a "
               f"reservoir at T_inlet upstream and nothing downstream: largest difference "
               f"{dev:.1e} (limit 1e-12); the inlet cooled the first column by {cooled:.3f} on average")
+    return ok
+
+
+def check_mirror(a, work):
+    # T_inlet on the plane x = 0, rising along x; 2 steps: the adiabatic
+    # outlet end (x > 1.7) reaches no further than x = 1.1 (one cutoff a step)
+    scene = box(a, "p", 0, 1.0) + f"""
+variable        Tlinear atom {T_INLET}+0.2*x
+sph/set         all temperature v_Tlinear
+fix             integrate all sph
+"""
+    ok = True
+    for ghosts, np_ in [("mirror", 1), ("mirror", a.np), ("held", 1)]:
+        script = scene + f"fix inlet all sph/inlet/temperature {T_INLET} ghosts {ghosts}\nrun 2\n"
+        d, _ = run_dump(a, work, script, f"{ghosts}{np_}.dump", np_)
+        inlet = d["x"] < 0.3
+        change = np.abs(d["c_T"][inlet] - (T_INLET + 0.2 * d["x"][inlet])).max()
+        good = change < 1e-13 if ghosts == "mirror" else change > 1e-4
+        ok &= good
+        print(f"{'ok' if good else 'FAIL'}: T linear along x, ghosts {ghosts}, {np_} rank(s): the "
+              f"first three columns changed by {change:.1e} in 2 steps (must be "
+              f"{'< 1e-13' if ghosts == 'mirror' else '> 1e-4'})")
     return ok
 
 
@@ -266,13 +295,13 @@ run             300
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    p.add_argument("check", choices=["reservoir", "reenter", "balance", "walls", "restart"])
+    p.add_argument("check", choices=["reservoir", "reenter", "balance", "walls", "restart", "mirror"])
     lammps_arguments(p)
     a = p.parse_args()
     a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
     with tempfile.TemporaryDirectory() as work:
         ok = {"reservoir": check_reservoir, "reenter": check_reenter, "balance": check_balance,
-              "walls": check_walls, "restart": check_restart}[a.check](a, work)
+              "walls": check_walls, "restart": check_restart, "mirror": check_mirror}[a.check](a, work)
     return 0 if ok else 1
 
 
