@@ -27,6 +27,8 @@ import channel_fv  # noqa: E402
 from lammps_dump import read_frames  # noqa: E402
 
 W, LENGTH, T_C, T_H = 0.1, 2.0, 300.0, 800.0
+# in.exchanger's c0 = 10 u_max of the hot stream, u_max = f_x W^2 / (8 nu)
+C0 = 10.0 * 0.024 * W**2 / (8.0 * 0.15 / 1000.0)
 
 
 def streams(frame, n):
@@ -68,8 +70,8 @@ def main():
         frames = read_frames(dump)
         s = streams(frames[-1], a.n)
         if a.history:
-            # in.exchanger's dt: dtfac h / c0, h = 1.3 dx, c0 = 10 u_max of the hot stream
-            dt = a.dtfac * 1.3 * (W / a.n) / 2.0
+            # in.exchanger's dt: dtfac h / c0, h = 1.3 dx
+            dt = a.dtfac * 1.3 * (W / a.n) / C0
             for frame in frames[1:]:
                 f = streams(frame, a.n)
                 cold = f["cold"][-1] if arrangement == "parallel" else f["cold"][0]

@@ -172,10 +172,7 @@ void ComputeSPHHeatfluxAtom::compute_peratom()
       const double temp_j = esph[j] / cv[j];
       double grad_w[3];    // grad_i W_ij = (r_i - r_j) / r dW/dr
       for (int a = 0; a < 3; a++) grad_w[a] = del[a] * dwdr / r;
-      for (int b = 0; b < 3; b++) {
-        g[b] += volume_j * (temp_j - temp_i) * grad_w[b];
-        for (int a = 0; a < 3; a++) L[3 * a + b] -= volume_j * del[a] * grad_w[b];
-      }
+      sphg_add(g, L, del, grad_w, volume_j, temp_j - temp_i);
       if (has_normals) {
         // Cleary eq 9: 2 m_b k_b T_ab (r_ab . n_a) (r_ab . grad_a W_ab) / (r_ab^2 + eta^2)
         const double k_j = sphm_law_eval(materials->conductivity(type[j]), temp_j);

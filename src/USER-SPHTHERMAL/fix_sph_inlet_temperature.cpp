@@ -223,7 +223,6 @@ template <int MIRROR> double FixSPHInletTemperature::inlet_terms()
   const int *const type = atom->type;
   const int *const mask = atom->mask;
   double *const desph = atom->desph;
-  const int nlocal = atom->nlocal;
   const double cut = pair->support();
   const double cutsq = cut * cut;
   const double lo = domain->boxlo[axis];
@@ -232,7 +231,7 @@ template <int MIRROR> double FixSPHInletTemperature::inlet_terms()
   double rate_local = 0.0;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
-    if (i >= nlocal || !(mask[i] & groupbit)) continue;
+    if (!(mask[i] & groupbit)) continue;
     if (x[i][axis] >= lo + cut && x[i][axis] < lo + length - cut) continue;
     const double cell_i = periodic_cell(domain, x[i][axis], axis);
     const double mass_i = rmass ? rmass[i] : mass[type[i]];
@@ -341,18 +340,15 @@ void FixSPHInletTemperature::temperature_gradient(int i, double cell_i, double *
   for (int jj = 0; jj < list->numneigh[i]; jj++) {
     const int j = jlist[jj] & NEIGHMASK;
     if (periodic_cell(domain, x[j][axis], axis) != cell_i) continue;
-    const double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+    const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
     const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
     if (rsq >= cutsq || rsq == 0.0) continue;
     const double r = sqrt(rsq);
-    // V_j grad_i W_ij, grad_i W_ij = dW/dr (r_i - r_j) / r
-    const double vdw = (rmass ? rmass[j] : mass[type[j]]) / rho[j] * pair->kernel_dwdr(r) / r;
-    const double dtemp = esph[j] / cv[j] - temp_i;
-    for (int a = 0; a < 3; a++) {
-      const double grad_w = -vdw * del[a];
-      g[a] += dtemp * grad_w;
-      for (int b = 0; b < 3; b++) L[3 * b + a] += del[b] * grad_w;
-    }
+    // grad_i W_ij = dW/dr (r_i - r_j) / r
+    const double f = pair->kernel_dwdr(r) / r;
+    const double grad_w[3] = {f * del[0], f * del[1], f * del[2]};
+    sphg_add(g, L, del, grad_w, (rmass ? rmass[j] : mass[type[j]]) / rho[j],
+             esph[j] / cv[j] - temp_i);
   }
   sphg_solve_transposed(L, g, grad, domain->dimension);
 }

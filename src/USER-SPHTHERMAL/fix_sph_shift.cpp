@@ -261,10 +261,7 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
         for (int a = 0; a < 3; a++) grad_volume[a] += share * grad_w[a];
       }
       if (CORRECT) {
-        const double dT = esph[j] / cv[j] - t_i;
-        for (int a = 0; a < 3; a++) g[a] += volume_j * dT * grad_w[a];
-        for (int a = 0; a < 3; a++)
-          for (int b = 0; b < 3; b++) L[3 * a + b] -= volume_j * del[a] * grad_w[b];
+        sphg_add(g, L, del, grad_w, volume_j, esph[j] / cv[j] - t_i);
         if (CORRECT == CORRECT_ALL && j_in_group) {
           const double diff[4] = {rho[j] - rho[i], v[j][0] - v[i][0], v[j][1] - v[i][1],
                                   v[j][2] - v[i][2]};

@@ -49,10 +49,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   double pair_term(int i, int j, double rsq, double temp_ij) const;
   // dW/dr of this style's kernel at distance r (for the styles that take
   // gradients with the same kernel)
-  double kernel_dwdr(double r) const
-  {
-    return kernel.dw_scale * sphk_df(kernel_kind, r * kernel.inv_h);
-  }
+  double kernel_dwdr(double r) const { return sphk_dwdr(&kernel, r); }
   class NeighList *pair_list() const { return list; }
   double support() const { return cut_global; }
 

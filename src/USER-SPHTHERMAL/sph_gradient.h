@@ -15,6 +15,20 @@
 
 #include <math.h>
 
+/* One neighbour j of i: del = r_i - r_j, grad_w = grad_i W_ij, volume
+   V_j, df = f_j - f_i. Adds j's share to the kernel estimate g and to the
+   correction matrix L (L_ab -= V_j del_a (grad_w)_b, i.e. + V_j (r_j -
+   r_i)_a (grad_w)_b). */
+static inline void sphg_add(double g[3], double L[9], const double del[3], const double grad_w[3],
+                            double volume, double df)
+{
+  int a, b;
+  for (b = 0; b < 3; b++) {
+    g[b] += volume * df * grad_w[b];
+    for (a = 0; a < 3; a++) L[3 * a + b] -= volume * del[a] * grad_w[b];
+  }
+}
+
 /* Solve L^T x = g for a dim x dim block (dim 2 or 3) of the 3 x 3 row-major
    matrix L; returns 0 and leaves x = g when L is near singular (too few
    neighbours), 1 otherwise. */

@@ -5,6 +5,7 @@
    Usage: test_convection_terms buoyancy | linear | thin | shift | deltaplus */
 
 #include "sph_buoyancy.h"
+#include "sph_gradient.h"
 #include "sph_interpolation.h"
 #include "sph_kernels.h"
 #include "sph_shift.h"
@@ -181,10 +182,49 @@ static void test_shift(void)
         "capped: the limit's length, the same direction", dr[0] / dr[1], -0.75);
 }
 
+/* the corrected gradient (sph_gradient.h) of a linear field at a particle
+   of a unit lattice in the bulk, next to a straight wall and in a corner
+   (the support cut at x < 0 and y < 0) is exact; the kernel estimate alone
+   is not at the wall */
+static void test_gradient(void)
+{
+  const double c[3] = {0.3, -1.7, 2.9};
+  const double at[3][2] = {{0.5, 0.5}, {0.5, 10.5}, {10.5, 10.5}};
+  const char *where[3] = {"corner", "wall", "bulk"};
+  const sphk_kernel k = sphk_make(SPHK_WENDLAND, 2, 2.6);
+  int p, i, j;
+  for (p = 0; p < 3; p++) {
+    double g[3] = {0.0, 0.0, 0.0}, L[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, grad[3];
+    const double f_i = c[0] + c[1] * at[p][0] + c[2] * at[p][1];
+    char what[80];
+    int solved;
+    for (i = 0; i < 30; i++)
+      for (j = 0; j < 30; j++) {
+        const double x = i + 0.5, y = j + 0.5;
+        const double del[3] = {at[p][0] - x, at[p][1] - y, 0.0};
+        const double r = sqrt(del[0] * del[0] + del[1] * del[1]);
+        double grad_w[3];
+        if (r == 0.0 || r >= 2.6) continue;
+        grad_w[0] = sphk_dwdr(&k, r) * del[0] / r;
+        grad_w[1] = sphk_dwdr(&k, r) * del[1] / r;
+        grad_w[2] = 0.0;
+        sphg_add(g, L, del, grad_w, 1.0, c[0] + c[1] * x + c[2] * y - f_i);
+      }
+    solved = sphg_solve_transposed(L, g, grad, 2);
+    snprintf(what, sizeof what, "corrected gradient exact (%s)", where[p]);
+    check(solved && fabs(grad[0] - c[1]) < 1e-12 && fabs(grad[1] - c[2]) < 1e-12, what, grad[1],
+          c[2]);
+    if (p < 2) {
+      snprintf(what, sizeof what, "kernel estimate off (%s)", where[p]);
+      check(fabs(g[1] - c[2]) > 1e-2, what, g[1], c[2]);
+    }
+  }
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 2) {
-    fprintf(stderr, "usage: %s buoyancy|linear|thin|shift|deltaplus\n", argv[0]);
+    fprintf(stderr, "usage: %s buoyancy|linear|thin|shift|deltaplus|gradient\n", argv[0]);
     return 2;
   }
   if (strcmp(argv[1], "buoyancy") == 0)
@@ -197,6 +237,8 @@ int main(int argc, char **argv)
     test_shift();
   else if (strcmp(argv[1], "deltaplus") == 0)
     test_deltaplus();
+  else if (strcmp(argv[1], "gradient") == 0)
+    test_gradient();
   else {
     fprintf(stderr, "unknown test %s\n", argv[1]);
     return 2;
