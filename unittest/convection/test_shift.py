@@ -17,7 +17,11 @@
             shift (within 2 %, the difference halving with the step), where
             without it they would not change at all, and all by one factor
             (to 1e-10); with 'correct all' a linear velocity field follows
-            exactly
+            exactly. With a linear density too, each density first follows
+            its atom (exact for the linear field) and then all scale by one
+            factor (to 1e-10), so that their sum changes by the first-order
+            change of the kernel sums, recomputed here from the shifts (to
+            1e-10 of the change)
   linear    with 'correct yes' the temperature of a linear field follows the
             shifted particles exactly (to 1e-10), next to walls too, and the
             fix's energy equals the change of sum m cv T of the group
@@ -230,10 +234,29 @@ write_dump      fluid custom follow_rho.dump id c_rho modify sort id format floa
     return ok
 
 
-def volume_change(a, work, dt):
+def kernel_gradient_sums(x, y, shares, radius=0.4):
+    """sum_j shares_j grad_i W_ij (Wendland C2 in 2d, support radius) of
+    every particle i"""
+    dx = x[:, None] - x[None, :]
+    dy = y[:, None] - y[None, :]
+    r = np.hypot(dx, dy)
+    q = r / radius
+    h = radius / 2.0
+    # dW/dr = -20 q (1 - q)^3 sigma / radius
+    dwdr = np.where(q < 1.0, -20.0 * q * (1.0 - q) ** 3, 0.0) * 7.0 / (4.0 * np.pi * h * h) / radius
+    f = np.divide(dwdr, r, out=np.zeros_like(r), where=r > 0.0) * shares[None, :]
+    return (f * dx).sum(axis=1), (f * dy).sum(axis=1)
+
+
+def volume_change(a, work, dt, linear_rho=False):
     """the change in all of the group's densities and of their kernel sums
-    of mass in one step; the largest error of linear v"""
-    script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + JITTER + f"""
+    of mass in one step; the largest error of linear v; the densities
+    before and after (linear_rho: a linear density field in the group)"""
+    rho_field = """
+variable        rholin atom 1.0+0.05*x-0.03*y
+set             group fluid sph/rho v_rholin
+""" if linear_rho else ""
+    script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + JITTER + rho_field + f"""
 variable        vxlin atom 1.0+0.2*x-0.1*y
 variable        vylin atom 0.5-0.15*x+0.1*y
 velocity        all set v_vxlin v_vylin 0.0 units box
@@ -264,12 +287,35 @@ write_dump      all custom volume.dump id x y vx vy c_rho modify sort id format 
                 np.abs(d["vy"] - (0.5 - 0.15 * d["x"] + 0.1 * d["y"]))[fluid].max())
     # the densities scale together: one factor for the whole group
     ratio = (d["c_rho"] / b["c_rho"])[fluid]
-    return change_sum, change_rho, max(v_err, ratio.max() - ratio.min())
+    return change_sum, change_rho, max(v_err, ratio.max() - ratio.min()), v_err, b, d, fluid
+
+
+def check_linear_density(a, work):
+    """with a linear density field: it follows the atoms, then one factor"""
+    _, change_rho, _, v_err, b, d, fluid = volume_change(a, work, 1.0e-3, linear_rho=True)
+    linear = lambda x, y: 1.0 + 0.05 * x - 0.03 * y
+    ratio = (d["c_rho"] / linear(d["x"], d["y"]))[fluid]
+    spread = ratio.max() - ratio.min()
+    # the first-order change of the kernel sums, as the fix's documentation
+    # writes it: sum_i rho_i dr_i . sum_j s_j V_j grad_i W_ij, s_j = 2 in the
+    # group, 1 for the walls (which do not move)
+    volume = 0.01 / b["c_rho"]
+    shares = np.where(fluid, 2.0, 1.0) * volume
+    gx, gy = kernel_gradient_sums(b["x"], b["y"], shares)
+    drx, dry = d["x"] - b["x"], d["y"] - b["y"]
+    want = (b["c_rho"] * (drx * gx + dry * gy))[fluid].sum()
+    sum_err = abs(change_rho - want) / abs(want)
+    ok = spread < 1e-10 and abs(ratio.mean() - 1.0) > 1e-9 and sum_err < 1e-10 and v_err < 1e-10
+    print(f"{'ok' if ok else 'FAIL'}: {a.form}: linear rho: the densities follow their atoms and scale by "
+          f"one factor {ratio.mean():.12f} (spread {spread:.2e}, limit 1e-10; uncorrected the spread would be "
+          f"the gradient times the shift); their sum changes by {change_rho:.6e}, the kernel sums' first-order "
+          f"change {want:.6e} (relative difference {sum_err:.2e}, limit 1e-10)")
+    return ok
 
 
 def check_volume(a, work):
     # the form is first order in the shift: its error in all must halve with dt
-    results = [volume_change(a, work, dt) for dt in (1.0e-3, 5.0e-4)]
+    results = [volume_change(a, work, dt)[:3] for dt in (1.0e-3, 5.0e-4)]
     errors = [abs(rho / total - 1.0) for total, rho, _ in results]
     v_err = max(r[2] for r in results)
     ok = (errors[0] < 0.02 and errors[1] < 0.6 * errors[0] and abs(results[1][0]) > 1e-3
@@ -280,7 +326,7 @@ def check_volume(a, work):
     print(f"{'ok' if ok else 'FAIL'}: {a.form}: the mean density follows the kernel sums to first order "
           f"(difference below 0.02 and halving with dt); one factor for all densities and linear v "
           f"followed to {v_err:.2e} (limit 1e-10)")
-    return ok
+    return check_linear_density(a, work) and ok
 
 
 def main():
