@@ -9,9 +9,9 @@
 #                       Re = 652 10 across is too coarse: the flow breaks up)
 #   ./run.sh thick      the thick-wall channel (10 m slabs, KSK = k_s/k)
 #   ./run.sh exchanger  the parallel-flow and counter-flow heat exchangers
-#                       (in.exchanger, section 4.5), to TEND = 150 s with the
+#                       (in.exchanger, section 4.5), to TEND = 200 s with the
 #                       plate's cp lowered to 2.5 (the steady state does not
-#                       depend on it; PLATECP), about 20 minutes each
+#                       depend on it; PLATECP), about 25 minutes each
 # Environment: LMP, PLUGIN, NP, OUT as in the other examples; N (particles
 # across), TEND (s), RE, KSK, SHIFT (yes|no), START (developed|rest),
 # DTFAC (dt = DTFAC h / c0), MAX_T_ERROR (exit 1 above it, % of T_w - T_in),
@@ -24,7 +24,7 @@ if [ "${1:-}" = exchanger ]; then
   for arrangement in parallel counter; do
     rm -f "exchanger-$arrangement.dump"
     $run "$LMP" -in "$here/in.exchanger" -var plugin "$PLUGIN" -var arrangement "$arrangement" \
-      -var tend "${TEND:-150}" -var every "${TEND:-150}" -var platecp "${PLATECP:-2.5}" \
+      -var tend "${TEND:-200}" -var every "${TEND:-200}" -var platecp "${PLATECP:-2.5}" \
       -var out "exchanger-$arrangement" -log "log.exchanger-$arrangement" | grep -E "^u_max|Loop time"
   done
   "$PYTHON" "$here/analyse_exchanger.py" exchanger-parallel.dump exchanger-counter.dump \
