@@ -320,11 +320,12 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
       atom->esph[i] += cv[i] * dtemp[i];
       energy_local += (rmass ? rmass[i] : mass[type[i]]) * cv[i] * dtemp[i];
     }
-    if (CORRECT == CORRECT_ALL) rho[i] += dflow[4 * (size_t) i];
-    if (CONTINUITY) rho[i] *= rho_scale;
     if (CORRECT == CORRECT_ALL) {
+      rho[i] += dflow[4 * (size_t) i];
       for (int a = 0; a < 3; a++) v[i][a] += dflow[4 * (size_t) i + 1 + a];
     }
+    // after following its atom: the factor is of the followed densities' sum
+    if (CONTINUITY) rho[i] *= rho_scale;
   }
   double sums[2] = {energy_local, (double) capped_local}, totals[2];
   MPI_Allreduce(sums, totals, 2, MPI_DOUBLE, MPI_SUM, world);

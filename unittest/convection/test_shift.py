@@ -76,17 +76,23 @@ displace_atoms  fluid move v_jx v_jy 0.0 units box
 """
 
 
-def kernel_sums(x, y, volume, period=None, radius=0.4):
-    """sum_j V_j W_ij (Wendland C2 in 2d, support radius), periodic in both
-    directions when period is given; i = j included."""
+def wendland_pairs(x, y, radius=0.4):
+    """the pair separations dx, dy, r and the Wendland C2 kernel W and
+    dW/dr (2d, support radius) of every pair ij, i = j included"""
     dx = x[:, None] - x[None, :]
     dy = y[:, None] - y[None, :]
-    if period:
-        dx -= period * np.round(dx / period)
-        dy -= period * np.round(dy / period)
-    q = np.hypot(dx, dy) / radius
+    r = np.hypot(dx, dy)
+    q = r / radius
     h = radius / 2.0
-    w = np.where(q < 1.0, (1.0 - q) ** 4 * (1.0 + 4.0 * q), 0.0) * 7.0 / (4.0 * np.pi * h * h)
+    sigma = 7.0 / (4.0 * np.pi * h * h)
+    w = np.where(q < 1.0, (1.0 - q) ** 4 * (1.0 + 4.0 * q), 0.0) * sigma
+    dwdr = np.where(q < 1.0, -20.0 * q * (1.0 - q) ** 3, 0.0) * sigma / radius
+    return dx, dy, r, w, dwdr
+
+
+def kernel_sums(x, y, volume):
+    """sum_j V_j W_ij of every particle i"""
+    w = wendland_pairs(x, y)[3]
     return (w * volume).sum(axis=1)
 
 
@@ -234,16 +240,9 @@ write_dump      fluid custom follow_rho.dump id c_rho modify sort id format floa
     return ok
 
 
-def kernel_gradient_sums(x, y, shares, radius=0.4):
-    """sum_j shares_j grad_i W_ij (Wendland C2 in 2d, support radius) of
-    every particle i"""
-    dx = x[:, None] - x[None, :]
-    dy = y[:, None] - y[None, :]
-    r = np.hypot(dx, dy)
-    q = r / radius
-    h = radius / 2.0
-    # dW/dr = -20 q (1 - q)^3 sigma / radius
-    dwdr = np.where(q < 1.0, -20.0 * q * (1.0 - q) ** 3, 0.0) * 7.0 / (4.0 * np.pi * h * h) / radius
+def kernel_gradient_sums(x, y, shares):
+    """sum_j shares_j grad_i W_ij of every particle i"""
+    dx, dy, r, _, dwdr = wendland_pairs(x, y)
     f = np.divide(dwdr, r, out=np.zeros_like(r), where=r > 0.0) * shares[None, :]
     return (f * dx).sum(axis=1), (f * dy).sum(axis=1)
 
