@@ -9,18 +9,10 @@ import sys
 
 import numpy as np
 
+from checks import below, finish
+
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 import fv1d  # noqa: E402
-
-failures = 0
-
-
-def expect(value, limit, what):
-    global failures
-    ok = value <= limit
-    failures += not ok
-    print(f"{'ok' if ok else 'FAIL'} {what}: {value:.2e} (limit {limit:.0e})")
-
 
 erf = np.vectorize(math.erf)
 
@@ -32,19 +24,19 @@ e1, e2 = math.sqrt(1000.0), math.sqrt(1500.0)
 tc = e2 / (e1 + e2)
 exact = np.where(x < 0.5, tc * (1 - erf(-(x - 0.5) / math.sqrt(4e-3 * 0.625))),
                  tc + (1 - tc) * erf((x - 0.5) / math.sqrt(4 * 6e-3 * 0.625)))
-expect(np.abs(T - exact).max(), 2e-4, "two materials against the exact erf")
+below(np.abs(T - exact).max(), 2e-4, "two materials against the exact erf")
 
 # case 3: slab at T0 = 1, both faces held at 0, alpha = 1
 x, (T,) = fv1d.solve([fv1d.Layer(0.0, 1.0, "constant:1", 1.0, 1.0, 1.0)], 1.0, 200, [0.05], 0.0, 0.0)
 series = sum(4.0 / math.pi * np.sin((2 * n + 1) * math.pi * x) / (2 * n + 1)
              * math.exp(-((2 * n + 1) * math.pi) ** 2 * 0.05) for n in range(200))
-expect(np.abs(T - series).max(), 1e-4, "held faces against the series")
+below(np.abs(T - series).max(), 1e-4, "held faces against the series")
 
 # case 6: composite wall (L1 = 0.4, k1 = 1; L2 = 0.6, k2 = 5), faces 1 and 0, steady
 layers = [fv1d.Layer(0.0, 0.4, "constant:1", 1.0, 1.0, 0.5), fv1d.Layer(0.4, 1.0, "constant:5", 1.0, 1.0, 0.5)]
 x, (T,) = fv1d.solve(layers, 1.0, 50, [1.0], 1.0, 0.0)
 ti = (1.0 / 0.4) / (1.0 / 0.4 + 5.0 / 0.6)
 exact = np.where(x < 0.4, 1.0 + (ti - 1.0) * x / 0.4, ti * (1.0 - (x - 0.4) / 0.6))
-expect(np.abs(T - exact).max(), 1e-6, "composite wall against the steady solution")
+below(np.abs(T - exact).max(), 1e-6, "composite wall against the steady solution")
 
-sys.exit(1 if failures else 0)
+finish()

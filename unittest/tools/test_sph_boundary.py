@@ -13,16 +13,10 @@ import tempfile
 
 import numpy as np
 
+from checks import finish, that
+
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 import sph_boundary as sb  # noqa: E402
-
-failures = 0
-
-
-def expect(ok, what, value=""):
-    global failures
-    failures += not ok
-    print(f"{'ok' if ok else 'FAIL'} {what}{': ' + value if value != '' else ''}")
 
 
 def ring_spacing(p):
@@ -38,28 +32,28 @@ s = sb.disc(R, dx, eps=eps)
 wall, inner = s.x[s.layer == 0], s.x[s.interior]
 nw = s.normal[s.layer == 0]
 d = ring_spacing(wall)
-expect(len(wall) == round(2 * math.pi * R / dx), "disc: wall count round(2 pi R / dx)", f"{len(wall)}")
-expect(abs(d / dx - 1).max() < 0.01 and np.ptp(d) < 1e-12, "disc: wall spacing equal and = dx within 1 %",
-       f"{d.min() / dx:.5f} ... {d.max() / dx:.5f} dx")
-expect(abs(np.hypot(wall[:, 0], wall[:, 1]) - R).max() < 1e-12, "disc: wall particles on the circle")
-expect(abs(np.linalg.norm(nw, axis=1) - 1).max() < 1e-12, "disc: normals unit")
+that(len(wall) == round(2 * math.pi * R / dx), "disc: wall count round(2 pi R / dx)", f"{len(wall)}")
+that(abs(d / dx - 1).max() < 0.01 and np.ptp(d) < 1e-12, "disc: wall spacing equal and = dx within 1 %",
+     f"{d.min() / dx:.5f} ... {d.max() / dx:.5f} dx")
+that(abs(np.hypot(wall[:, 0], wall[:, 1]) - R).max() < 1e-12, "disc: wall particles on the circle")
+that(abs(np.linalg.norm(nw, axis=1) - 1).max() < 1e-12, "disc: normals unit")
 rhat = wall / np.hypot(wall[:, 0], wall[:, 1])[:, None]
 tang = np.column_stack([-rhat[:, 1], rhat[:, 0]])
-expect(abs(np.sum(nw * tang, axis=1)).max() < 1e-12 and (np.sum(nw * rhat, axis=1) < -1 + 1e-12).all(),
-       "disc: normals perpendicular to the circle, pointing into the disc")
+that(abs(np.sum(nw * tang, axis=1)).max() < 1e-12 and (np.sum(nw * rhat, axis=1) < -1 + 1e-12).all(),
+     "disc: normals perpendicular to the circle, pointing into the disc")
 gap = R - np.hypot(inner[:, 0], inner[:, 1])
-expect(gap.min() >= eps * dx, "disc: no interior particle within eps dx of the wall", f"closest {gap.min() / dx:.3f} dx")
-expect(abs(np.linalg.norm(s.normal[s.interior], axis=1)).max() == 0, "disc: interior normals zero")
+that(gap.min() >= eps * dx, "disc: no interior particle within eps dx of the wall", f"closest {gap.min() / dx:.3f} dx")
+that(abs(np.linalg.norm(s.normal[s.interior], axis=1)).max() == 0, "disc: interior normals zero")
 area = math.pi * (R - eps * dx) ** 2 / dx ** 2
-expect(abs(len(inner) / area - 1) < 0.03, "disc: interior count ~ pi (R - eps dx)^2 / dx^2",
-       f"{len(inner)} against {area:.0f}")
-expect(len(inner) == 680 and (s.type[s.interior] == 1).all() and (s.type[s.wall] == 2).all(),
-       "disc: 680 interior (type 1) + 94 wall (type 2) particles for a half-offset lattice")
+that(abs(len(inner) / area - 1) < 0.03, "disc: interior count ~ pi (R - eps dx)^2 / dx^2",
+     f"{len(inner)} against {area:.0f}")
+that(len(inner) == 680 and (s.type[s.interior] == 1).all() and (s.type[s.wall] == 2).all(),
+     "disc: 680 interior (type 1) + 94 wall (type 2) particles for a half-offset lattice")
 lat = inner / dx - 0.5
-expect(abs(lat - np.round(lat)).max() < 1e-9, "disc: interior on the square lattice (offset dx/2)")
+that(abs(lat - np.round(lat)).max() < 1e-9, "disc: interior on the square lattice (offset dx/2)")
 for e in (0.3, 0.6):
     g = R - np.hypot(*sb.disc(R, dx, eps=e).x[sb.disc(R, dx, eps=e).interior].T)
-    expect(g.min() >= e * dx, f"disc eps = {e}: closest interior particle", f"{g.min() / dx:.3f} dx")
+    that(g.min() >= e * dx, f"disc eps = {e}: closest interior particle", f"{g.min() / dx:.3f} dx")
 
 # several wall layers: concentric rings dx apart, outward
 s3 = sb.disc(R, dx, layers=3)
@@ -69,8 +63,8 @@ for k in range(3):
     rk = np.hypot(p[:, 0], p[:, 1])
     ok &= abs(rk - (R + k * dx)).max() < 1e-12 and len(p) == round(2 * math.pi * (R + k * dx) / dx)
     ok &= abs(ring_spacing(p) / dx - 1).max() < 0.01
-expect(ok, "disc, 3 layers: rings at R, R + dx, R + 2 dx, spacing dx")
-expect(set(s3.type[s3.layer > 0]) == {3} and len(s3.x[s3.interior]) == len(inner), "disc, 3 layers: outer layers type 3")
+that(ok, "disc, 3 layers: rings at R, R + dx, R + 2 dx, spacing dx")
+that(set(s3.type[s3.layer > 0]) == {3} and len(s3.x[s3.interior]) == len(inner), "disc, 3 layers: outer layers type 3")
 
 # annulus: outer wall normals inward, inner wall normals outward (both into the medium)
 a = sb.annulus(0.2, 0.5, 0.02, layers=2)
@@ -78,43 +72,43 @@ ro = a.curve == 0
 ri = a.curve == 1
 r = np.hypot(a.x[:, 0], a.x[:, 1])
 rh = a.x / np.maximum(r, 1e-300)[:, None]
-expect((np.sum(a.normal[ro] * rh[ro], axis=1) < -1 + 1e-12).all()
-       and (np.sum(a.normal[ri] * rh[ri], axis=1) > 1 - 1e-12).all(), "annulus: normals into the medium")
-expect(abs(r[ri & (a.layer == 1)] - 0.18).max() < 1e-12 and abs(r[ro & (a.layer == 1)] - 0.52).max() < 1e-12,
-       "annulus: second layers at Ri - dx and Ro + dx")
+that((np.sum(a.normal[ro] * rh[ro], axis=1) < -1 + 1e-12).all()
+     and (np.sum(a.normal[ri] * rh[ri], axis=1) > 1 - 1e-12).all(), "annulus: normals into the medium")
+that(abs(r[ri & (a.layer == 1)] - 0.18).max() < 1e-12 and abs(r[ro & (a.layer == 1)] - 0.52).max() < 1e-12,
+     "annulus: second layers at Ri - dx and Ro + dx")
 ri_in = r[a.interior]
-expect(ri_in.min() >= 0.2 + 0.42 * 0.02 and ri_in.max() <= 0.5 - 0.42 * 0.02, "annulus: interior clear of both walls")
+that(ri_in.min() >= 0.2 + 0.42 * 0.02 and ri_in.max() <= 0.5 - 0.42 * 0.02, "annulus: interior clear of both walls")
 
 # rectangle aligned with the lattice: spacing exactly dx, corner normals at 45 degrees
 rc = sb.rectangle(1.0, 0.5, 0.025)
 w = rc.x[rc.wall]
 nwr = rc.normal[rc.wall]
 corner = (np.abs(np.abs(w[:, 0]) - 0.5) < 1e-12) & (np.abs(np.abs(w[:, 1]) - 0.25) < 1e-12)
-expect(len(w) == 2 * (40 + 20) and corner.sum() == 4, "rectangle: 120 wall particles incl. 4 corners")
-expect(np.allclose(np.abs(nwr[corner]), math.sqrt(0.5)) and (np.sum(nwr[corner] * w[corner], axis=1) < 0).all(),
-       "rectangle: corner normals halfway (45 degrees), inward")
-expect(len(rc.x[rc.interior]) == 40 * 20, "rectangle: interior 40 x 20 (half a spacing from the walls)")
+that(len(w) == 2 * (40 + 20) and corner.sum() == 4, "rectangle: 120 wall particles incl. 4 corners")
+that(np.allclose(np.abs(nwr[corner]), math.sqrt(0.5)) and (np.sum(nwr[corner] * w[corner], axis=1) < 0).all(),
+     "rectangle: corner normals halfway (45 degrees), inward")
+that(len(rc.x[rc.interior]) == 40 * 20, "rectangle: interior 40 x 20 (half a spacing from the walls)")
 rr = sb.rectangle(1.0, 0.5, 0.025, angle=30)
 c, sn = math.cos(math.radians(30)), math.sin(math.radians(30))
 q = rr.x[rr.interior] @ np.array([[c, -sn], [sn, c]])       # back into the rectangle's frame
 margin = min((0.5 - np.abs(q[:, 0])).min(), (0.25 - np.abs(q[:, 1])).min())
-expect(margin >= 0.42 * 0.025 - 1e-12, "rectangle at 30 degrees: interior clear of the wall", f"{margin / 0.025:.3f} dx")
-expect(abs(len(rr.x[rr.interior]) / ((1 - 0.84 * 0.025) * (0.5 - 0.84 * 0.025) / 0.025 ** 2) - 1) < 0.05,
-       "rectangle at 30 degrees: interior count ~ area / dx^2", f"{len(rr.x[rr.interior])}")
+that(margin >= 0.42 * 0.025 - 1e-12, "rectangle at 30 degrees: interior clear of the wall", f"{margin / 0.025:.3f} dx")
+that(abs(len(rr.x[rr.interior]) / ((1 - 0.84 * 0.025) * (0.5 - 0.84 * 0.025) / 0.025 ** 2) - 1) < 0.05,
+     "rectangle at 30 degrees: interior count ~ area / dx^2", f"{len(rr.x[rr.interior])}")
 
 # general polygon (triangle) and parametric curve (ellipse)
 tri = sb.setup([sb.polygon([[0, 0], [1, 0], [0.5, 0.8]])], 0.02)
 tw = tri.x[tri.wall]
-expect(abs(np.linalg.norm(tri.normal[tri.wall], axis=1) - 1).max() < 1e-12
-       and sb.polygon([[0, 0], [1, 0], [0.5, 0.8]]).distance(tri.x[tri.interior]).min() >= 0.42 * 0.02,
-       "triangle: unit normals, interior clear of the wall")
+that(abs(np.linalg.norm(tri.normal[tri.wall], axis=1) - 1).max() < 1e-12
+     and sb.polygon([[0, 0], [1, 0], [0.5, 0.8]]).distance(tri.x[tri.interior]).min() >= 0.42 * 0.02,
+     "triangle: unit normals, interior clear of the wall")
 ell = sb.setup([sb.parametric(lambda t: (0.5 * math.cos(t), 0.3 * math.sin(t)))], 0.02)
 ew, en = ell.x[ell.wall], ell.normal[ell.wall]
 grad = np.column_stack([ew[:, 0] / 0.25, ew[:, 1] / 0.09])           # outward normal of the ellipse
 grad /= np.linalg.norm(grad, axis=1)[:, None]
 dd = np.linalg.norm(np.roll(ew, -1, axis=0) - ew, axis=1)
-expect(np.sum(en * grad, axis=1).max() < -1 + 1e-4 and abs(dd / 0.02 - 1).max() < 0.01,
-       "ellipse: normals perpendicular to the curve (1e-4), spacing dx within 1 %")
+that(np.sum(en * grad, axis=1).max() < -1 + 1e-4 and abs(dd / 0.02 - 1).max() < 0.01,
+     "ellipse: normals perpendicular to the curve (1e-4), spacing dx within 1 %")
 
 # the naive set-up: lattice points with r <= R, the outermost tagged as wall
 nv = sb.naive_disc(R, dx)
@@ -122,33 +116,33 @@ rn = np.hypot(nv.x[:, 0], nv.x[:, 1])
 key = {tuple(np.round(p / dx - 0.5).astype(int)) for p in nv.x}
 outer = [any((i + a_, j + b_) not in key for a_, b_ in ((1, 0), (-1, 0), (0, 1), (0, -1)))
          for i, j in np.round(nv.x / dx - 0.5).astype(int)]
-expect(rn.max() <= R and len(nv) == sum(1 for i in range(-16, 16) for j in range(-16, 16)
-                                        if math.hypot(i + 0.5, j + 0.5) <= 15),
-       "naive: all lattice points with r <= R", f"{len(nv)}")
-expect(np.array_equal(np.array(outer), nv.wall), "naive: wall = points with a 4-neighbour missing", f"{nv.wall.sum()}")
+that(rn.max() <= R and len(nv) == sum(1 for i in range(-16, 16) for j in range(-16, 16)
+                                      if math.hypot(i + 0.5, j + 0.5) <= 15),
+     "naive: all lattice points with r <= R", f"{len(nv)}")
+that(np.array_equal(np.array(outer), nv.wall), "naive: wall = points with a 4-neighbour missing", f"{nv.wall.sum()}")
 nn = nv.normal[nv.wall]
-expect(abs(np.linalg.norm(nn, axis=1) - 1).max() < 1e-12
-       and (np.sum(nn * nv.x[nv.wall], axis=1) < 0).all(), "naive: lattice normals unit, pointing inward")
+that(abs(np.linalg.norm(nn, axis=1) - 1).max() < 1e-12
+     and (np.sum(nn * nv.x[nv.wall], axis=1) < 0).all(), "naive: lattice normals unit, pointing inward")
 
 # data file round trip (write_data / read_data), and the command line
 with tempfile.TemporaryDirectory() as tmp:
     path = os.path.join(tmp, "disc.data")
     s3.write_data(path, rho=1000.0, cv=2.0, T=1.0, Twall=0.0)
     back = sb.read_data(path)
-    expect(back["natoms"] == len(s3) and np.array_equal(back["type"], s3.type)
-           and abs(back["x"][:, :2] - s3.x).max() < 1e-15 and back["x"][:, 2].max() == 0
-           and abs(back["normal"][:, :2] - s3.normal).max() < 1e-15 and np.array_equal(back["normal_id"], back["id"]),
-           "data file: positions, types and normals round-trip")
-    expect(all(abs(m / (1000 * dx * dx) - 1) < 1e-15 for m in back["mass"].values()) and len(back["mass"]) == 3
-           and (back["rho"] == 1000).all() and (back["cv"] == 2).all()
-           and np.array_equal(back["esph"], np.where(s3.interior, 2.0, 0.0)),
-           "data file: masses rho dx^2, rho, cv, esph = cv T")
+    that(back["natoms"] == len(s3) and np.array_equal(back["type"], s3.type)
+         and abs(back["x"][:, :2] - s3.x).max() < 1e-15 and back["x"][:, 2].max() == 0
+         and abs(back["normal"][:, :2] - s3.normal).max() < 1e-15 and np.array_equal(back["normal_id"], back["id"]),
+         "data file: positions, types and normals round-trip")
+    that(all(abs(m / (1000 * dx * dx) - 1) < 1e-15 for m in back["mass"].values()) and len(back["mass"]) == 3
+         and (back["rho"] == 1000).all() and (back["cv"] == 2).all()
+         and np.array_equal(back["esph"], np.where(s3.interior, 2.0, 0.0)),
+         "data file: masses rho dx^2, rho, cv, esph = cv T")
     inside_box = (back["x"][:, :2] > back["box"][:2, 0]).all() and (back["x"][:, :2] < back["box"][:2, 1]).all()
-    expect(inside_box, "data file: particles inside the box")
+    that(inside_box, "data file: particles inside the box")
     cli = os.path.join(tmp, "cli.data")
     rc_ = sb.main(["disc", "--radius", "0.5", "--dx", str(dx), "--layers", "3", "-o", cli])
     c2 = sb.read_data(cli)
-    expect(rc_ == 0 and abs(c2["x"][:, :2] - s3.x).max() < 1e-12, "command line: same particles as the module")
+    that(rc_ == 0 and abs(c2["x"][:, :2] - s3.x).max() < 1e-12, "command line: same particles as the module")
 
     lmp = os.environ.get("LMP")
     if lmp and os.access(lmp, os.X_OK):
@@ -168,8 +162,8 @@ with tempfile.TemporaryDirectory() as tmp:
             ok = (abs(fr["x"] - s3.x[:, 0]).max() < 1e-15 and abs(fr["y"] - s3.x[:, 1]).max() < 1e-15
                   and abs(fr["d_nx"] - s3.normal[:, 0]).max() < 1e-15 and abs(fr["d_ny"] - s3.normal[:, 1]).max() < 1e-15
                   and np.array_equal(fr["type"].astype(int), s3.type))
-        expect(ok, "LAMMPS read_data ... fix normals NULL Normals: positions, types, d_nx d_ny round-trip")
+        that(ok, "LAMMPS read_data ... fix normals NULL Normals: positions, types, d_nx d_ny round-trip")
     else:
         print("skip LAMMPS round trip (set LMP to a LAMMPS executable)")
 
-sys.exit(1 if failures else 0)
+finish()

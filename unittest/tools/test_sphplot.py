@@ -15,18 +15,12 @@ import subprocess
 import sys
 import tempfile
 
+from checks import finish, that
+
 TOOLS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools")
 SPHPLOT = os.path.join(TOOLS, "sphplot.py")
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 NX, NY = 20, 4  # particles at cell centres of [0, 1] x [0, 0.2]
-
-failures = 0
-
-
-def expect(ok, what, detail=""):
-    global failures
-    failures += not ok
-    print(f"{'ok' if ok else 'FAIL'} {what}{': ' + detail if detail else ''}")
 
 
 def temperature(x, step):
@@ -60,23 +54,23 @@ def run(python, *args):
 def check_pngs(result, expected, what):
     """The command succeeded and printed exactly the expected, valid PNGs."""
     printed = result.stdout.split()
-    expect(result.returncode == 0, f"{what} exits 0", result.stderr.strip())
-    expect(printed == expected, f"{what} prints its PNGs", " ".join(printed))
+    that(result.returncode == 0, f"{what} exits 0", result.stderr.strip())
+    that(printed == expected, f"{what} prints its PNGs", " ".join(printed))
     for path in expected:
         size, magic = 0, b""
         if os.path.isfile(path):
             size = os.path.getsize(path)
             with open(path, "rb") as f:
                 magic = f.read(8)
-        expect(magic == PNG_MAGIC and size > 5000, f"{what} writes a PNG {os.path.basename(path)}",
-               f"{size} bytes")
+        that(magic == PNG_MAGIC and size > 5000, f"{what} writes a PNG {os.path.basename(path)}",
+             f"{size} bytes")
 
 
 def check_fails(result, words, what):
     """Non-zero exit with a one-line message naming each of words."""
     message = result.stderr.strip()
     ok = result.returncode != 0 and "\n" not in message and all(w in message for w in words)
-    expect(ok, what, f"exit {result.returncode}, {message!r}")
+    that(ok, what, f"exit {result.returncode}, {message!r}")
 
 
 def check_bin_means(python):
@@ -98,19 +92,19 @@ out["auto"] = list(bins_for(x))
 print(json.dumps(out))
 """
     result = subprocess.run([python, "-c", code], capture_output=True, text=True)
-    expect(result.returncode == 0, "bin_means runs", result.stderr.strip()[-300:])
+    that(result.returncode == 0, "bin_means runs", result.stderr.strip()[-300:])
     if result.returncode:
         return
     out = json.loads(result.stdout)
     centres = [(k + 0.5) / 10 for k in range(10)]
     error = max(abs(m - (1.0 + 2.0 * c)) for m, c in zip(out["means"], centres))
-    expect(max(abs(a - b) for a, b in zip(out["centres"], centres)) < 1e-12, "bin centres")
-    expect(error < 1e-12, "bin means of a linear field", f"max error {error:.1e}")
-    expect(out["edges"] == [2.0, 5.0, None, 8.0], "point at hi in the last bin, outside ignored, empty NaN",
-           str(out["edges"]))
+    that(max(abs(a - b) for a, b in zip(out["centres"], centres)) < 1e-12, "bin centres")
+    that(error < 1e-12, "bin means of a linear field", f"max error {error:.1e}")
+    that(out["edges"] == [2.0, 5.0, None, 8.0], "point at hi in the last bin, outside ignored, empty NaN",
+         str(out["edges"]))
     nbins, lo, hi = out["auto"]
-    expect(nbins == NX and abs(lo) < 1e-12 and abs(hi - 1.0) < 1e-12,
-           "default bins: one per lattice column", str(out["auto"]))
+    that(nbins == NX and abs(lo) < 1e-12 and abs(hi - 1.0) < 1e-12,
+         "default bins: one per lattice column", str(out["auto"]))
 
 
 def main():
@@ -159,8 +153,7 @@ def main():
         check_pngs(run(python, "series", out("bare.txt"), "--x", "1", "--y", "2,3", "--out", out("bare.png")),
                    [out("bare.png")], "series without a header")
 
-    print("all passed" if not failures else f"{failures} failed")
-    sys.exit(1 if failures else 0)
+    finish(passed="all passed")
 
 
 if __name__ == "__main__":
