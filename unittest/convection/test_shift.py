@@ -43,6 +43,9 @@ import numpy as np
 
 from lammps_checks import read_dump, run_lammps
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from sphtest import lammps_arguments  # noqa: E402
+
 BOX = """plugin load {plugin}
 units           si
 dimension       2
@@ -332,10 +335,7 @@ def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("check", choices=["lattice", "spread", "linear", "follow", "volume"])
     p.add_argument("--form", choices=sorted(FORMS), default="skillen")
-    p.add_argument("--np", type=int, default=1, help="MPI ranks ('follow' only)")
-    p.add_argument("--mpirun", default="mpirun")
-    p.add_argument("--lmp", required=True)
-    p.add_argument("--plugin", required=True)
+    lammps_arguments(p)  # --np: MPI ranks ('follow' only)
     a = p.parse_args()
     a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
     with tempfile.TemporaryDirectory() as work:

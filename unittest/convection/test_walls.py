@@ -41,6 +41,9 @@ import numpy as np
 from lammps_checks import (DE_VAHL_DAVIS, late_rows, longest_thermo_table, mpi_env, mpi_prefix,
                            read_dump, run_lammps)
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from sphtest import lammps_arguments  # noqa: E402
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 
@@ -252,15 +255,13 @@ def check_conduction(a, work):
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("check", choices=["linear", "conserve", "nusselt", "conduction", "cavity", "ranks"])
-    p.add_argument("--lmp", required=True)
-    p.add_argument("--plugin", required=True)
+    lammps_arguments(p)
+    p.set_defaults(np=2)  # 'ranks' compares 1 rank against --np, 2 unless given
     p.add_argument("--n", type=int, default=20)
     p.add_argument("--tolerance", type=float, default=0.002)
     p.add_argument("--ra", type=float, default=1e4)
     p.add_argument("--tend", type=float, default=0.3)
-    p.add_argument("--np", type=int, default=2)
     p.add_argument("--nz", type=int, default=0, help="3-D with this many layers of periodic depth")
-    p.add_argument("--mpirun", default="mpirun")
     a = p.parse_args()
     a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
     with tempfile.TemporaryDirectory() as work:

@@ -31,6 +31,9 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "tools"))
+from sphtest import lammps_arguments, mpi_env  # noqa: E402
+
 BIG = 1.0e299              # the fix reports a limit that applies to no atom as 1e300
 DEFAULTS = {"acoustic": 0.1, "force": 0.25, "viscous": 0.125, "thermal": 0.5}
 LIMITS = ["acoustic", "force", "viscous", "thermal"]
@@ -41,14 +44,6 @@ def check(ok, message):
     print(("ok   " if ok else "FAIL ") + message)
     if not ok:
         failures.append(message)
-
-
-def mpi_env():
-    env = dict(os.environ)
-    env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
-    env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
-    env.setdefault("OMP_NUM_THREADS", "1")
-    return env
 
 
 def run_lammps(a, input_file, lmp_vars, np_=1, cwd=None):
@@ -394,9 +389,7 @@ def report():
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--lmp", required=True)
-    p.add_argument("--plugin", required=True)
-    p.add_argument("--mpirun", default="mpirun")
+    lammps_arguments(p, ranks=False)  # --np is the mpi subcommand's
     sub = p.add_subparsers(dest="cmd", required=True)
     s = sub.add_parser("conduction")
     s.add_argument("--case", choices=["uniform", "varying"], required=True)

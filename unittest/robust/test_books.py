@@ -18,7 +18,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphtest import run_script  # noqa: E402
+from sphtest import lammps_arguments, run_script  # noqa: E402
 
 FIXES = {
     "iso": "fix {id} {group} sph/wall/isothermal 350.0",
@@ -100,8 +100,7 @@ def run(lmp, plugin, order, pair):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__)
-    p.add_argument("--lmp", required=True)
-    p.add_argument("--plugin", required=True)
+    lammps_arguments(p, mpi=False)
     p.add_argument("--pair", choices=sorted(PAIRS), required=True)
     a = p.parse_args()
     ab = run(a.lmp, a.plugin, "ab", a.pair)

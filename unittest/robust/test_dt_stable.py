@@ -16,7 +16,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphtest import run_script  # noqa: E402
+from sphtest import lammps_arguments, run_script  # noqa: E402
 
 CASES = {
     # name: (mean, k2 / k1, rho2 cv2 / (rho1 cv1), jitter in spacings)
@@ -88,8 +88,7 @@ def run(a, case, dtargs):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__)
-    p.add_argument("--lmp", required=True)
-    p.add_argument("--plugin", required=True)
+    lammps_arguments(p, mpi=False)
     p.add_argument("--case", choices=sorted(CASES), required=True)
     a = p.parse_args()
     failed = 0

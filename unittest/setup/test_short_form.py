@@ -24,6 +24,9 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 from lammps_dump import read_frames  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from sphtest import lammps_arguments  # noqa: E402
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
@@ -51,8 +54,7 @@ def relative(a, b):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__)
-    p.add_argument("--lmp", required=True)
-    p.add_argument("--plugin", required=True)
+    lammps_arguments(p, mpi=False)
     p.add_argument("--potentials", required=True)
     p.add_argument("--case", choices=["materials", "hydrostatic"], required=True)
     a = p.parse_args()

@@ -17,9 +17,10 @@ sys.path.insert(0, os.path.join(here, "..", "..", "tools"))
 import fv1d  # noqa: E402
 from lammps_dump import read_frames  # noqa: E402
 
+from sphtest import lammps_arguments  # noqa: E402
+
 p = argparse.ArgumentParser(description=__doc__)
-p.add_argument("--lmp", required=True)
-p.add_argument("--plugin", required=True)
+lammps_arguments(p, mpi=False)
 p.add_argument("--mode", choices=["flux", "convection"], default="flux")
 p.add_argument("--max-error", type=float, required=True)
 a = p.parse_args()

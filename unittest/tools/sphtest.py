@@ -34,12 +34,14 @@ def mpi_prefix(np_, mpirun):
     return [mpirun, "--oversubscribe", "-np", str(np_)]
 
 
-def lammps_arguments(parser, mpi=True):
-    """The options every test that runs LAMMPS takes: --lmp, --plugin and, with mpi, --np, --mpirun."""
+def lammps_arguments(parser, mpi=True, ranks=True):
+    """The options every test that runs LAMMPS takes: --lmp, --plugin and, with mpi, --np, --mpirun.
+    ranks=False leaves --np out (for a script that declares it on a subcommand)."""
     parser.add_argument("--lmp", required=True)
     parser.add_argument("--plugin", required=True)
     if mpi:
-        parser.add_argument("--np", type=int, default=1)
+        if ranks:
+            parser.add_argument("--np", type=int, default=1)
         parser.add_argument("--mpirun", default="mpirun")
     return parser
 
