@@ -16,7 +16,9 @@ A PNG shows the profiles, the bulk temperature and Nu.
 
 With --series (a run started from rest): every frame's u against the
 series solution of Poiseuille flow started from rest (Morris, Fox & Zhu
-1997), at the frame's time step * dt (dt = dtfac hdx dx / (cfac u_max)),
+1997), at the frame's time step * dt (dt = dtfac hdx dx / (cfac u_max)):
+per particle (mean and largest error) and as a profile (u - series
+averaged in rows of one spacing: the largest row and the centre rows),
 and with --series-png a plot of u(y) (the fluid averaged in rows of one
 spacing) against the series at t = 50, 100, 200, 300 s and the last frame.
 
@@ -47,6 +49,12 @@ def reference(a):
     return channel_fv.solve(problem, nx=a.ref_nx, ny=a.ref_ny)
 
 
+def row_means(y, values, dx, n):
+    """values averaged in the n rows of one spacing across the channel"""
+    row = np.clip((y / dx).astype(int), 0, n - 1)
+    return np.bincount(row, values, n) / np.maximum(np.bincount(row, None, n), 1)
+
+
 def plot_series(a, frames, dt, dx, u_max, times=(50.0, 100.0, 200.0, 300.0)):
     """u(y) of the frames nearest to times and of the last one, rows of one spacing."""
     import matplotlib
@@ -66,8 +74,7 @@ def plot_series(a, frames, dt, dx, u_max, times=(50.0, 100.0, 200.0, 300.0)):
         fstep, f = frames[k]
         t = fstep * dt
         fl = f["type"] == 1
-        row = np.clip((f["y"][fl] / dx).astype(int), 0, a.n - 1)
-        u_row = np.bincount(row, f["vx"][fl], a.n) / np.maximum(np.bincount(row, None, a.n), 1)
+        u_row = row_means(f["y"][fl], f["vx"][fl], dx, a.n)
         line, = ax.plot(poiseuille_from_rest(y_fine, t, u_max, MU / RHO, W) / u_max, y_fine, "-",
                         lw=1)
         ax.plot(u_row / u_max, (rows + 0.5) * dx, "o", ms=3, color=line.get_color(),
@@ -109,13 +116,18 @@ def main():
     u_max = a.re * MU / (RHO * W)
     if a.series:
         dt = a.dtfac * a.hdx * dx / (a.cfac * u_max)
-        print(f"{'t (s)':>8} {'mean |u err| %':>15} {'max |u err| %':>14} {'max |v| %':>10}  (of u_max)")
+        print(f"{'t (s)':>8} {'mean |u err| %':>15} {'max |u err| %':>14} {'rows: max %':>12} "
+              f"{'centre %':>9} {'max |v| %':>10}  (of u_max)")
         for fstep, f in frames[1:]:
             fl = f["type"] == 1
             t = fstep * dt
-            err = 100.0 * np.abs(f["vx"][fl] - poiseuille_from_rest(f["y"][fl], t, u_max, MU / RHO, W)) / u_max
-            print(f"{t:8.1f} {err.mean():15.3f} {err.max():14.3f} "
-                  f"{100.0 * np.abs(f['vy'][fl]).max() / u_max:10.4f}")
+            series = poiseuille_from_rest(f["y"][fl], t, u_max, MU / RHO, W)
+            err = 100.0 * np.abs(f["vx"][fl] - series) / u_max
+            # the profile: u and the series averaged over the same particles, rows of one spacing
+            rows = 100.0 * row_means(f["y"][fl], f["vx"][fl] - series, dx, a.n) / u_max
+            centre = rows[(a.n - 1) // 2: a.n // 2 + 1].mean()
+            print(f"{t:8.1f} {err.mean():15.3f} {err.max():14.3f} {np.abs(rows).max():12.3f} "
+                  f"{centre:+9.3f} {100.0 * np.abs(f['vy'][fl]).max() / u_max:10.4f}")
         if a.series_png:
             plot_series(a, frames, dt, dx, u_max)
     fluid = d["type"] == 1

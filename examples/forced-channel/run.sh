@@ -7,7 +7,9 @@
 #   ./run.sh quick      Re = 65.2, 10 across, to t = 800 s (the CI test
 #                       forced.validation.channel_re65_10, about 30 s; at
 #                       Re = 652 10 across is too coarse: the flow breaks up)
-#   ./run.sh thick      the thick-wall channel (10 m slabs, KSK = k_s/k)
+#   ./run.sh thick      the thick-wall channel (10 m slabs, KSK = k_s/k); with
+#                       N=10 RE=65.2 TEND=800 the CI test
+#                       forced.validation.thick_re65_10 (about 50 s)
 #   ./run.sh exchanger  the parallel-flow and counter-flow heat exchangers
 #                       (in.exchanger, section 4.5), to TEND = 200 s with the
 #                       plate's cp lowered to 2.5 (the steady state does not
