@@ -12,7 +12,8 @@ run (--log, several for a run in pieces) adds its measured wall time.
 
   /usr/bin/python3 bench/forced/channel_2000.py                 # 2 ranks, 2000 steps, 3 repeats
   /usr/bin/python3 bench/forced/channel_2000.py --quick         # 500 steps, 1 repeat
-  /usr/bin/python3 bench/forced/channel_2000.py --log examples/forced-channel/out/log.rest2000
+  /usr/bin/python3 bench/forced/channel_2000.py --log examples/forced-channel/out/log.rest2000 \
+      --log-note "pb 0.002, correct all, on a machine shared with other runs"
 """
 
 import argparse
@@ -70,6 +71,7 @@ def main():
     p.add_argument("--repeat", type=int, help="runs per case (default 3, 1 with --quick)")
     p.add_argument("--quick", action="store_true")
     p.add_argument("--log", nargs="*", default=[], help="logs of a full shifted run to 2000 s")
+    p.add_argument("--log-note", default="", help="how the logged run was made (settings, machine)")
     p.add_argument("--out", default=HERE)
     a = p.parse_args()
     a.steps = a.steps or (500 if a.quick else 2000)
@@ -97,7 +99,8 @@ def main():
             raise SystemExit("no finished run in " + " ".join(a.log) + " (no 'Loop time' line)")
         logged = (f"The full shifted run ({', '.join(os.path.basename(x) for x in a.log)}): "
                   f"{steps} steps in {seconds:.0f} s of loop time ({seconds / 3600:.2f} h, "
-                  f"{1e3 * seconds / steps:.3f} ms per step).\n")
+                  f"{1e3 * seconds / steps:.3f} ms per step)" + (f"; {a.log_note}" if a.log_note else "")
+                  + ".\n")
         print(logged.strip())
     with open(os.path.join(a.out, "channel_2000.md"), "w") as f:
         f.write("# Heated channel to t = 2000 s: wall time with and without shifting\n\n")
