@@ -38,11 +38,8 @@ import tempfile
 
 import numpy as np
 
-from lammps_checks import (DE_VAHL_DAVIS, late_rows, longest_thermo_table, mpi_env, mpi_prefix,
-                           read_dump, run_lammps)
-
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphtest import lammps_arguments  # noqa: E402
+from lammps_checks import (DE_VAHL_DAVIS, lammps_arguments, late_rows, longest_thermo_table, mpi_env,
+                           mpi_prefix, read_dump, run_lammps)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
