@@ -21,7 +21,8 @@ tagged as wall, with normals from the lattice (pointing away from the
 missing neighbours).
 
 Shapes: disc (circle), annulus (cylinder cross-section: two circles),
-rectangle, and any closed polygon or parametric curve (module use), all 2-d.
+rectangle, and any closed polygon or parametric curve (module use), all 2-d;
+and one 3-d shape, the closed cylindrical tank (below).
 
 Output: a LAMMPS data file for atom_style sph (Atoms line: id type rho esph
 cv x y z, per-type masses rho dx^2 per unit depth), types 1 = interior,
@@ -44,6 +45,53 @@ Command line, e.g. (the disc of examples/conduction-disc: 30 particles across, o
     python3 tools/sph_boundary.py polygon --vertices "0,0 1,0 0.5,0.8" --dx 0.02 -o tri.data
 
 Module: setup = sph_boundary.disc(R, dx); setup.write_data("disc.data").
+
+3-d: the closed cylindrical tank (cylinder), axis z through --center, fluid
+in r < R, 0 < z < H, the same rules on its surfaces:
+
+* curved wall: rings of round(2 pi r / dx) equally spaced particles on the
+  circles r = R + k dx (layer k = 0 .. layers-1), in the planes z = j H/m,
+  j = 1 .. m-1, m = round(H/dx) (spacing dx, stretched to fit H, as along a
+  2-d curve); normals (-x/r, -y/r, 0), radial into the fluid;
+* lids: the planes z = -b dx (bottom) and H + b dx (top), b = 0 .. layers-1,
+  each the disc of radius R + (layers-1) dx in concentric rings (a particle
+  on the axis, rings i R/n (i = 1 .. n = round(R/dx)), and the rings
+  R + a dx, a = 1 .. layers-1, of the curved wall's layers, so that the
+  corner is filled and every radius R + a dx is one column of rings from the
+  lowest lid plane to the highest); normals (0, 0, 1) at the bottom,
+  (0, 0, -1) at the top, the corner included;
+* rings of alternate planes turned by half their spacing (--no-stagger: not);
+* interior: the simple cubic lattice ((i, j, k) + offset) dx from the axis and
+  z = 0 (offset 0.5, 0.5, 0.5), without the points closer than eps dx to the
+  curved wall (r > R - eps dx) or to a lid (z < eps dx or z > H - eps dx).
+
+Types of the tank (fixed, whichever are empty; 5 declared, 6 with a split):
+
+    1  interior (the fluid; with --split-z Z: the fluid below z = Z)
+    2  curved wall, first layer (on r = R, 0 < z < H)
+    3  curved wall, further layers (r = R + k dx)
+    4  lids, first layer (on z = 0 and z = H, r <= R)
+    5  lids, further layers (z = -b dx, H + b dx, and the corner r > R)
+    6  interior with z >= Z (only with --split-z Z: a second fluid on top)
+
+so a heated curved wall with adiabatic lids is, e.g., "group side type 2 3",
+"group lids type 4 5"; the first layers (types 2 and 4) are the particles on
+the surfaces, about dx^2 of surface each (a direct heat-flux estimate, compute
+sph/heatflux/atom ... spacing dx, sums over them). Data file: x y z, masses
+rho dx^3, normals nx ny nz, the box the particles' bounding box grown by
+1.5 dx. Read it with
+
+    dimension 3
+    atom_style sph
+    boundary f f f          # the box is only 1.5 dx wider than the walls
+    fix normals all property/atom d_nx d_ny d_nz
+    read_data tank.data fix normals NULL Normals
+
+    python3 tools/sph_boundary.py cylinder --radius 0.0193 --height 0.0386 --dx 0.002 --layers 3 -o tank.data
+    python3 tools/sph_boundary.py cylinder --radius 0.02 --height 0.04 --dx 0.002 --split-z 0.02 -o two.data
+
+Module: setup = sph_boundary.cylinder(R, H, dx, layers=3, z_split=None);
+setup.write_data("tank.data", rho=1000, cv=4180, T=300, Twall=350).
 Pure Python 3 + numpy.
 """
 
@@ -54,7 +102,7 @@ import sys
 import numpy as np
 
 __all__ = ["Curve", "Setup", "circle", "polygon", "parametric", "setup", "disc", "annulus",
-           "rectangle", "naive", "naive_disc", "read_data", "main"]
+           "rectangle", "cylinder", "CYLINDER_TYPES", "naive", "naive_disc", "read_data", "main"]
 
 
 # ---------------------------------------------------------------- curves
@@ -222,18 +270,22 @@ def parametric(fn, t0=0.0, t1=2.0 * math.pi, hole=False, dense_points=4096):
 # ---------------------------------------------------------------- set-ups
 
 class Setup:
-    """A particle set: x (n x 2), type (n, int), normal (n x 2, into the medium,
-    zero for interior particles), layer (n, -1 interior, 0 on the curve, k outer
-    layers), curve (n, index of the boundary curve, -1 interior), and dx."""
+    """A particle set: x (n x dim), type (n, int), normal (n x dim, into the
+    medium, zero for interior particles), layer (n, -1 interior, 0 on the
+    curve or surface, k outer layers), curve (n, index of the boundary curve or
+    surface, -1 interior), and dx. dim = 2 (per unit depth) or 3; ntypes = the
+    number of atom types of the data file (default: the largest type)."""
 
-    def __init__(self, x, type_, normal, layer, curve, dx, comment=""):
-        self.x = np.asarray(x, dtype=float).reshape(-1, 2)
+    def __init__(self, x, type_, normal, layer, curve, dx, comment="", dim=2, ntypes=None):
+        self.dim = int(dim)
+        self.x = np.asarray(x, dtype=float).reshape(-1, self.dim)
         self.type = np.asarray(type_, dtype=int)
-        self.normal = np.asarray(normal, dtype=float).reshape(-1, 2)
+        self.normal = np.asarray(normal, dtype=float).reshape(-1, self.dim)
         self.layer = np.asarray(layer, dtype=int)
         self.curve = np.asarray(curve, dtype=int)
         self.dx = float(dx)
         self.comment = comment
+        self.ntypes = ntypes
 
     def __len__(self):
         return len(self.x)
@@ -248,34 +300,46 @@ class Setup:
 
     def write_data(self, path, rho=1.0, cv=1.0, T=1.0, Twall=None, section="Normals", margin=None):
         """Write a LAMMPS data file (atom_style sph). esph = cv*T for interior
-        particles, cv*Twall for walls (fix sph/wall/isothermal sets them anyway)."""
+        particles, cv*Twall for walls (fix sph/wall/isothermal sets them anyway).
+        Masses rho dx^2 (per unit depth, z = 0, a box dx thick) in 2-d, rho dx^3
+        in 3-d; the box is the particles' bounding box grown by margin (1.5 dx)."""
         Twall = T if Twall is None else Twall
         dx = self.dx
         margin = 1.5 * dx if margin is None else margin
         lo = self.x.min(axis=0) - margin
         hi = self.x.max(axis=0) + margin
-        ntypes = int(self.type.max())
-        mass = rho * dx * dx
+        ntypes = int(self.type.max()) if self.ntypes is None else int(self.ntypes)
+        mass = rho * dx * dx if self.dim == 2 else rho * dx * dx * dx
         esph = np.where(self.interior, cv * T, cv * Twall)
+        if self.dim == 2:
+            zbox = f"{-0.5 * dx:.16g} {0.5 * dx:.16g}"
+            xyz = [f"{p[0]:.16g} {p[1]:.16g} 0" for p in self.x]
+            nrm = [f"{n[0]:.16g} {n[1]:.16g} 0" for n in self.normal]
+        else:
+            zbox = f"{lo[2]:.16g} {hi[2]:.16g}"
+            xyz = [f"{p[0]:.16g} {p[1]:.16g} {p[2]:.16g}" for p in self.x]
+            nrm = [f"{n[0]:.16g} {n[1]:.16g} {n[2]:.16g}" for n in self.normal]
         with open(path, "w") as f:
             f.write(f"LAMMPS data file (atom_style sph) from sph_boundary.py: {self.comment}\n\n")
             f.write(f"{len(self)} atoms\n{ntypes} atom types\n\n")
             f.write(f"{lo[0]:.16g} {hi[0]:.16g} xlo xhi\n{lo[1]:.16g} {hi[1]:.16g} ylo yhi\n")
-            f.write(f"{-0.5 * dx:.16g} {0.5 * dx:.16g} zlo zhi\n\nMasses\n\n")
+            f.write(f"{zbox} zlo zhi\n\nMasses\n\n")
             for t in range(1, ntypes + 1):
                 f.write(f"{t} {mass:.16g}\n")
             f.write("\nAtoms # sph\n\n")
             for i in range(len(self)):
-                f.write(f"{i + 1} {self.type[i]} {rho:.16g} {esph[i]:.16g} {cv:.16g} "
-                        f"{self.x[i, 0]:.16g} {self.x[i, 1]:.16g} 0\n")
+                f.write(f"{i + 1} {self.type[i]} {rho:.16g} {esph[i]:.16g} {cv:.16g} {xyz[i]}\n")
             f.write(f"\n{section}\n\n")
             for i in range(len(self)):
-                f.write(f"{i + 1} {self.normal[i, 0]:.16g} {self.normal[i, 1]:.16g} 0\n")
+                f.write(f"{i + 1} {nrm[i]}\n")
 
     def summary(self):
         s = [f"{len(self)} particles: {int(self.interior.sum())} interior, {int(self.wall.sum())} wall"]
         for k in range(int(self.layer.max()) + 1):
             s.append(f"wall layer {k}: {int((self.layer == k).sum())}")
+        if self.dim == 3:
+            ntypes = int(self.type.max()) if self.ntypes is None else int(self.ntypes)
+            s.append("types " + ", ".join(f"{t}: {int((self.type == t).sum())}" for t in range(1, ntypes + 1)))
         return "; ".join(s)
 
 
@@ -413,6 +477,129 @@ def rectangle(lx, ly, dx, eps=0.42, layers=1, offset=(0.5, 0.5), angle=0.0, cent
                  comment=f"rectangle {lx:g}x{ly:g} angle={angle:g} dx={dx:g} eps={eps:g} layers={layers}")
 
 
+# ---------------------------------------------------------------- 3-d: closed cylindrical tank
+
+CYLINDER_TYPES = {1: "interior (fluid; below z_split if a split is given)",
+                  2: "curved wall, first layer (on r = R)",
+                  3: "curved wall, further layers (r = R + k dx)",
+                  4: "lids, first layer (on z = 0 and z = H, r <= R)",
+                  5: "lids, further layers (z = -k dx, H + k dx; and the corner, r > R)",
+                  6: "interior above z_split (only with a split)"}
+
+
+def _ring(r, n, phase, z):
+    """n points equally spaced on the circle of radius r about the axis, at height z;
+    their angles phase + 2 pi i / n."""
+    phi = phase + 2.0 * math.pi * np.arange(n) / n
+    return phi, np.column_stack([r * np.cos(phi), r * np.sin(phi), np.full(n, float(z))])
+
+
+def cylinder(radius, height, dx, eps=0.42, layers=1, offset=(0.5, 0.5, 0.5), center=(0.0, 0.0),
+             z_split=None, stagger=True):
+    """Closed cylindrical tank, axis along z through center = (cx, cy): the
+    fluid fills r < radius, 0 < z < height. Cleary's rules in 3-d:
+
+    curved wall (types 2, 3; curve 0): rings of round(2 pi r / dx) equally
+      spaced particles on the circles r = radius + k dx (layer k = 0 ..
+      layers - 1, type 2 for k = 0, else 3), in the planes z = j height / m,
+      j = 1 .. m - 1, m = round(height / dx) (spacing dx, stretched to fit the
+      height exactly, as along a 2-d curve); normals (-x/r, -y/r, 0);
+    lids (types 4, 5; curve 1 = bottom, 2 = top): planes z = -b dx and
+      height + b dx (b = 0 .. layers - 1), each a disc of radius
+      radius + (layers - 1) dx of concentric rings: a particle on the axis,
+      rings at r = i radius / n_r (i = 1 .. n_r = round(radius / dx)), and
+      the rings r = radius + a dx of the curved wall's layers (a = 1 ..
+      layers - 1), so that the corner is filled and the curved wall's columns
+      of rings go on through it at spacing dx; normals (0, 0, 1) at the
+      bottom, (0, 0, -1) at the top (all of them, the corner too); layer =
+      max(b, a): type 4 for the lid surfaces themselves (b = 0, r <= radius),
+      5 for the rest;
+    interior (type 1, and 6 for z >= z_split if given): the simple cubic
+      lattice ((i + ox) dx + cx, (j + oy) dx + cy, (k + oz) dx) with the points
+      closer than eps dx to the curved wall (r > radius - eps dx) or to a lid
+      (z < eps dx or z > height - eps dx) omitted.
+
+    stagger: the rings of alternate planes (counted from the bottom through
+    lids and curved wall alike) are turned by half their angular spacing.
+    The data file always declares 6 atom types with a split, 5 without (types
+    3 and 5 are empty with one layer)."""
+    R, H, L = float(radius), float(height), int(layers)
+    if R < 2 * dx or H < 2 * dx:
+        raise ValueError("cylinder: radius and height must be at least 2 dx")
+    if L < 1:
+        raise ValueError("cylinder: layers must be at least 1")
+    if z_split is not None and not 0.0 < z_split < H:
+        raise ValueError("cylinder: z_split must lie between 0 and the height")
+    cx, cy = float(center[0]), float(center[1])
+    off = tuple(offset) + (0.5,) * (3 - len(offset))
+    m = max(1, int(round(H / dx)))
+    hz = H / m
+
+    def phase(v, n):
+        return math.pi / n if (stagger and v % 2) else 0.0
+
+    x, nrm, typ, lay, cur = [], [], [], [], []
+
+    def add(p, n, t, k, c):
+        x.append(p)
+        nrm.append(n)
+        typ.append(np.full(len(p), t))
+        lay.append(np.full(len(p), k))
+        cur.append(np.full(len(p), c))
+
+    # curved wall: layer k on r = R + k dx, planes j = 1 .. m - 1 (vertical index v = j)
+    for k in range(L):
+        r = R + k * dx
+        n = max(3, int(round(2.0 * math.pi * r / dx)))
+        for j in range(1, m):
+            phi, p = _ring(r, n, phase(j, n), j * hz)
+            add(p, np.column_stack([-np.cos(phi), -np.sin(phi), np.zeros(n)]), 2 if k == 0 else 3, k, 0)
+
+    # lids: the same rings in every plane; bottom plane b at z = -b dx (v = -b), top at H + b dx (v = m + b)
+    n_r = max(1, int(round(R / dx)))
+    radii = [(0.0, 0)] + [(i * R / n_r, 0) for i in range(1, n_r + 1)] + [(R + a * dx, a) for a in range(1, L)]
+    for c, (z0, sign, v0) in enumerate([(0.0, -1.0, 0), (H, 1.0, m)], start=1):
+        for b in range(L):
+            z = z0 + sign * b * dx
+            v = v0 + int(sign) * b
+            for r, a in radii:
+                if r == 0.0:
+                    p = np.array([[0.0, 0.0, z]])
+                else:
+                    n = max(3, int(round(2.0 * math.pi * r / dx)))
+                    p = _ring(r, n, phase(v, n), z)[1]
+                k = max(a, b)
+                add(p, np.tile([0.0, 0.0, -sign], (len(p), 1)), 4 if k == 0 else 5, k, c)
+    wall = np.vstack(x)
+    wall[:, 0] += cx
+    wall[:, 1] += cy
+
+    # interior: simple cubic lattice, clear of the walls by eps dx
+    ni = int(math.ceil(R / dx)) + 2
+    nk = int(math.ceil(H / dx)) + 2
+    i = np.arange(-ni, ni + 1)
+    gx, gy, gz = np.meshgrid((i + off[0]) * dx, (i + off[1]) * dx, (np.arange(-1, nk) + off[2]) * dx,
+                             indexing="ij")
+    lat = np.column_stack([gx.ravel(), gy.ravel(), gz.ravel()])
+    rr = np.hypot(lat[:, 0], lat[:, 1])
+    keep = (R - rr >= eps * dx) & (lat[:, 2] >= eps * dx) & (H - lat[:, 2] >= eps * dx)
+    lat = lat[keep]
+    lat[:, 0] += cx
+    lat[:, 1] += cy
+    ltype = np.ones(len(lat), dtype=int)
+    if z_split is not None:
+        ltype[lat[:, 2] >= z_split] = 6
+
+    comment = (f"cylinder R={R:g} H={H:g} dx={dx:g} eps={eps:g} layers={L}"
+               + (f" split-z={z_split:g}" if z_split is not None else "")
+               + "; types 1 interior" + (", 6 interior z>=split" if z_split is not None else "")
+               + ", 2/3 curved wall first/further layers, 4/5 lids first/further layers")
+    return Setup(np.vstack([lat, wall]), np.concatenate([ltype] + typ),
+                 np.vstack([np.zeros_like(lat)] + nrm), np.concatenate([np.full(len(lat), -1)] + lay),
+                 np.concatenate([np.full(len(lat), -1)] + cur), dx, comment, dim=3,
+                 ntypes=6 if z_split is not None else 5)
+
+
 # ---------------------------------------------------------------- reading back
 
 def read_data(path, section="Normals"):
@@ -457,19 +644,25 @@ def read_data(path, section="Normals"):
 
 def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("shape", choices=["disc", "annulus", "rectangle", "polygon"])
+    p.add_argument("shape", choices=["disc", "annulus", "rectangle", "polygon", "cylinder"])
     p.add_argument("--dx", type=float, required=True, help="interior lattice spacing (= wall spacing)")
-    p.add_argument("--radius", type=float, help="disc radius; annulus inner radius")
+    p.add_argument("--radius", type=float, help="disc radius; annulus inner radius; cylinder radius")
+    p.add_argument("--height", type=float, help="cylinder: height (fluid 0 < z < height)")
+    p.add_argument("--split-z", type=float,
+                   help="cylinder: interior particles with z >= this get type 6 (two fluids)")
+    p.add_argument("--no-stagger", action="store_true",
+                   help="cylinder: do not turn the rings of alternate planes by half a spacing")
     p.add_argument("--outer-radius", type=float, help="annulus outer radius")
     p.add_argument("--lx", type=float)
     p.add_argument("--ly", type=float)
     p.add_argument("--angle", type=float, default=0.0, help="rectangle: rotation against the lattice, degrees")
     p.add_argument("--vertices", help='polygon: "x1,y1 x2,y2 ..."')
-    p.add_argument("--center", default="0,0", help="x,y of the shape's centre (default 0,0)")
+    p.add_argument("--center", default="0,0", help="x,y of the shape's centre (cylinder: axis) (default 0,0)")
     p.add_argument("--eps", type=float, default=0.42, help="omit interior particles within eps*dx (0.42)")
     p.add_argument("--layers", type=int, default=1, help="wall layers, dx apart (1)")
     p.add_argument("--offset", default="0.5,0.5",
-                   help="lattice offset in units of dx from the centre (default 0.5,0.5)")
+                   help="lattice offset in units of dx from the centre (default 0.5,0.5; "
+                        "cylinder: x,y[,z], z from the bottom, default 0.5)")
     p.add_argument("--naive", action="store_true",
                    help="naive set-up: lattice points inside, outermost tagged as wall, lattice normals")
     p.add_argument("--connectivity", type=int, choices=[4, 8], default=4,
@@ -486,7 +679,18 @@ def main(argv=None):
 
     off = tuple(float(t) for t in a.offset.split(","))
     cen = tuple(float(t) for t in a.center.split(","))
-    if a.shape == "disc":
+    if a.shape != "cylinder" and (a.height is not None or a.split_z is not None or a.no_stagger):
+        p.error("--height, --split-z and --no-stagger are for the cylinder")
+    if a.shape == "cylinder":
+        if a.radius is None or a.height is None:
+            p.error("cylinder needs --radius and --height")
+        if a.naive or a.type_per_curve:
+            p.error("cylinder: --naive and --type-per-curve are for the 2-d shapes")
+        try:
+            s = cylinder(a.radius, a.height, a.dx, a.eps, a.layers, off, cen, a.split_z, not a.no_stagger)
+        except ValueError as e:
+            p.error(str(e))
+    elif a.shape == "disc":
         curves = [circle(cen[0], cen[1], a.radius)]
         desc = f"disc R={a.radius:g}"
     elif a.shape == "annulus":
@@ -501,12 +705,13 @@ def main(argv=None):
         v = np.array([[float(t) for t in xy.split(",")] for xy in a.vertices.split()])
         curves = [polygon(v)]
         desc = f"polygon of {len(v)} vertices"
-    if a.naive:
-        s = naive(curves, a.dx, a.layers, off, a.connectivity,
-                  comment=f"naive {desc} dx={a.dx:g} layers={a.layers}")
-    else:
-        s = setup(curves, a.dx, a.eps, a.layers, off, 0.0, cen, a.type_per_curve,
-                  comment=f"{desc} dx={a.dx:g} eps={a.eps:g} layers={a.layers}")
+    if a.shape != "cylinder":
+        if a.naive:
+            s = naive(curves, a.dx, a.layers, off, a.connectivity,
+                      comment=f"naive {desc} dx={a.dx:g} layers={a.layers}")
+        else:
+            s = setup(curves, a.dx, a.eps, a.layers, off, 0.0, cen, a.type_per_curve,
+                      comment=f"{desc} dx={a.dx:g} eps={a.eps:g} layers={a.layers}")
     if a.outward:
         s.normal = -s.normal
     s.write_data(a.output, a.rho, a.cv, a.T, a.Twall, a.section)
