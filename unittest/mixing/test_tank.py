@@ -1,0 +1,121 @@
+"""Coarse versions of the heated tanks of examples/mixing-tank-2d and -3d
+(Reece et al. 2024, section 3.4), with compute sph/mixing.
+
+  tank2d   the 2-D two-component tank, 16 x 16 fluid particles, to t = 40 s
+           (the fluid is at theta_H and at rest by then): no particle lost
+           or outside the tank; the entropies and the VF-FTLE measure grow
+           without falling back; T and the measures symmetric about the
+           centre line; T near theta_H at the end
+  tank3d   the 3-D cylinder, 10 across, to t = 1 s, with --components two or
+           one: no particle lost, the per-particle measures in the dump for
+           every fluid particle and in range, the global ones growing, T
+           axisymmetric
+"""
+
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.join(HERE, "..", "..")
+sys.path.insert(0, os.path.join(HERE, "..", "convection"))
+sys.path.insert(0, os.path.join(HERE, "..", "tools"))
+sys.path.insert(0, os.path.join(ROOT, "examples"))
+from lammps_checks import lammps_arguments, mpi_env, mpi_prefix, read_frames  # noqa: E402
+from checks import below, finish, that  # noqa: E402
+import mixing_tank  # noqa: E402
+
+
+def run(args, example, variables, workdir):
+    command = mpi_prefix(args.np, args.mpirun) + [args.lmp, "-in", os.path.join(ROOT, "examples", example),
+                                                  "-var", "plugin", args.plugin, "-log", "log.lammps"]
+    for name, value in variables.items():
+        command += ["-var", name, str(value)]
+    proc = subprocess.run(command, cwd=workdir, text=True, capture_output=True, env=mpi_env())
+    if proc.returncode != 0 or "ERROR" in proc.stdout:
+        sys.stdout.write(proc.stdout[-3000:] + proc.stderr[-2000:])
+        sys.exit("FAIL: LAMMPS run failed")
+    return proc.stdout
+
+
+def mixing_rows(path):
+    with open(path) as f:
+        names = [line for line in f if line.startswith("#")][-1].lstrip("# ").split()
+    rows = np.loadtxt(path, comments="#", ndmin=2)
+    return {name: rows[:, k] for k, name in enumerate(names)}
+
+
+def check_growth(m, names, least, what):
+    for name in names:
+        series = m[name]
+        that(series[-1] >= least, f"{what}: {name} grows to {series[-1]:.4f} (at least {least})")
+        below(max(0.0, -np.diff(series).min()), 1e-3, f"{what}: {name} never falls back by more than")
+
+
+def check_tank2d(args, workdir):
+    n, tend = 16, 40.0
+    run(args, "mixing-tank-2d/in.tank", {"n": n, "tend": tend, "every": 500, "dumpdt": tend,
+                                         "out": "tank.dump", "mixing": "mixing.txt"}, workdir)
+    m = mixing_rows(os.path.join(workdir, "mixing.txt"))
+    that(np.all(m["fluid_inside"] == n * n), "2-D: every fluid particle stays in the tank",
+         f"{int(m['fluid_inside'].min())} of {n * n} at the least")
+    check_growth(m, ["S*_A", "S*_B", "VF-FTLE"], 0.05, "2-D")
+    below(303.0 - m["T_mean"][-1], 0.5, "2-D: mean T within 0.5 K of theta_H at the end (K)")
+    frame = read_frames(os.path.join(workdir, "tank.dump"))[-1][1]
+    fluid = {name: col[mixing_tank.fluid_of(frame, 2)] for name, col in frame.items()}
+    that(len(fluid["id"]) == n * n, "2-D: the dump holds every fluid particle")
+    t_asym, _ = mixing_tank.symmetry_2d(fluid, mixing_tank.H / n)
+    below(t_asym, 0.02, "2-D: T mirror-symmetric about the centre line (of theta_H - theta_C)")
+
+
+def check_tank3d(args, workdir):
+    n, tend = 10, 1.0
+    dx = mixing_tank.H / n
+    data = os.path.join(workdir, "tank.data")
+    subprocess.run([sys.executable, os.path.join(ROOT, "tools", "sph_boundary.py"), "cylinder",
+                    "--radius", str(mixing_tank.R + dx / 2), "--height", str(mixing_tank.H + dx),
+                    "--dx", str(dx), "--layers", "3", "--eps", "0.99", "--offset", "0.5,0.5,0",
+                    "--split-z", str((mixing_tank.H + dx) / 2), "--rho", "1.204", "--cv", "1006",
+                    "--T", "283", "-o", data], check=True, capture_output=True)
+    run(args, "mixing-tank-3d/in.tank3d", {"data": data, "dx": dx, "components": args.components,
+                                           "tend": tend, "every": 100, "dumpdt": tend,
+                                           "out": "tank.dump", "mixing": "mixing.txt"}, workdir)
+    m = mixing_rows(os.path.join(workdir, "mixing.txt"))
+    frames = read_frames(os.path.join(workdir, "tank.dump"))
+    n_fluid = int(mixing_tank.fluid_of(frames[0][1], 3).sum())
+    that(np.all(m["fluid_inside"] == n_fluid), f"3-D {args.components}: every fluid particle stays in the tank",
+         f"{int(m['fluid_inside'].min())} of {n_fluid} at the least")
+    check_growth(m, ["S*_A", "S*_B", "VF-FTLE"], 0.005, f"3-D {args.components}")
+    last = frames[-1][1]
+    fluid = mixing_tank.fluid_of(last, 3)
+    that(fluid.sum() == n_fluid, f"3-D {args.components}: the last dump holds every fluid particle")
+    for column, lo, hi in (("c_mix[1]", 0, 1), ("c_mix[3]", 0, 1 + 1e-12), ("c_mix[4]", -1e-12, 1 + 1e-12)):
+        values = last[column][fluid]
+        that(np.all((values >= lo) & (values <= hi)), f"3-D {args.components}: per-particle {column} in [{lo}, {hi}]",
+             f"{values.min():.4g} .. {values.max():.4g}")
+    that(np.all(last["c_mix[2]"][fluid] > 0), f"3-D {args.components}: every fluid particle's FTLE > 0")
+    (t_max, _), _ = mixing_tank.symmetry_3d({k: v[fluid] for k, v in last.items()}, dx)
+    below(t_max, 0.01, f"3-D {args.components}: T axisymmetric (largest quadrant spread, of theta_H - theta_C)")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("check", choices=["tank2d", "tank3d"])
+    parser.add_argument("--components", choices=["two", "one"], default="two")
+    lammps_arguments(parser)
+    args = parser.parse_args()
+    workdir = tempfile.mkdtemp(prefix="tank-")
+    try:
+        {"tank2d": check_tank2d, "tank3d": check_tank3d}[args.check](args, workdir)
+    finally:
+        shutil.rmtree(workdir, ignore_errors=True)
+    finish()
+
+
+if __name__ == "__main__":
+    main()
