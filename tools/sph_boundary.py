@@ -59,7 +59,9 @@ in r < R, 0 < z < H, the same rules on its surfaces:
   R + a dx, a = 1 .. layers-1, of the curved wall's layers, so that the
   corner is filled and every radius R + a dx is one column of rings from the
   lowest lid plane to the highest); normals (0, 0, 1) at the bottom,
-  (0, 0, -1) at the top, the corner included;
+  (0, 0, -1) at the top, the corner included; with --lids lattice, each lid
+  plane is the interior's square lattice over that disc instead, so that
+  every column of interior particles ends under a lid particle;
 * rings of alternate planes turned by half their spacing (--no-stagger: not);
 * interior: the simple cubic lattice ((i, j, k) + offset) dx from the axis and
   z = 0 (offset 0.5, 0.5, 0.5), without the points closer than eps dx to the
@@ -495,7 +497,7 @@ def _ring(r, n, phase, z):
 
 
 def cylinder(radius, height, dx, eps=0.42, layers=1, offset=(0.5, 0.5, 0.5), center=(0.0, 0.0),
-             z_split=None, stagger=True):
+             z_split=None, stagger=True, lids="rings"):
     """Closed cylindrical tank, axis along z through center = (cx, cy): the
     fluid fills r < radius, 0 < z < height. Cleary's rules in 3-d:
 
@@ -518,6 +520,12 @@ def cylinder(radius, height, dx, eps=0.42, layers=1, offset=(0.5, 0.5, 0.5), cen
       lattice ((i + ox) dx + cx, (j + oy) dx + cy, (k + oz) dx) with the points
       closer than eps dx to the curved wall (r > radius - eps dx) or to a lid
       (z < eps dx or z > height - eps dx) omitted.
+
+    lids="lattice": each lid plane is instead the interior's square lattice
+      (the same x, y offsets) over the disc r <= radius + (layers - 1) dx, so
+      that every column of interior particles ends under a lid particle (a
+      uniform body force, e.g. the buoyancy of a fluid warmer than the
+      Boussinesq reference, pushes interior particles through ring lids).
 
     stagger: the rings of alternate planes (counted from the bottom through
     lids and curved wall alike) are turned by half their angular spacing.
@@ -556,12 +564,31 @@ def cylinder(radius, height, dx, eps=0.42, layers=1, offset=(0.5, 0.5, 0.5), cen
             add(p, np.column_stack([-np.cos(phi), -np.sin(phi), np.zeros(n)]), 2 if k == 0 else 3, k, 0)
 
     # lids: the same rings in every plane; bottom plane b at z = -b dx (v = -b), top at H + b dx (v = m + b)
+    if lids not in ("rings", "lattice"):
+        raise ValueError("cylinder: lids must be 'rings' or 'lattice'")
     n_r = max(1, int(round(R / dx)))
     radii = [(0.0, 0)] + [(i * R / n_r, 0) for i in range(1, n_r + 1)] + [(R + a * dx, a) for a in range(1, L)]
+    reach = R + (L - 1) * dx
+    ni_lid = int(math.ceil(reach / dx)) + 1
+    i_lid = np.arange(-ni_lid, ni_lid + 1)
+    lx, ly = np.meshgrid((i_lid + off[0]) * dx, (i_lid + off[1]) * dx, indexing="ij")
+    lx, ly = lx.ravel(), ly.ravel()
+    lr = np.hypot(lx, ly)
+    on_disc = lr <= reach + 1e-9 * dx
+    lx, ly, lr = lx[on_disc], ly[on_disc], lr[on_disc]
+    # the lattice point's layer: beyond the surface's radius, how many spacings
+    lattice_layer = np.clip(np.ceil((lr - R) / dx - 1e-9), 0, L - 1).astype(int)
     for c, (z0, sign, v0) in enumerate([(0.0, -1.0, 0), (H, 1.0, m)], start=1):
         for b in range(L):
             z = z0 + sign * b * dx
             v = v0 + int(sign) * b
+            if lids == "lattice":
+                for a in range(L):
+                    sel = lattice_layer == a
+                    p = np.column_stack([lx[sel], ly[sel], np.full(sel.sum(), z)])
+                    k = max(a, b)
+                    add(p, np.tile([0.0, 0.0, -sign], (len(p), 1)), 4 if k == 0 else 5, k, c)
+                continue
             for r, a in radii:
                 if r == 0.0:
                     p = np.array([[0.0, 0.0, z]])
@@ -652,6 +679,8 @@ def main(argv=None):
                    help="cylinder: interior particles with z >= this get type 6 (two fluids)")
     p.add_argument("--no-stagger", action="store_true",
                    help="cylinder: do not turn the rings of alternate planes by half a spacing")
+    p.add_argument("--lids", choices=["rings", "lattice"], default="rings",
+                   help="cylinder: lids of concentric rings (default) or of the interior's square lattice")
     p.add_argument("--outer-radius", type=float, help="annulus outer radius")
     p.add_argument("--lx", type=float)
     p.add_argument("--ly", type=float)
@@ -679,15 +708,17 @@ def main(argv=None):
 
     off = tuple(float(t) for t in a.offset.split(","))
     cen = tuple(float(t) for t in a.center.split(","))
-    if a.shape != "cylinder" and (a.height is not None or a.split_z is not None or a.no_stagger):
-        p.error("--height, --split-z and --no-stagger are for the cylinder")
+    if a.shape != "cylinder" and (a.height is not None or a.split_z is not None or a.no_stagger
+                                  or a.lids != "rings"):
+        p.error("--height, --split-z, --no-stagger and --lids are for the cylinder")
     if a.shape == "cylinder":
         if a.radius is None or a.height is None:
             p.error("cylinder needs --radius and --height")
         if a.naive or a.type_per_curve:
             p.error("cylinder: --naive and --type-per-curve are for the 2-d shapes")
         try:
-            s = cylinder(a.radius, a.height, a.dx, a.eps, a.layers, off, cen, a.split_z, not a.no_stagger)
+            s = cylinder(a.radius, a.height, a.dx, a.eps, a.layers, off, cen, a.split_z, not a.no_stagger,
+                         a.lids)
         except ValueError as e:
             p.error(str(e))
     elif a.shape == "disc":

@@ -79,7 +79,7 @@ def check_tank3d(args, workdir):
     data = os.path.join(workdir, "tank.data")
     subprocess.run([sys.executable, os.path.join(ROOT, "tools", "sph_boundary.py"), "cylinder",
                     "--radius", str(mixing_tank.R + dx / 2), "--height", str(mixing_tank.H + dx),
-                    "--dx", str(dx), "--layers", "3", "--eps", "0.99", "--offset", "0.5,0.5,0",
+                    "--dx", str(dx), "--layers", "3", "--eps", "0.99", "--offset", "0.5,0.5,0", "--lids", "lattice",
                     "--split-z", str((mixing_tank.H + dx) / 2), "--rho", "1.204", "--cv", "1006",
                     "--T", "283", "-o", data], check=True, capture_output=True)
     run(args, "mixing-tank-3d/in.tank3d", {"data": data, "dx": dx, "components": args.components,

@@ -264,4 +264,25 @@ with tempfile.TemporaryDirectory() as tmp:
     else:
         print("skip the LAMMPS read (give --lmp and --plugin)")
 
+# ---------------------------------------------------------- lattice lids
+sl = sb.cylinder(R, H, dx, eps=eps, layers=L, z_split=zs, lids="lattice")
+xl, tl, cl = sl.x, sl.type, sl.curve
+that(np.array_equal(xl[sl.interior], x[inner]) and np.array_equal(xl[cl == 0], x[side]),
+     "lattice lids: the same interior and curved wall as with ring lids")
+columns = {tuple(np.round(p[:2] / dx, 6)) for p in xl[sl.interior]}
+ok = True
+for c, z in ((1, 0.0), (2, H)):
+    plane = xl[(cl == c) & (np.abs(xl[:, 2] - z) < TOL)]
+    above = {tuple(np.round(p[:2] / dx, 6)) for p in plane}
+    ok &= columns <= above
+    ok &= abs(np.hypot(plane[:, 0], plane[:, 1]).max() - (R + (L - 1) * dx)) < dx
+that(ok, "lattice lids: every interior column ends under (above) a lid particle in the first top (bottom) plane")
+rl = np.hypot(xl[:, 0], xl[:, 1])
+lidl = (cl == 1) | (cl == 2)
+first = lidl & ((np.abs(xl[:, 2]) < TOL) | (np.abs(xl[:, 2] - H) < TOL)) & (rl <= R + TOL)
+that(np.array_equal(tl == 4, first) and np.array_equal(tl == 5, lidl & ~first),
+     "lattice lids: type 4 the lid surfaces within r <= R, type 5 the rest")
+that(closest(xl[lidl]) >= dx * (1 - 1e-9) and closest(xl[sl.interior], xl[lidl]) >= eps * dx * (1 - 1e-12),
+     "lattice lids: lid particles dx apart, at least eps dx from the interior")
+
 finish()
