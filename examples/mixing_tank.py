@@ -36,6 +36,20 @@ FIELDS = [("c_T", "T (K)"), ("c_rho", "rho (kg/m^3)"), ("c_mix[1]", "F (volume f
 MEASURES = ["F_mean", "F", "S*_A", "S*_B", "VF-FTLE", "Robinson", "FTLE_max", "FTLE_mean"]
 
 
+def dump_times(path):
+    """The ITEM: TIME of each frame (dump_modify time yes), None where absent."""
+    times, pending = [], None
+    with open(path) as f:
+        lines = iter(f)
+        for line in lines:
+            if line.startswith("ITEM: TIME"):
+                pending = float(next(lines))
+            elif line.startswith("ITEM: TIMESTEP"):
+                times.append(pending)
+                pending = None
+    return times
+
+
 def read_mixing(path):
     rows = np.loadtxt(path, comments="#", ndmin=2)
     return rows
@@ -138,7 +152,6 @@ def main():
     p.add_argument("--mixing", required=True)
     p.add_argument("--dim", type=int, choices=[2, 3], default=3)
     p.add_argument("--dx", type=float, required=True)
-    p.add_argument("--dumpdt", type=float, default=None, help="seconds between dumps (labels)")
     p.add_argument("--png", default=None, help="prefix of the PNG files")
     a = p.parse_args()
 
@@ -161,12 +174,17 @@ def main():
               f"{max(0.0, -drops.min()):.2e} ({'monotonic' if drops.min() >= 0 else 'not monotonic'})")
 
     frames = read_frames(a.dump)
+    times = dump_times(a.dump)
+    final = a.dump + ".final"    # the state at the end (write_dump), at the file's last time
+    if os.path.exists(final):
+        frames += read_frames(final)
+        times.append(rows[-1][names.index("time")])
     n0 = int(fluid_of(frames[0][1], a.dim).sum())
     print(f"fluid particles: {n0} at the start, {int(fluid_of(frames[-1][1], a.dim).sum())} at the end "
           f"(the paper loses 7 % in 2-D over 300 s)")
     for k, (step, frame) in enumerate(frames):
         fluid = {name: col[fluid_of(frame, a.dim)] for name, col in frame.items()}
-        when = k * a.dumpdt if a.dumpdt else step
+        when = times[k] if k < len(times) and times[k] is not None else step
         if a.dim == 2:
             t_asym, rho_asym = symmetry_2d(fluid, a.dx)
             print(f"dump {k} (t = {when:g}): mirror asymmetry: T {t_asym:.2e} of theta_H - theta_C, "
@@ -178,7 +196,7 @@ def main():
     if a.png:
         plot_measures(rows, a.png, names)
         last = frames[-1][1]
-        plot_fields(last, a.dim, a.dx, a.png, (len(frames) - 1) * a.dumpdt if a.dumpdt else frames[-1][0])
+        plot_fields(last, a.dim, a.dx, a.png, times[-1] if times and times[-1] is not None else frames[-1][0])
         print(f"wrote {a.png}_measures.png and {a.png}_fields.png")
 
 

@@ -17,4 +17,4 @@ $run "$LMP" -in "$here/in.tank" -var plugin "$PLUGIN" -var n "${N:-39}" \
 "$PYTHON" "$here/analyse.py" tank.dump --png tank.png
 # the mixing measures against time, the fields, the particles lost, the symmetry
 "$PYTHON" "$here/../mixing_tank.py" tank.dump --mixing mixing.txt --dim 2 \
-  --dx "$("$PYTHON" -c "print(0.0386 / ${N:-39})")" --dumpdt 5 --png tank_mixing
+  --dx "$("$PYTHON" -c "print(0.0386 / ${N:-39})")" --png tank_mixing

