@@ -42,7 +42,7 @@ def dump_times(path):
     with open(path) as f:
         lines = iter(f)
         for line in lines:
-            if line.startswith("ITEM: TIME"):
+            if line.strip() == "ITEM: TIME":
                 pending = float(next(lines))
             elif line.startswith("ITEM: TIMESTEP"):
                 times.append(pending)
@@ -169,16 +169,18 @@ def main():
               f"{v['Robinson']:8.4f} {int(v['fluid_inside']):6d}")
     for label in ("S*_A", "S*_B"):
         series = rows[:, names.index(label)]
+        if len(series) < 2:
+            continue
         drops = np.diff(series)
         print(f"{label}: from {series[0]:.4f} to {series[-1]:.4f}; largest drop between outputs "
               f"{max(0.0, -drops.min()):.2e} ({'monotonic' if drops.min() >= 0 else 'not monotonic'})")
 
     frames = read_frames(a.dump)
     times = dump_times(a.dump)
-    final = a.dump + ".final"    # the state at the end (write_dump), at the file's last time
+    final = a.dump + ".final"    # the state at the end
     if os.path.exists(final):
         frames += read_frames(final)
-        times.append(rows[-1][names.index("time")])
+        times += dump_times(final)
     n0 = int(fluid_of(frames[0][1], a.dim).sum())
     print(f"fluid particles: {n0} at the start, {int(fluid_of(frames[-1][1], a.dim).sum())} at the end "
           f"(the paper loses 7 % in 2-D over 300 s)")

@@ -5,6 +5,8 @@
 #                       16 particles across, to t = 60 s
 #   ./run.sh one        one component (section 3.4.1, nu = 1e-4 m^2/s), the
 #                       top half as a passive tracer
+#   ./run.sh air        one component with air's viscosity 1.506e-5 m^2/s
+#                       (section 3.4.1's first case: was it axisymmetric?)
 #   ./run.sh quick      two components, 12 across, to t = 5 s (a minute)
 # Environment: LMP, PLUGIN, NP (MPI ranks), OUT (default ./out), N
 # (particles across the diameter and the height), TEND (s), C0 (m/s).
@@ -15,6 +17,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 components=two
 case "${1:-}" in
   one) components=one ;;
+  air) components=air ;;
   quick) N=${N:-12} TEND=${TEND:-5} ;;
 esac
 N=${N:-16}
