@@ -27,27 +27,13 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from lammps_dump import read_frames  # noqa: E402
+from lammps_dump import frame_times, read_frames  # noqa: E402
 
 R, H = 0.0193, 0.0386
 T_HOT, T_COLD = 303.0, 283.0
 FIELDS = [("c_T", "T (K)"), ("c_rho", "rho (kg/m^3)"), ("c_mix[1]", "F (volume fraction of A)"),
           ("c_mix[2]", "FTLE (1/s)"), ("c_mix[3]", "Robinson's M"), ("c_mix[4]", "VF-FTLE")]
 MEASURES = ["F_mean", "F", "S*_A", "S*_B", "VF-FTLE", "Robinson", "FTLE_max", "FTLE_mean"]
-
-
-def dump_times(path):
-    """The ITEM: TIME of each frame (dump_modify time yes), None where absent."""
-    times, pending = [], None
-    with open(path) as f:
-        lines = iter(f)
-        for line in lines:
-            if line.strip() == "ITEM: TIME":
-                pending = float(next(lines))
-            elif line.startswith("ITEM: TIMESTEP"):
-                times.append(pending)
-                pending = None
-    return times
 
 
 def read_mixing(path):
@@ -176,11 +162,11 @@ def main():
               f"{max(0.0, -drops.min()):.2e} ({'monotonic' if drops.min() >= 0 else 'not monotonic'})")
 
     frames = read_frames(a.dump)
-    times = dump_times(a.dump)
+    times = frame_times(a.dump)
     final = a.dump + ".final"    # the state at the end
     if os.path.exists(final):
         frames += read_frames(final)
-        times += dump_times(final)
+        times += frame_times(final)
     n0 = int(fluid_of(frames[0][1], a.dim).sum())
     print(f"fluid particles: {n0} at the start, {int(fluid_of(frames[-1][1], a.dim).sum())} at the end "
           f"(the paper loses 7 % in 2-D over 300 s)")

@@ -26,3 +26,18 @@ def read_frames(path):
         else:
             i += 1
     return frames
+
+
+def frame_times(path):
+    """The simulation time of each frame (ITEM: TIME, written with dump_modify
+    time yes, before its ITEM: TIMESTEP), None for a frame without one."""
+    times, pending = [], None
+    with open(path) as f:
+        lines = iter(f)
+        for line in lines:
+            if line.strip() == "ITEM: TIME":
+                pending = float(next(lines))
+            elif line.startswith("ITEM: TIMESTEP"):
+                times.append(pending)
+                pending = None
+    return times

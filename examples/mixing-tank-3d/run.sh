@@ -2,7 +2,7 @@
 # The heated cylindrical tank in 3-D (in.tank3d): set up the particles with
 # tools/sph_boundary.py, run, and plot the fields and the mixing measures.
 #   ./run.sh            two components (Reece et al. 2024 section 3.4.2),
-#                       16 particles across, to t = 60 s
+#                       16 particles across, to t = 30 s
 #   ./run.sh one        one component (section 3.4.1, nu = 1e-4 m^2/s), the
 #                       top half as a passive tracer
 #   ./run.sh air        one component with air's viscosity 1.506e-5 m^2/s
@@ -21,7 +21,7 @@ case "${1:-}" in
   quick) N=${N:-12} TEND=${TEND:-5} ;;
 esac
 N=${N:-16}
-TEND=${TEND:-60}
+TEND=${TEND:-30}
 name=tank3d_${components}_${N}
 
 # H = 2R = 0.0386 m in N spacings. The wall surface lies half a spacing
