@@ -10,8 +10,13 @@ of the temperature with the velocity at some times.
     analyse.py tank.dump [--times 0 5 10 20 60 300] [--png tank.png]
 """
 import argparse
+import os
+import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from lammps_dump import frame_times, read_frames  # noqa: E402
 
 L = 0.0386
 
@@ -21,23 +26,10 @@ def frames(path):
     for each frame of the dump; a frame written twice at the same step (at
     the start of a run) is given once."""
     last = None
-    with open(path) as f:
-        step = time = None
-        while True:
-            line = f.readline()
-            if not line:
-                return
-            if line.startswith("ITEM: TIME") and not line.startswith("ITEM: TIMESTEP"):
-                time = float(f.readline())
-            elif line.startswith("ITEM: TIMESTEP"):
-                step = int(f.readline())
-            elif line.startswith("ITEM: NUMBER OF ATOMS"):
-                n = int(f.readline())
-            elif line.startswith("ITEM: ATOMS"):
-                data = np.loadtxt([f.readline() for _ in range(n)], ndmin=2)
-                if step != last:
-                    yield step, time, data[np.argsort(data[:, 0])]
-                last, time = step, None
+    for (step, c), time in zip(read_frames(path), frame_times(path)):
+        if step != last:
+            yield step, time, np.column_stack([c[k] for k in ("id", "type", "x", "y", "vx", "vy", "c_T")])
+        last = step
 
 
 def summary(d):

@@ -329,8 +329,10 @@ void ComputeSPHMixing::capture()
         const double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
         const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
         if (rsq >= reachsq || rsq == 0.0) continue;
+        // a ghost whose group membership its owner no longer shares: not a neighbour
+        const Position *p = find_position(tag[j]);
+        if (!p) continue;
         if (pass == 1) {
-          const Position *p = find_position(tag[j]);
           // the unwrapped separation differs from the neighbour's by whole box lengths
           int shift[3] = {0, 0, 0};
           for (int k = 0; k < 3; k++)
