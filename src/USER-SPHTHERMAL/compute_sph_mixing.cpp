@@ -269,19 +269,17 @@ const ComputeSPHMixing::Position *ComputeSPHMixing::find_position(tagint tag) co
 }
 
 /* ----------------------------------------------------------------------
-   r_j - r_i now for the initial neighbour 'tag' of owned atom i, the
+   r_j - r_i now for the initial neighbour 'tag' of an atom at unwrapped xu, the
    periodic image it was a neighbour through included; found = false when
    the neighbour is gone (deleted or lost)
 ------------------------------------------------------------------------- */
 
-void ComputeSPHMixing::separation(int i, tagint tag, int packed_shift, double *del,
+void ComputeSPHMixing::separation(const double *xu, tagint tag, int packed_shift, double *del,
                                   bool &found) const
 {
   const Position *p = find_position(tag);
   found = (p != nullptr);
   if (!found) return;
-  double xu[3];
-  domain->unmap(atom->x[i], atom->image[i], xu);
   int shift[3];
   FixSPHMixingReference::unpack_shift(packed_shift, shift);
   const double prd[3] = {domain->xprd, domain->yprd, domain->zprd};
@@ -405,11 +403,12 @@ void ComputeSPHMixing::measure()
     double *m = measures[i];
     for (int k = 0; k < NCOLUMNS; k++) m[k] = 0.0;
     if (!(mask[i] & groupbit)) continue;
-    double stretch = 0.0;
+    double stretch = 0.0, xu[3];
+    domain->unmap(atom->x[i], atom->image[i], xu);
     for (int n = 0; n < reference->count[i]; n++) {
       double del[3];
       bool found;
-      separation(i, reference->tags[i][n], reference->shifts[i][n], del, found);
+      separation(xu, reference->tags[i][n], reference->shifts[i][n], del, found);
       if (!found) continue;
       const double r = sqrt(del[0] * del[0] + del[1] * del[1] + del[2] * del[2]);
       stretch = std::max(stretch, r / reference->distance0[i][n]);

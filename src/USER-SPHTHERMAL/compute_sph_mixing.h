@@ -61,7 +61,7 @@ class ComputeSPHMixing : public Compute {
   void volume_fractions(double *fraction);
   void gather_positions();
   const Position *find_position(tagint tag) const;
-  void separation(int i, tagint tag, int packed_shift, double *del, bool &found) const;
+  void separation(const double *xu, tagint tag, int packed_shift, double *del, bool &found) const;
   void capture();
   double elapsed() const;
   void component_fraction(double &f_all, double &n_group);
