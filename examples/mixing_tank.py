@@ -86,6 +86,17 @@ def symmetry_3d(frame, dx):
     return result
 
 
+def save_png(fig, path, dpi):
+    """Write a figure as PNG, in a palette of 64 colours when PIL is there
+    (a quarter of the file)."""
+    fig.savefig(path, dpi=dpi)
+    try:
+        from PIL import Image
+        Image.open(path).convert("RGB").quantize(64).save(path)
+    except ImportError:
+        pass
+
+
 def plot_measures(rows, prefix, names):
     import matplotlib
     matplotlib.use("Agg")
@@ -102,7 +113,7 @@ def plot_measures(rows, prefix, names):
     axes[1].set_xlabel("t (s)")
     axes[1].set_ylabel("mean fluid T (K)")
     fig.tight_layout()
-    fig.savefig(f"{prefix}_measures.png", dpi=110)
+    save_png(fig, f"{prefix}_measures.png", 90)
     plt.close(fig)
 
 
@@ -128,7 +139,7 @@ def plot_fields(frame, dim, dx, prefix, when):
             ax.tick_params(labelsize=6)
     fig.suptitle(f"t = {when:.1f} s")
     fig.tight_layout()
-    fig.savefig(f"{prefix}_fields.png", dpi=110)
+    save_png(fig, f"{prefix}_fields.png", 80)
     plt.close(fig)
 
 
@@ -167,12 +178,16 @@ def main():
     if os.path.exists(final):
         frames += read_frames(final)
         times += frame_times(final)
+    def step_time(step):
+        """A frame's time from the mixing file's steps and times (a dump without ITEM: TIME)."""
+        return float(np.interp(step, rows[:, names.index("step")], rows[:, names.index("time")]))
+
     n0 = int(fluid_of(frames[0][1], a.dim).sum())
     print(f"fluid particles: {n0} at the start, {int(fluid_of(frames[-1][1], a.dim).sum())} at the end "
           f"(the paper loses 7 % in 2-D over 300 s)")
     for k, (step, frame) in enumerate(frames):
         fluid = {name: col[fluid_of(frame, a.dim)] for name, col in frame.items()}
-        when = times[k] if k < len(times) and times[k] is not None else step
+        when = times[k] if k < len(times) and times[k] is not None else step_time(step)
         if a.dim == 2:
             t_asym, rho_asym = symmetry_2d(fluid, a.dx)
             print(f"dump {k} (t = {when:g}): mirror asymmetry: T {t_asym:.2e} of theta_H - theta_C, "
@@ -184,7 +199,8 @@ def main():
     if a.png:
         plot_measures(rows, a.png, names)
         last = frames[-1][1]
-        plot_fields(last, a.dim, a.dx, a.png, times[-1] if times and times[-1] is not None else frames[-1][0])
+        plot_fields(last, a.dim, a.dx, a.png,
+                    times[-1] if len(times) == len(frames) and times[-1] is not None else step_time(frames[-1][0]))
         print(f"wrote {a.png}_measures.png and {a.png}_fields.png")
 
 
