@@ -146,15 +146,15 @@ void ComputeSPHMixing::setup()
 
 /* ---------------------------------------------------------------------- */
 
+double ComputeSPHMixing::volume(int i) const
+{
+  return (atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]]) / atom->rho[i];
+}
+
 bool ComputeSPHMixing::in_component(int i) const
 {
   return component_type.empty() ? (atom->mask[i] & component_groupbit) != 0
                                 : component_type[atom->type[i]] != 0;
-}
-
-double ComputeSPHMixing::elapsed() const
-{
-  return reference->now() - reference->time0;
 }
 
 /* ----------------------------------------------------------------------
@@ -169,10 +169,6 @@ void ComputeSPHMixing::volume_fractions(double *fraction)
   comm->forward_comm();
   neighbor->build_one(list);
   const double *const *const x = atom->x;
-  const double *const rho = atom->rho;
-  const double *const mass = atom->mass;
-  const double *const rmass = atom->rmass;
-  const int *const type = atom->type;
   const int *const mask = atom->mask;
   const sphk_kernel kernel = sphk_make(kernel_kind, domain->dimension, cutoff);
   const double w_self = sphk_w(&kernel, 0.0);
@@ -182,8 +178,7 @@ void ComputeSPHMixing::volume_fractions(double *fraction)
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
-    const double volume_i = (rmass ? rmass[i] : mass[type[i]]) / rho[i];
-    double all = volume_i * w_self;
+    double all = volume(i) * w_self;
     double of_a = in_component(i) ? all : 0.0;
     const int *const jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
@@ -192,7 +187,7 @@ void ComputeSPHMixing::volume_fractions(double *fraction)
       const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
       const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
       if (rsq >= cutsq) continue;
-      const double vw = (rmass ? rmass[j] : mass[type[j]]) / rho[j] * sphk_w(&kernel, sqrt(rsq));
+      const double vw = volume(j) * sphk_w(&kernel, sqrt(rsq));
       all += vw;
       if (in_component(j)) of_a += vw;
     }
@@ -206,16 +201,11 @@ void ComputeSPHMixing::volume_fractions(double *fraction)
 
 void ComputeSPHMixing::component_fraction(double &f_all, double &n_group)
 {
-  const double *const rho = atom->rho;
-  const double *const mass = atom->mass;
-  const double *const rmass = atom->rmass;
-  const int *const type = atom->type;
   double local[3] = {0.0, 0.0, 0.0}, sums[3];
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    const double volume = (rmass ? rmass[i] : mass[type[i]]) / rho[i];
-    local[0] += volume;
-    if (in_component(i)) local[1] += volume;
+    local[0] += volume(i);
+    if (in_component(i)) local[1] += volume(i);
     local[2] += 1.0;
   }
   MPI_Allreduce(local, sums, 3, MPI_DOUBLE, MPI_SUM, world);
@@ -293,12 +283,6 @@ void ComputeSPHMixing::separation(const double *xu, tagint tag, int packed_shift
 
 void ComputeSPHMixing::capture()
 {
-  if (atom->nmax > nmax) {
-    nmax = atom->nmax;
-    memory->destroy(measures);
-    memory->create(measures, nmax, NCOLUMNS, "sph/mixing:measures");
-    array_atom = measures;
-  }
   std::vector<double> fraction(atom->nlocal);
   volume_fractions(fraction.data());    // also refreshes the ghosts and builds the list
   gather_positions();
@@ -353,13 +337,7 @@ void ComputeSPHMixing::capture()
 
   double f_all, n_group;
   component_fraction(f_all, n_group);
-  double local[2] = {0.0, 0.0};
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    local[0] += sphmix_entropy_term(fraction[i]);
-    local[1] += sphmix_entropy_term(1.0 - fraction[i]);
-  }
-  MPI_Allreduce(local, reference->entropy0, 2, MPI_DOUBLE, MPI_SUM, world);
+  entropies(fraction.data(), reference->entropy0);
   reference->time0 = reference->now();
   reference->captured = 1;
   if (comm->me == 0)
@@ -368,6 +346,21 @@ void ComputeSPHMixing::capture()
                    "{} neighbours each within {}, component A {:.6g} of the volume\n",
                    id, reference->time0, update->ntimestep, n_group, reference->width, reach,
                    f_all);
+}
+
+/* ----------------------------------------------------------------------
+   the mixing entropies -sum F ln F of A and of the rest over the group
+------------------------------------------------------------------------- */
+
+void ComputeSPHMixing::entropies(const double *fraction, double *sums)
+{
+  double local[2] = {0.0, 0.0};
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    local[0] += sphmix_entropy_term(fraction[i]);
+    local[1] += sphmix_entropy_term(1.0 - fraction[i]);
+  }
+  MPI_Allreduce(local, sums, 2, MPI_DOUBLE, MPI_SUM, world);
 }
 
 /* ----------------------------------------------------------------------
@@ -394,10 +387,10 @@ void ComputeSPHMixing::measure()
   double f_all, n_group;
   component_fraction(f_all, n_group);
   gather_positions();
-  const double time = elapsed();
+  const double time = reference->now() - reference->time0;    // since the reference
 
   // F, FTLE and Robinson's measure; the sums of the global measures
-  double local[5] = {0.0, 0.0, 0.0, 0.0, 0.0}, sums[5];
+  double local[3] = {0.0, 0.0, 0.0}, sums[3], entropy[2];
   double ftle_max_local = -INFINITY;
   for (int i = 0; i < nlocal; i++) {
     double *m = measures[i];
@@ -417,13 +410,12 @@ void ComputeSPHMixing::measure()
     m[COL_FTLE] = sphmix_ftle(stretch, time);
     m[COL_ROBINSON] = sphmix_robinson(fraction[i], f_all);
     local[0] += fraction[i];
-    local[1] += sphmix_entropy_term(fraction[i]);
-    local[2] += sphmix_entropy_term(1.0 - fraction[i]);
-    local[3] += m[COL_ROBINSON];
-    local[4] += m[COL_FTLE];
+    local[1] += m[COL_ROBINSON];
+    local[2] += m[COL_FTLE];
     ftle_max_local = std::max(ftle_max_local, m[COL_FTLE]);
   }
-  MPI_Allreduce(local, sums, 5, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(local, sums, 3, MPI_DOUBLE, MPI_SUM, world);
+  entropies(fraction.data(), entropy);
   double ftle_max;
   MPI_Allreduce(&ftle_max_local, &ftle_max, 1, MPI_DOUBLE, MPI_MAX, world);
 
@@ -440,14 +432,14 @@ void ComputeSPHMixing::measure()
 
   vector[MEAN_FRACTION] = sums[0] / n_group;
   vector[MIXTURE_FRACTION] = f_all;
-  vector[ENTROPY_A] = sphmix_entropy_normalised(sums[1], reference->entropy0[0],
+  vector[ENTROPY_A] = sphmix_entropy_normalised(entropy[0], reference->entropy0[0],
                                                 sphmix_entropy_max(n_group, f_all));
-  vector[ENTROPY_B] = sphmix_entropy_normalised(sums[2], reference->entropy0[1],
+  vector[ENTROPY_B] = sphmix_entropy_normalised(entropy[1], reference->entropy0[1],
                                                 sphmix_entropy_max(n_group, 1.0 - f_all));
   vector[VF_FTLE] = vf_ftle_sum / n_group;
-  vector[ROBINSON] = sums[3] / n_group;
+  vector[ROBINSON] = sums[1] / n_group;
   vector[FTLE_MAX] = ftle_max;
-  vector[FTLE_MEAN] = sums[4] / n_group;
+  vector[FTLE_MEAN] = sums[2] / n_group;
 }
 
 /* ---------------------------------------------------------------------- */

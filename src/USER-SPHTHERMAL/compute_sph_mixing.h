@@ -56,6 +56,7 @@ class ComputeSPHMixing : public Compute {
   };
   std::vector<Position> positions;
 
+  double volume(int i) const;    // m / rho
   bool in_component(int i) const;
   void measure();
   void volume_fractions(double *fraction);
@@ -63,8 +64,8 @@ class ComputeSPHMixing : public Compute {
   const Position *find_position(tagint tag) const;
   void separation(const double *xu, tagint tag, int packed_shift, double *del, bool &found) const;
   void capture();
-  double elapsed() const;
   void component_fraction(double &f_all, double &n_group);
+  void entropies(const double *fraction, double *sums);
 };
 
 }    // namespace LAMMPS_NS

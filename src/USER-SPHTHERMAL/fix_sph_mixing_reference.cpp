@@ -61,12 +61,8 @@ void FixSPHMixingReference::resize(int new_width)
   memory->destroy(tags);
   memory->destroy(shifts);
   memory->destroy(distance0);
-  const int nmax = atom->nmax;
-  // a width of at least 1 keeps the arrays allocated for copy_arrays
-  memory->create(tags, nmax, width > 0 ? width : 1, "sph/mixing:tags");
-  memory->create(shifts, nmax, width > 0 ? width : 1, "sph/mixing:shifts");
-  memory->create(distance0, nmax, width > 0 ? width : 1, "sph/mixing:distance0");
-  for (int i = 0; i < nmax; i++) count[i] = 0;
+  grow_arrays(atom->nmax);
+  for (int i = 0; i < atom->nmax; i++) count[i] = 0;
 }
 
 int FixSPHMixingReference::pack_shift(const int shift[3])
@@ -85,11 +81,10 @@ void FixSPHMixingReference::unpack_shift(int packed, int shift[3])
 
 void FixSPHMixingReference::grow_arrays(int nmax)
 {
-  const int w = width > 0 ? width : 1;
   memory->grow(count, nmax, "sph/mixing:count");
-  memory->grow(tags, nmax, w, "sph/mixing:tags");
-  memory->grow(shifts, nmax, w, "sph/mixing:shifts");
-  memory->grow(distance0, nmax, w, "sph/mixing:distance0");
+  memory->grow(tags, nmax, slots(), "sph/mixing:tags");
+  memory->grow(shifts, nmax, slots(), "sph/mixing:shifts");
+  memory->grow(distance0, nmax, slots(), "sph/mixing:distance0");
 }
 
 void FixSPHMixingReference::copy_arrays(int i, int j, int /*delflag*/)
@@ -205,6 +200,6 @@ void FixSPHMixingReference::restart(char *buf)
 
 double FixSPHMixingReference::memory_usage()
 {
-  const int w = width > 0 ? width : 1;
-  return (double) atom->nmax * (sizeof(int) + w * (sizeof(tagint) + sizeof(int) + sizeof(double)));
+  return (double) atom->nmax *
+      (sizeof(int) + slots() * (sizeof(tagint) + sizeof(int) + sizeof(double)));
 }

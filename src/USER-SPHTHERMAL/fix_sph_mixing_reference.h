@@ -68,6 +68,8 @@ class FixSPHMixingReference : public Fix {
   int restart_pending;       // read from a restart file, time0 not yet settled
   double elapsed_restart;    // the time since the reference when it was written
   int values_per_atom() const { return 1 + 3 * width; }
+  // columns of the per-atom lists: at least 1, so that they exist before the capture
+  int slots() const { return width > 0 ? width : 1; }
 };
 
 }    // namespace LAMMPS_NS
