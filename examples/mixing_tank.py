@@ -33,12 +33,35 @@ R, H = 0.0193, 0.0386
 T_HOT, T_COLD = 303.0, 283.0
 FIELDS = [("c_T", "T (K)"), ("c_rho", "rho (kg/m^3)"), ("c_mix[1]", "F (volume fraction of A)"),
           ("c_mix[2]", "FTLE (1/s)"), ("c_mix[3]", "Robinson's M"), ("c_mix[4]", "VF-FTLE")]
-MEASURES = ["F_mean", "F", "S*_A", "S*_B", "VF-FTLE", "Robinson", "FTLE_max", "FTLE_mean"]
+
+
+def write_tank_data(n, path):
+    """The particles of examples/mixing-tank-3d/in.tank3d, n spacings across
+    the diameter and the height, written to path (tools/sph_boundary.py);
+    returns the spacing. The wall surface lies half a spacing inside the
+    first ring of wall particles (radius R + dx/2, lids dx/2 beyond the
+    surface), and no fluid particle is closer than a spacing to a wall
+    particle (eps 0.99, as on a lattice; with Cleary's 0.42 fluid starts
+    where the kernel's gradient is weak). The lids are the fluid's lattice,
+    so that every column of fluid ends under a lid particle. n layers of
+    fluid, the components split at mid-height; three wall layers fill the
+    Wendland support (4 dx) of the outermost fluid."""
+    import sph_boundary
+    dx = H / n
+    tank = sph_boundary.cylinder(R + dx / 2, H + dx, dx, eps=0.99, layers=3, offset=(0.5, 0.5, 0.0),
+                                 z_split=(H + dx) / 2, lids="lattice")
+    tank.write_data(path, rho=1.204, cv=1006.0, T=T_COLD)
+    return dx
 
 
 def read_mixing(path):
+    """The fix ave/time file of the inputs: {column name of its header: values}."""
+    with open(path) as f:
+        names = [line for line in f if line.startswith("#")][-1].lstrip("# ").split()
     rows = np.loadtxt(path, comments="#", ndmin=2)
-    return rows
+    if len(names) != rows.shape[1]:
+        sys.exit(f"FAIL: {path}: the header names {len(names)} columns, the rows have {rows.shape[1]}")
+    return {name: rows[:, k] for k, name in enumerate(names)}
 
 
 def fluid_of(frame, dim):
@@ -97,19 +120,19 @@ def save_png(fig, path, dpi):
         pass
 
 
-def plot_measures(rows, prefix, names):
+def plot_measures(m, prefix):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    t = rows[:, names.index("time")] if "time" in names else rows[:, 0]
+    t = m["time"]
     fig, axes = plt.subplots(1, 2, figsize=(11, 4))
     for label in ("S*_A", "S*_B", "VF-FTLE", "Robinson"):
-        axes[0].plot(t, rows[:, names.index(label)], label=label)
+        axes[0].plot(t, m[label], label=label)
     axes[0].set_xlabel("t (s)")
     axes[0].set_ylabel("global measure")
     axes[0].legend()
     axes[0].set_title("mixing (Reece et al. 2024, Table 4)")
-    axes[1].plot(t, rows[:, names.index("T_mean")], "k")
+    axes[1].plot(t, m["T_mean"], "k")
     axes[1].set_xlabel("t (s)")
     axes[1].set_ylabel("mean fluid T (K)")
     fig.tight_layout()
@@ -144,6 +167,14 @@ def plot_fields(frame, dim, dx, prefix, when):
 
 
 def main():
+    if len(sys.argv) > 1 and sys.argv[1] == "setup":
+        p = argparse.ArgumentParser(prog="mixing_tank.py setup",
+                                    description="write the 3-D tank's data file; print its spacing")
+        p.add_argument("n", type=int, help="spacings across the diameter and the height")
+        p.add_argument("data")
+        a = p.parse_args(sys.argv[2:])
+        print(write_tank_data(a.n, a.data))
+        return
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("dump")
     p.add_argument("--mixing", required=True)
@@ -152,20 +183,15 @@ def main():
     p.add_argument("--png", default=None, help="prefix of the PNG files")
     a = p.parse_args()
 
-    with open(a.mixing) as f:
-        header = [line for line in f if line.startswith("#")]
-    names = header[-1].lstrip("# ").split() if header else []
-    rows = read_mixing(a.mixing)
-    if len(names) != rows.shape[1]:
-        sys.exit(f"FAIL: {a.mixing}: the header names {len(names)} columns, the rows have {rows.shape[1]}")
+    m = read_mixing(a.mixing)
     print(f"{'t (s)':>8} {'T mean':>9} {'S*_A':>7} {'S*_B':>7} {'VF-FTLE':>8} {'Robinson':>8} {'fluid':>6}")
-    stride = max(1, len(rows) // 12)
-    for row in list(rows[::stride]) + ([rows[-1]] if (len(rows) - 1) % stride else []):
-        v = dict(zip(names, row))
-        print(f"{v['time']:8.2f} {v['T_mean']:9.4f} {v['S*_A']:7.4f} {v['S*_B']:7.4f} {v['VF-FTLE']:8.4f} "
-              f"{v['Robinson']:8.4f} {int(v['fluid_inside']):6d}")
+    n_rows = len(m["time"])
+    stride = max(1, n_rows // 12)
+    for k in list(range(0, n_rows, stride)) + ([n_rows - 1] if (n_rows - 1) % stride else []):
+        print(f"{m['time'][k]:8.2f} {m['T_mean'][k]:9.4f} {m['S*_A'][k]:7.4f} {m['S*_B'][k]:7.4f} "
+              f"{m['VF-FTLE'][k]:8.4f} {m['Robinson'][k]:8.4f} {int(m['fluid_inside'][k]):6d}")
     for label in ("S*_A", "S*_B"):
-        series = rows[:, names.index(label)]
+        series = m[label]
         if len(series) < 2:
             continue
         drops = np.diff(series)
@@ -178,16 +204,15 @@ def main():
     if os.path.exists(final):
         frames += read_frames(final)
         times += frame_times(final)
-    def step_time(step):
-        """A frame's time from the mixing file's steps and times (a dump without ITEM: TIME)."""
-        return float(np.interp(step, rows[:, names.index("step")], rows[:, names.index("time")]))
+    # a frame without ITEM: TIME: its time from the mixing file's steps and times
+    times = [t if t is not None else float(np.interp(step, m["step"], m["time"]))
+             for t, (step, _) in zip(times, frames)]
 
     n0 = int(fluid_of(frames[0][1], a.dim).sum())
     print(f"fluid particles: {n0} at the start, {int(fluid_of(frames[-1][1], a.dim).sum())} at the end "
           f"(the paper loses 7 % in 2-D over 300 s)")
-    for k, (step, frame) in enumerate(frames):
+    for k, ((step, frame), when) in enumerate(zip(frames, times)):
         fluid = {name: col[fluid_of(frame, a.dim)] for name, col in frame.items()}
-        when = times[k] if k < len(times) and times[k] is not None else step_time(step)
         if a.dim == 2:
             t_asym, rho_asym = symmetry_2d(fluid, a.dx)
             print(f"dump {k} (t = {when:g}): mirror asymmetry: T {t_asym:.2e} of theta_H - theta_C, "
@@ -197,10 +222,8 @@ def main():
             print(f"dump {k} (t = {when:g}): quadrant spread, largest (mean) over rings: T {t_max:.2e} "
                   f"({t_mean:.2e}) of theta_H - theta_C, rho {rho_max:.2e} ({rho_mean:.2e}) of the rings' range")
     if a.png:
-        plot_measures(rows, a.png, names)
-        last = frames[-1][1]
-        plot_fields(last, a.dim, a.dx, a.png,
-                    times[-1] if len(times) == len(frames) and times[-1] is not None else step_time(frames[-1][0]))
+        plot_measures(m, a.png)
+        plot_fields(frames[-1][1], a.dim, a.dx, a.png, times[-1])
         print(f"wrote {a.png}_measures.png and {a.png}_fields.png")
 
 

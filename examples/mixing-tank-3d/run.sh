@@ -24,22 +24,12 @@ N=${N:-16}
 TEND=${TEND:-30}
 name=tank3d_${components}_${N}
 
-# H = 2R = 0.0386 m in N spacings. The wall surface lies half a spacing
-# inside the first ring of wall particles (radius R + dx/2, lids dx/2 beyond
-# the surface), and no fluid particle is closer than a spacing to a wall
-# particle (eps 0.99, as on a lattice). The lids are the fluid's lattice, so
-# that every column of fluid ends under a lid particle. (With the pair's
-# density diffusion on, fluid leaked through the top lid within 1 s with
-# eps 0.5 and within 4 s with eps 0.99 and ring lids; in.tank3d turns it
-# off, and ring lids then held too in a 6 s check.) N layers of fluid, the
-# components split at mid-height.
-# Three wall layers fill the Wendland support (4 dx) of the outermost fluid.
-dx=$("$PYTHON" -c "print(0.0386 / $N)")
-"$PYTHON" "$root/tools/sph_boundary.py" cylinder \
-  --radius "$("$PYTHON" -c "print(0.0193 + $dx / 2)")" --height "$("$PYTHON" -c "print(0.0386 + $dx)")" \
-  --dx "$dx" --layers 3 --eps 0.99 --offset 0.5,0.5,0 --lids lattice \
-  --split-z "$("$PYTHON" -c "print((0.0386 + $dx) / 2)")" --rho 1.204 --cv 1006 --T 283 \
-  -o "$name.data" > /dev/null
+# the particles (tools/sph_boundary.py; the layout is described in
+# ../mixing_tank.py, write_tank_data). With the pair's density diffusion on,
+# fluid leaked through the top lid within 1 s with Cleary's eps 0.5 and
+# within 4 s with eps 0.99 and ring lids; in.tank3d turns it off, and ring
+# lids then held too in a 6 s check.
+dx=$("$PYTHON" "$here/../mixing_tank.py" setup "$N" "$name.data")
 $run "$LMP" -in "$here/in.tank3d" -var plugin "$PLUGIN" -var data "$name.data" -var dx "$dx" \
   -var components "$components" -var tend "$TEND" ${C0:+-var c0 "$C0"} -var out "$name.dump" -var mixing "$name.mixing.txt" \
   -log "log.$name" | grep -E "^Reece|^final"

@@ -43,13 +43,6 @@ def run(args, example, variables, workdir):
     return proc.stdout
 
 
-def mixing_rows(path):
-    with open(path) as f:
-        names = [line for line in f if line.startswith("#")][-1].lstrip("# ").split()
-    rows = np.loadtxt(path, comments="#", ndmin=2)
-    return {name: rows[:, k] for k, name in enumerate(names)}
-
-
 def check_growth(m, names, least, what, fallback=1e-3):
     for name in names:
         series = m[name]
@@ -61,7 +54,7 @@ def check_tank2d(args, workdir):
     n, tend = 16, 40.0
     run(args, "mixing-tank-2d/in.tank", {"n": n, "tend": tend, "every": 500, "dumpdt": tend / 2,
                                          "out": "tank.dump", "mixing": "mixing.txt"}, workdir)
-    m = mixing_rows(os.path.join(workdir, "mixing.txt"))
+    m = mixing_tank.read_mixing(os.path.join(workdir, "mixing.txt"))
     that(np.all(m["fluid_inside"] == n * n), "2-D: every fluid particle stays in the tank",
          f"{int(m['fluid_inside'].min())} of {n * n} at the least")
     check_growth(m, ["S*_A", "S*_B", "VF-FTLE"], 0.05, "2-D")
@@ -75,17 +68,12 @@ def check_tank2d(args, workdir):
 
 def check_tank3d(args, workdir):
     n, tend = 10, 1.0
-    dx = mixing_tank.H / n
     data = os.path.join(workdir, "tank.data")
-    subprocess.run([sys.executable, os.path.join(ROOT, "tools", "sph_boundary.py"), "cylinder",
-                    "--radius", str(mixing_tank.R + dx / 2), "--height", str(mixing_tank.H + dx),
-                    "--dx", str(dx), "--layers", "3", "--eps", "0.99", "--offset", "0.5,0.5,0", "--lids", "lattice",
-                    "--split-z", str((mixing_tank.H + dx) / 2), "--rho", "1.204", "--cv", "1006",
-                    "--T", "283", "-o", data], check=True, capture_output=True)
+    dx = mixing_tank.write_tank_data(n, data)
     run(args, "mixing-tank-3d/in.tank3d", {"data": data, "dx": dx, "components": args.components,
                                            "tend": tend, "every": 100, "dumpdt": tend / 2,
                                            "out": "tank.dump", "mixing": "mixing.txt"}, workdir)
-    m = mixing_rows(os.path.join(workdir, "mixing.txt"))
+    m = mixing_tank.read_mixing(os.path.join(workdir, "mixing.txt"))
     frames = read_frames(os.path.join(workdir, "tank.dump")) + read_frames(os.path.join(workdir, "tank.dump.final"))
     n_fluid = int(mixing_tank.fluid_of(frames[0][1], 3).sum())
     that(np.all(m["fluid_inside"] == n_fluid), f"3-D {args.components}: every fluid particle stays in the tank",
