@@ -21,6 +21,7 @@
 #include "sph_checks.h"
 #include "sph_compat.h"
 #include "sph_conduction.h"
+#include "sph_consistent.h"
 #include "update.h"
 
 #include <cmath>
@@ -34,9 +35,12 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     PairSPHKernel(lmp, "sph/cleary/heat", "conductivities come from fix sph/materials"),
     mean(SPHC_HARMONIC), eta2(0.0), materials(nullptr), conductivity_varies(0),
     conductance(nullptr), conductivity(nullptr), nmax(0), relax_wanted(0), relax_rate(nullptr),
-    nmax_relax(0)
+    nmax_relax(0), correct(0), sweeps(5), nmax_correct(0), corr_s(nullptr), corr_kinv(nullptr),
+    corr_lambda(nullptr), corr_deficit(nullptr), corr_coupling(nullptr), corr_state(nullptr),
+    comm_stage(COMM_RELAX)
 {
-  comm_reverse = 1;    // relax_rate, when wanted
+  comm_forward = 7;    // S and the state of the correction
+  comm_reverse = 9;    // the moments of the correction; relax_rate, when wanted
 }
 
 /* ---------------------------------------------------------------------- */
@@ -46,6 +50,12 @@ PairSPHClearyHeat::~PairSPHClearyHeat()
   memory->destroy(conductance);
   memory->destroy(conductivity);
   memory->destroy(relax_rate);
+  memory->destroy(corr_s);
+  memory->destroy(corr_kinv);
+  memory->destroy(corr_lambda);
+  memory->destroy(corr_deficit);
+  memory->destroy(corr_coupling);
+  memory->destroy(corr_state);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -55,6 +65,7 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   if (conductivity_varies) update_conductivity();
   if (update->setupflag) check_neighbours();
+  if (correct) update_correction();
   if (relax_wanted) {
     if (atom->nmax > nmax_relax) {
       nmax_relax = atom->nmax;
@@ -84,6 +95,7 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
   if (!flows.empty()) tally_flows();
 
   if (relax_wanted) {
+    comm_stage = COMM_RELAX;
     if (force->newton_pair) SPHCompat::reverse_comm(comm, this);
     const double *const cv = atom->cv;
     for (int i = 0; i < atom->nlocal; i++) relax_rate[i] /= cv[i];
@@ -100,25 +112,33 @@ template <int KERNEL> void PairSPHClearyHeat::eval_kernel()
 
 template <int KERNEL, int MEAN> void PairSPHClearyHeat::eval_mean()
 {
+  if (correct)
+    eval_flags<KERNEL, MEAN, 1>();
+  else
+    eval_flags<KERNEL, MEAN, 0>();
+}
+
+template <int KERNEL, int MEAN, int CORRECT> void PairSPHClearyHeat::eval_flags()
+{
   const int flags = (relax_wanted ? 8 : 0) | (conductivity_varies ? 4 : 0) |
       (force->newton_pair ? 2 : 0) | ((atom->rmass_flag && atom->rmass) ? 1 : 0);
   switch (flags) {
-    case 0: eval<KERNEL, MEAN, 0, 0, 0, 0>(); break;
-    case 1: eval<KERNEL, MEAN, 0, 0, 1, 0>(); break;
-    case 2: eval<KERNEL, MEAN, 0, 1, 0, 0>(); break;
-    case 3: eval<KERNEL, MEAN, 0, 1, 1, 0>(); break;
-    case 4: eval<KERNEL, MEAN, 1, 0, 0, 0>(); break;
-    case 5: eval<KERNEL, MEAN, 1, 0, 1, 0>(); break;
-    case 6: eval<KERNEL, MEAN, 1, 1, 0, 0>(); break;
-    case 7: eval<KERNEL, MEAN, 1, 1, 1, 0>(); break;
-    case 8: eval<KERNEL, MEAN, 0, 0, 0, 1>(); break;
-    case 9: eval<KERNEL, MEAN, 0, 0, 1, 1>(); break;
-    case 10: eval<KERNEL, MEAN, 0, 1, 0, 1>(); break;
-    case 11: eval<KERNEL, MEAN, 0, 1, 1, 1>(); break;
-    case 12: eval<KERNEL, MEAN, 1, 0, 0, 1>(); break;
-    case 13: eval<KERNEL, MEAN, 1, 0, 1, 1>(); break;
-    case 14: eval<KERNEL, MEAN, 1, 1, 0, 1>(); break;
-    case 15: eval<KERNEL, MEAN, 1, 1, 1, 1>(); break;
+    case 0: eval<KERNEL, MEAN, CORRECT, 0, 0, 0, 0>(); break;
+    case 1: eval<KERNEL, MEAN, CORRECT, 0, 0, 1, 0>(); break;
+    case 2: eval<KERNEL, MEAN, CORRECT, 0, 1, 0, 0>(); break;
+    case 3: eval<KERNEL, MEAN, CORRECT, 0, 1, 1, 0>(); break;
+    case 4: eval<KERNEL, MEAN, CORRECT, 1, 0, 0, 0>(); break;
+    case 5: eval<KERNEL, MEAN, CORRECT, 1, 0, 1, 0>(); break;
+    case 6: eval<KERNEL, MEAN, CORRECT, 1, 1, 0, 0>(); break;
+    case 7: eval<KERNEL, MEAN, CORRECT, 1, 1, 1, 0>(); break;
+    case 8: eval<KERNEL, MEAN, CORRECT, 0, 0, 0, 1>(); break;
+    case 9: eval<KERNEL, MEAN, CORRECT, 0, 0, 1, 1>(); break;
+    case 10: eval<KERNEL, MEAN, CORRECT, 0, 1, 0, 1>(); break;
+    case 11: eval<KERNEL, MEAN, CORRECT, 0, 1, 1, 1>(); break;
+    case 12: eval<KERNEL, MEAN, CORRECT, 1, 0, 0, 1>(); break;
+    case 13: eval<KERNEL, MEAN, CORRECT, 1, 0, 1, 1>(); break;
+    case 14: eval<KERNEL, MEAN, CORRECT, 1, 1, 0, 1>(); break;
+    case 15: eval<KERNEL, MEAN, CORRECT, 1, 1, 1, 1>(); break;
   }
 }
 
@@ -151,11 +171,181 @@ void PairSPHClearyHeat::update_conductivity()
 }
 
 /* ----------------------------------------------------------------------
+   'correction consistent': the per-atom S and lambda of sph_consistent.h
+   for this step's positions. A pass gathers the second moments M of the
+   Brookshaw weights; atoms whose smallest eigenvalue of M / V is below
+   full_support (a free edge, where the missing first moment is the
+   boundary's adiabatic face) keep the plain term; the others get
+   S = V M^-1 and lambda from 'sweeps' Jacobi sweeps on the first moment.
+------------------------------------------------------------------------- */
+
+// smallest eigenvalue of M / V that counts as complete support: 1 on a
+// lattice away from edges, 0.5 on a free edge's first row, 0.9 on its
+// second, 0.74 to 1.07 inside particles jittered by 0.2 dx
+static constexpr double FULL_SUPPORT = 0.7;
+
+void PairSPHClearyHeat::update_correction()
+{
+  if (atom->nmax > nmax_correct) {
+    nmax_correct = atom->nmax;
+    memory->destroy(corr_s);
+    memory->destroy(corr_kinv);
+    memory->destroy(corr_lambda);
+    memory->destroy(corr_deficit);
+    memory->destroy(corr_coupling);
+    memory->destroy(corr_state);
+    memory->create(corr_s, nmax_correct, 6, "pair:corr_s");
+    memory->create(corr_kinv, nmax_correct, 6, "pair:corr_kinv");
+    memory->create(corr_lambda, nmax_correct, 3, "pair:corr_lambda");
+    memory->create(corr_deficit, nmax_correct, 3, "pair:corr_deficit");
+    memory->create(corr_coupling, nmax_correct, 3, "pair:corr_coupling");
+    memory->create(corr_state, nmax_correct, "pair:corr_state");
+  }
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const int dim = domain->dimension;
+  const int newton = force->newton_pair;
+  const double *const mass = atom->mass;
+  const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
+  const int *const type = atom->type;
+  const double *const rho = atom->rho;
+
+  // the second moments of the plain weights, kept in corr_s until S replaces them
+  for (int i = 0; i < nall; i++)
+    for (int k = 0; k < 6; k++) corr_s[i][k] = 0.0;
+  correction_pass(COMM_MOMENT);
+  comm_stage = COMM_MOMENT;
+  if (newton) SPHCompat::reverse_comm(comm, this);
+  for (int i = 0; i < nlocal; i++) {
+    const double volume = (rmass ? rmass[i] : mass[type[i]]) / rho[i];
+    double inverse[6];
+    const double smallest = sphc_sym_min_eigen(dim, corr_s[i]) / volume;
+    const int full = smallest >= FULL_SUPPORT && sphc_sym_inverse(dim, corr_s[i], inverse) > 0.0;
+    corr_state[i] = full ? 1.0 : 0.0;
+    for (int k = 0; k < 6; k++)
+      corr_s[i][k] = full ? volume * inverse[k] : ((k < 3) ? 1.0 : 0.0);
+  }
+  comm_stage = COMM_STATE;
+  SPHCompat::forward_comm(comm, this);
+
+  // the first moments s and K of the weights with S
+  for (int i = 0; i < nall; i++) {
+    for (int k = 0; k < 6; k++) corr_kinv[i][k] = 0.0;
+    for (int k = 0; k < 3; k++) corr_deficit[i][k] = corr_lambda[i][k] = 0.0;
+  }
+  correction_pass(COMM_FIRST);
+  comm_stage = COMM_FIRST;
+  if (newton) SPHCompat::reverse_comm(comm, this);
+  for (int i = 0; i < nlocal; i++) {
+    double inverse[6];
+    if (corr_state[i] == 0.0 || sphc_sym_inverse(dim, corr_kinv[i], inverse) <= 0.0) {
+      for (int k = 0; k < 6; k++) inverse[k] = 0.0;    // lambda stays 0
+    }
+    for (int k = 0; k < 6; k++) corr_kinv[i][k] = inverse[k];
+    const double none[3] = {0.0, 0.0, 0.0};
+    sphc_first_update(corr_kinv[i], none, corr_deficit[i], corr_lambda[i]);
+  }
+
+  // Jacobi sweeps: each with the neighbours' lambda of the sweep before
+  for (int sweep = 1; sweep < sweeps; sweep++) {
+    comm_stage = COMM_LAMBDA;
+    SPHCompat::forward_comm(comm, this);
+    for (int i = 0; i < nall; i++)
+      for (int k = 0; k < 3; k++) corr_coupling[i][k] = 0.0;
+    correction_pass(COMM_COUPLING);
+    comm_stage = COMM_COUPLING;
+    if (newton) SPHCompat::reverse_comm(comm, this);
+    for (int i = 0; i < nlocal; i++)
+      sphc_first_update(corr_kinv[i], corr_coupling[i], corr_deficit[i], corr_lambda[i]);
+  }
+  comm_stage = COMM_LAMBDA;
+  SPHCompat::forward_comm(comm, this);
+}
+
+void PairSPHClearyHeat::correction_pass(int stage)
+{
+  switch (kernel_kind) {
+    case SPHK_LUCY:
+      correction_loop<SPHK_LUCY>(stage);
+      break;
+    case SPHK_CUBIC:
+      correction_loop<SPHK_CUBIC>(stage);
+      break;
+    case SPHK_QUINTIC:
+      correction_loop<SPHK_QUINTIC>(stage);
+      break;
+    case SPHK_WENDLAND:
+      correction_loop<SPHK_WENDLAND>(stage);
+      break;
+  }
+}
+
+/* one pass over the pairs for update_correction(): both atoms of a pair
+   gather (the j side where it is this rank's to gather) */
+
+template <int KERNEL> void PairSPHClearyHeat::correction_loop(int stage)
+{
+  const double *const *const x = atom->x;
+  const double *const mass = atom->mass;
+  const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
+  const int *const type = atom->type;
+  const double *const rho = atom->rho;
+  const int nlocal = atom->nlocal;
+  const int newton = force->newton_pair;
+  const double cutsq_kernel = cut_global * cut_global;
+  const double inv_h = kernel.inv_h;
+  const double dw_scale = kernel.dw_scale;
+
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const double volume_i = (rmass ? rmass[i] : mass[type[i]]) / rho[i];
+    const int *const jlist = list->firstneigh[i];
+    const int jnum = list->numneigh[i];
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double r_ij[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+      const double rsq = r_ij[0] * r_ij[0] + r_ij[1] * r_ij[1] + r_ij[2] * r_ij[2];
+      if (rsq >= cutsq_kernel) continue;
+      const double r = sqrt(rsq);
+      const double volume_j = (rmass ? rmass[j] : mass[type[j]]) / rho[j];
+      double g = volume_i * volume_j *
+          sphc_brookshaw_weight(r, dw_scale * sphk_df(KERNEL, r * inv_h), eta2);
+      const int gather_j = newton || j < nlocal;
+      if (stage == COMM_MOMENT) {
+        sphc_moment_add(corr_s[i], g, r_ij);
+        if (gather_j) sphc_moment_add(corr_s[j], g, r_ij);
+        continue;
+      }
+      const double e_ij[3] = {r_ij[0] / r, r_ij[1] / r, r_ij[2] / r};
+      g *= sphc_second_factor(corr_s[i], corr_s[j], e_ij);
+      if (stage == COMM_FIRST) {
+        sphc_moment_add(corr_kinv[i], g, r_ij);
+        if (gather_j) sphc_moment_add(corr_kinv[j], g, r_ij);
+        for (int k = 0; k < 3; k++) {
+          corr_deficit[i][k] += g * r_ij[k];
+          if (gather_j) corr_deficit[j][k] -= g * r_ij[k];
+        }
+      } else {    // COMM_COUPLING: sum_b G r (x) r lambda_b
+        const double along_i = g * (r_ij[0] * corr_lambda[j][0] + r_ij[1] * corr_lambda[j][1] +
+                                    r_ij[2] * corr_lambda[j][2]);
+        const double along_j = g * (r_ij[0] * corr_lambda[i][0] + r_ij[1] * corr_lambda[i][1] +
+                                    r_ij[2] * corr_lambda[i][2]);
+        for (int k = 0; k < 3; k++) {
+          corr_coupling[i][k] += along_i * r_ij[k];
+          if (gather_j) corr_coupling[j][k] += along_j * r_ij[k];
+        }
+      }
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
    de_i/dt += m_j F_ij and de_j/dt -= m_i F_ij for every pair within the
    kernel support (sph_conduction.h); T = esph / cv
 ------------------------------------------------------------------------- */
 
-template <int KERNEL, int MEAN, int VARYING_K, int NEWTON_PAIR, int RMASS, int RELAX>
+template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RMASS,
+          int RELAX>
 void PairSPHClearyHeat::eval()
 {
   const double *const *const x = atom->x;
@@ -207,13 +397,21 @@ void PairSPHClearyHeat::eval()
           VARYING_K ? sphc_conductance(MEAN, k_i, conductivity[j]) : conductance_i[jtype];
       const double temp_ij = temp_i - esph[j] / cv[j];
       const double mass_j = RMASS ? rmass[j] : mass[jtype];
+      double weight = 1.0;
+      if (CORRECT) {
+        const double r_ij[3] = {delx, dely, delz};
+        const double e_ij[3] = {delx / r, dely / r, delz / r};
+        weight = sphc_second_factor(corr_s[i], corr_s[j], e_ij) *
+            sphc_first_factor(corr_lambda[i], corr_lambda[j], r_ij);
+      }
       // with RELAX, F_ij per unit temperature difference (<= 0, as dW/dr) is
       // needed too: one evaluation serves both
-      const double g_ij = RELAX ? sphc_cleary_pair(conductance_ij, 1.0, rho_i, rho[j], r, dwdr, eta2)
-                                : 0.0;
+      const double g_ij = RELAX
+          ? weight * sphc_cleary_pair(conductance_ij, 1.0, rho_i, rho[j], r, dwdr, eta2)
+          : 0.0;
       const double f_ij = RELAX
           ? g_ij * temp_ij
-          : sphc_cleary_pair(conductance_ij, temp_ij, rho_i, rho[j], r, dwdr, eta2);
+          : weight * sphc_cleary_pair(conductance_ij, temp_ij, rho_i, rho[j], r, dwdr, eta2);
       desph_i += mass_j * f_ij;
       if (NEWTON_PAIR || j < nlocal) desph[j] -= mass_i * f_ij;
       if (RELAX) {
@@ -246,7 +444,18 @@ double PairSPHClearyHeat::pair_term(int i, int j, double rsq, double temp_ij) co
   const double conductance_ij = conductivity_varies
       ? sphc_conductance(mean, conductivity[i], conductivity[j])
       : conductance[type[i]][type[j]];
-  return sphc_cleary_pair(conductance_ij, temp_ij, atom->rho[i], atom->rho[j], r, dwdr, eta2);
+  return pair_weight(i, j, r) *
+      sphc_cleary_pair(conductance_ij, temp_ij, atom->rho[i], atom->rho[j], r, dwdr, eta2);
+}
+
+double PairSPHClearyHeat::pair_weight(int i, int j, double r) const
+{
+  if (!correct) return 1.0;
+  const double *const *const x = atom->x;
+  const double r_ij[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+  const double e_ij[3] = {r_ij[0] / r, r_ij[1] / r, r_ij[2] / r};
+  return sphc_second_factor(corr_s[i], corr_s[j], e_ij) *
+      sphc_first_factor(corr_lambda[i], corr_lambda[j], r_ij);
 }
 
 void PairSPHClearyHeat::tally_flows()
@@ -305,6 +514,7 @@ void PairSPHClearyHeat::allocate()
 
 /* ----------------------------------------------------------------------
    pair_style sph/cleary/heat kernel cutoff [mean harmonic|arithmetic] [eta f]
+     [correction none|consistent] [sweeps n]
 ------------------------------------------------------------------------- */
 
 void PairSPHClearyHeat::settings(int narg, char **arg)
@@ -312,11 +522,14 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
   int iarg = parse_kernel(narg, arg);
   eta_factor = 0.1;
   mean = SPHC_HARMONIC;
+  correct = 0;
+  sweeps = 5;
   while (iarg < narg) {
-    if (strcmp(arg[iarg], "eta") != 0 && strcmp(arg[iarg], "mean") != 0)
+    if (strcmp(arg[iarg], "eta") != 0 && strcmp(arg[iarg], "mean") != 0 &&
+        strcmp(arg[iarg], "correction") != 0 && strcmp(arg[iarg], "sweeps") != 0)
       error->all(FLERR,
                  "Illegal pair_style sph/cleary/heat command: unknown keyword '{}' (after the "
-                 "kernel and cutoff: eta or mean)",
+                 "kernel and cutoff: eta, mean, correction or sweeps)",
                  arg[iarg]);
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal pair_style sph/cleary/heat command: missing value after '{}'",
@@ -325,6 +538,21 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
       eta_factor = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (eta_factor < 0.0)
         error->all(FLERR, "Illegal pair_style sph/cleary/heat command: eta {} must be >= 0",
+                   arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "correction") == 0) {
+      if (strcmp(arg[iarg + 1], "none") == 0)
+        correct = 0;
+      else if (strcmp(arg[iarg + 1], "consistent") == 0)
+        correct = 1;
+      else
+        error->all(FLERR,
+                   "Illegal pair_style sph/cleary/heat command: unknown correction '{}' "
+                   "(none or consistent)",
+                   arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "sweeps") == 0) {
+      sweeps = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (sweeps < 1)
+        error->all(FLERR, "Illegal pair_style sph/cleary/heat command: sweeps {} must be >= 1",
                    arg[iarg + 1]);
     } else if (strcmp(arg[iarg], "mean") == 0) {
       if (strcmp(arg[iarg + 1], "harmonic") == 0)
@@ -392,6 +620,8 @@ void PairSPHClearyHeat::write_restart_settings(FILE *fp)
   fwrite(&mean, sizeof(int), 1, fp);
   fwrite(&cut_global, sizeof(double), 1, fp);
   fwrite(&eta_factor, sizeof(double), 1, fp);
+  fwrite(&correct, sizeof(int), 1, fp);
+  fwrite(&sweeps, sizeof(int), 1, fp);
 }
 
 void PairSPHClearyHeat::read_restart_settings(FILE *fp)
@@ -401,18 +631,22 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &mean, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &eta_factor, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &correct, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &sweeps, sizeof(int), 1, fp, nullptr, error);
   }
   MPI_Bcast(&kernel_kind, 1, MPI_INT, 0, world);
   MPI_Bcast(&mean, 1, MPI_INT, 0, world);
   MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&eta_factor, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&correct, 1, MPI_INT, 0, world);
+  MPI_Bcast(&sweeps, 1, MPI_INT, 0, world);
 }
 
 /* ---------------------------------------------------------------------- */
 
 double PairSPHClearyHeat::memory_usage()
 {
-  return Pair::memory_usage() + (double) (nmax + nmax_relax) * sizeof(double);
+  return Pair::memory_usage() + (double) (nmax + nmax_relax + 22 * nmax_correct) * sizeof(double);
 }
 
 /* ----------------------------------------------------------------------
@@ -428,18 +662,79 @@ void *PairSPHClearyHeat::extract(const char *name, int &dim)
     dim = 1;
     return (void *) &relax_rate;
   }
+  // per atom, after compute(): 1 where 'correction consistent' corrects the
+  // atom's pair terms, 0 where it keeps the plain term (incomplete support);
+  // nullptr without the correction
+  if (strcmp(name, "correction_state") == 0) {
+    dim = 1;
+    return (void *) &corr_state;
+  }
   return PairSPHKernel::extract(name, dim);
+}
+
+int PairSPHClearyHeat::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/,
+                                         int * /*pbc*/)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int i = send[k];
+    if (comm_stage == COMM_STATE) {
+      for (int c = 0; c < 6; c++) buf[m++] = corr_s[i][c];
+      buf[m++] = corr_state[i];
+    } else {    // COMM_LAMBDA
+      for (int c = 0; c < 3; c++) buf[m++] = corr_lambda[i][c];
+    }
+  }
+  return m;
+}
+
+void PairSPHClearyHeat::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    if (comm_stage == COMM_STATE) {
+      for (int c = 0; c < 6; c++) corr_s[i][c] = buf[m++];
+      corr_state[i] = buf[m++];
+    } else {
+      for (int c = 0; c < 3; c++) corr_lambda[i][c] = buf[m++];
+    }
+  }
 }
 
 int PairSPHClearyHeat::pack_reverse_comm(int n, int first, double *buf)
 {
-  for (int k = 0; k < n; k++) buf[k] = relax_rate[first + k];
-  return n;
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    if (comm_stage == COMM_RELAX) {
+      buf[m++] = relax_rate[i];
+    } else if (comm_stage == COMM_MOMENT) {
+      for (int c = 0; c < 6; c++) buf[m++] = corr_s[i][c];
+    } else if (comm_stage == COMM_FIRST) {
+      for (int c = 0; c < 6; c++) buf[m++] = corr_kinv[i][c];
+      for (int c = 0; c < 3; c++) buf[m++] = corr_deficit[i][c];
+    } else {    // COMM_COUPLING
+      for (int c = 0; c < 3; c++) buf[m++] = corr_coupling[i][c];
+    }
+  }
+  return m;
 }
 
 void PairSPHClearyHeat::unpack_reverse_comm(int n, int *list, double *buf)
 {
-  for (int k = 0; k < n; k++) relax_rate[list[k]] += buf[k];
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int i = list[k];
+    if (comm_stage == COMM_RELAX) {
+      relax_rate[i] += buf[m++];
+    } else if (comm_stage == COMM_MOMENT) {
+      for (int c = 0; c < 6; c++) corr_s[i][c] += buf[m++];
+    } else if (comm_stage == COMM_FIRST) {
+      for (int c = 0; c < 6; c++) corr_kinv[i][c] += buf[m++];
+      for (int c = 0; c < 3; c++) corr_deficit[i][c] += buf[m++];
+    } else {
+      for (int c = 0; c < 3; c++) corr_coupling[i][c] += buf[m++];
+    }
+  }
 }
 
 /* ----------------------------------------------------------------------

@@ -31,6 +31,8 @@ class PairSPHClearyHeat : public PairSPHKernel {
   void read_restart_settings(FILE *) override;
   double memory_usage() override;
   void *extract(const char *, int &) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
 
@@ -47,6 +49,9 @@ class PairSPHClearyHeat : public PairSPHKernel {
   // takes m_i F_ij from de_j/dt. For the styles that change a few pairs
   // after compute() (fix sph/inlet/temperature), with this style's list.
   double pair_term(int i, int j, double rsq, double temp_ij) const;
+  // the consistency factor w_ij of sph_consistent.h that pair_term() and
+  // compute() apply (1 without 'correction consistent')
+  double pair_weight(int i, int j, double r) const;
   // dW/dr of this style's kernel at distance r (for the styles that take
   // gradients with the same kernel)
   double kernel_dwdr(double r) const { return sphk_dwdr(&kernel, r); }
@@ -76,11 +81,28 @@ class PairSPHClearyHeat : public PairSPHKernel {
   };
   std::vector<HeatFlow> flows;
 
+  // 'correction consistent' (sph_consistent.h): per atom (owned and ghost)
+  // the second-moment normaliser S (6), the first-moment vector lambda (3)
+  // and whether the atom is corrected (1) or keeps the plain term (0,
+  // incomplete support); work arrays for the Jacobi sweeps
+  int correct;
+  int sweeps;
+  int nmax_correct;
+  double **corr_s, **corr_kinv, **corr_lambda, **corr_deficit, **corr_coupling;
+  double *corr_state;
+  enum { COMM_RELAX, COMM_MOMENT, COMM_FIRST, COMM_STATE, COMM_LAMBDA, COMM_COUPLING };
+  int comm_stage;
+  void update_correction();
+  void correction_pass(int stage);
+  template <int KERNEL> void correction_loop(int stage);
+
   void allocate() override;
   void update_conductivity();
   template <int KERNEL> void eval_kernel();
   template <int KERNEL, int MEAN> void eval_mean();
-  template <int KERNEL, int MEAN, int VARYING_K, int NEWTON_PAIR, int RMASS, int RELAX>
+  template <int KERNEL, int MEAN, int CORRECT> void eval_flags();
+  template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RMASS,
+            int RELAX>
   void eval();
   void tally_flows();
   std::string diagnose(int) override;
