@@ -37,7 +37,7 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     conductance(nullptr), conductivity(nullptr), nmax(0), relax_wanted(0), relax_rate(nullptr),
     nmax_relax(0), correct(0), sweeps(5), nmax_correct(0), corr_s(nullptr), corr_kinv(nullptr),
     corr_lambda(nullptr), corr_deficit(nullptr), corr_coupling(nullptr), corr_state(nullptr),
-    comm_stage(COMM_RELAX)
+    comm_stage(COMM_RELAX), corr_x(nullptr), corr_rho(nullptr), corr_valid(0)
 {
   comm_forward = 7;    // S and the state of the correction
   comm_reverse = 9;    // the moments of the correction; relax_rate, when wanted
@@ -56,6 +56,8 @@ PairSPHClearyHeat::~PairSPHClearyHeat()
   memory->destroy(corr_deficit);
   memory->destroy(corr_coupling);
   memory->destroy(corr_state);
+  memory->destroy(corr_x);
+  memory->destroy(corr_rho);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -65,7 +67,7 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   if (conductivity_varies) update_conductivity();
   if (update->setupflag) check_neighbours();
-  if (correct) update_correction();
+  if (correct && !correction_current()) update_correction();
   if (relax_wanted) {
     if (atom->nmax > nmax_relax) {
       nmax_relax = atom->nmax;
@@ -184,6 +186,19 @@ void PairSPHClearyHeat::update_conductivity()
 // second, 0.74 to 1.07 inside particles jittered by 0.2 dx
 static constexpr double FULL_SUPPORT = 0.7;
 
+int PairSPHClearyHeat::correction_current()
+{
+  int moved = !corr_valid || neighbor->ago == 0 || atom->nmax > nmax_correct;
+  const double *const *const x = atom->x;
+  const double *const rho = atom->rho;
+  for (int i = 0; i < atom->nlocal && !moved; i++)
+    moved = x[i][0] != corr_x[i][0] || x[i][1] != corr_x[i][1] || x[i][2] != corr_x[i][2] ||
+        rho[i] != corr_rho[i];
+  int any = 0;
+  MPI_Allreduce(&moved, &any, 1, MPI_INT, MPI_MAX, world);
+  return !any;
+}
+
 void PairSPHClearyHeat::update_correction()
 {
   if (atom->nmax > nmax_correct) {
@@ -194,12 +209,16 @@ void PairSPHClearyHeat::update_correction()
     memory->destroy(corr_deficit);
     memory->destroy(corr_coupling);
     memory->destroy(corr_state);
+    memory->destroy(corr_x);
+    memory->destroy(corr_rho);
     memory->create(corr_s, nmax_correct, 6, "pair:corr_s");
     memory->create(corr_kinv, nmax_correct, 6, "pair:corr_kinv");
     memory->create(corr_lambda, nmax_correct, 3, "pair:corr_lambda");
     memory->create(corr_deficit, nmax_correct, 3, "pair:corr_deficit");
     memory->create(corr_coupling, nmax_correct, 3, "pair:corr_coupling");
     memory->create(corr_state, nmax_correct, "pair:corr_state");
+    memory->create(corr_x, nmax_correct, 3, "pair:corr_x");
+    memory->create(corr_rho, nmax_correct, "pair:corr_rho");
   }
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
@@ -209,11 +228,37 @@ void PairSPHClearyHeat::update_correction()
   const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
   const int *const type = atom->type;
   const double *const rho = atom->rho;
+  for (int i = 0; i < nlocal; i++) {
+    for (int k = 0; k < 3; k++) corr_x[i][k] = atom->x[i][k];
+    corr_rho[i] = rho[i];
+  }
+  corr_valid = 1;
 
-  // the second moments of the plain weights, kept in corr_s until S replaces them
+  switch (kernel_kind) {
+    case SPHK_LUCY:
+      gather_correction_pairs<SPHK_LUCY>();
+      break;
+    case SPHK_CUBIC:
+      gather_correction_pairs<SPHK_CUBIC>();
+      break;
+    case SPHK_QUINTIC:
+      gather_correction_pairs<SPHK_QUINTIC>();
+      break;
+    case SPHK_WENDLAND:
+      gather_correction_pairs<SPHK_WENDLAND>();
+      break;
+  }
+  // each pair is gathered by both its atoms (the j side where it is this
+  // rank's to gather, the rest by reverse communication)
+  auto gather_j = [&](int j) { return newton || j < nlocal; };
+
+  // the second moments M of the plain weights, kept in corr_s until S replaces them
   for (int i = 0; i < nall; i++)
     for (int k = 0; k < 6; k++) corr_s[i][k] = 0.0;
-  correction_pass(COMM_MOMENT);
+  for (const auto &p : correction_pairs) {
+    sphc_moment_add(corr_s[p.i], p.g, p.r);
+    if (gather_j(p.j)) sphc_moment_add(corr_s[p.j], p.g, p.r);
+  }
   comm_stage = COMM_MOMENT;
   if (newton) SPHCompat::reverse_comm(comm, this);
   for (int i = 0; i < nlocal; i++) {
@@ -222,27 +267,37 @@ void PairSPHClearyHeat::update_correction()
     const double smallest = sphc_sym_min_eigen(dim, corr_s[i]) / volume;
     const int full = smallest >= FULL_SUPPORT && sphc_sym_inverse(dim, corr_s[i], inverse) > 0.0;
     corr_state[i] = full ? 1.0 : 0.0;
-    for (int k = 0; k < 6; k++)
-      corr_s[i][k] = full ? volume * inverse[k] : ((k < 3) ? 1.0 : 0.0);
+    for (int k = 0; k < 6; k++) corr_s[i][k] = full ? volume * inverse[k] : ((k < 3) ? 1.0 : 0.0);
   }
   comm_stage = COMM_STATE;
   SPHCompat::forward_comm(comm, this);
 
-  // the first moments s and K of the weights with S
+  // the weights with S from here on; their first moments s and K
+  for (auto &p : correction_pairs) {
+    const double r = sqrt(p.r[0] * p.r[0] + p.r[1] * p.r[1] + p.r[2] * p.r[2]);
+    const double e[3] = {p.r[0] / r, p.r[1] / r, p.r[2] / r};
+    p.g *= sphc_second_factor(corr_s[p.i], corr_s[p.j], e);
+  }
   for (int i = 0; i < nall; i++) {
     for (int k = 0; k < 6; k++) corr_kinv[i][k] = 0.0;
     for (int k = 0; k < 3; k++) corr_deficit[i][k] = corr_lambda[i][k] = 0.0;
   }
-  correction_pass(COMM_FIRST);
+  for (const auto &p : correction_pairs) {
+    sphc_moment_add(corr_kinv[p.i], p.g, p.r);
+    for (int k = 0; k < 3; k++) corr_deficit[p.i][k] += p.g * p.r[k];
+    if (gather_j(p.j)) {
+      sphc_moment_add(corr_kinv[p.j], p.g, p.r);
+      for (int k = 0; k < 3; k++) corr_deficit[p.j][k] -= p.g * p.r[k];
+    }
+  }
   comm_stage = COMM_FIRST;
   if (newton) SPHCompat::reverse_comm(comm, this);
+  const double none[3] = {0.0, 0.0, 0.0};
   for (int i = 0; i < nlocal; i++) {
     double inverse[6];
-    if (corr_state[i] == 0.0 || sphc_sym_inverse(dim, corr_kinv[i], inverse) <= 0.0) {
+    if (corr_state[i] == 0.0 || sphc_sym_inverse(dim, corr_kinv[i], inverse) <= 0.0)
       for (int k = 0; k < 6; k++) inverse[k] = 0.0;    // lambda stays 0
-    }
     for (int k = 0; k < 6; k++) corr_kinv[i][k] = inverse[k];
-    const double none[3] = {0.0, 0.0, 0.0};
     sphc_first_update(corr_kinv[i], none, corr_deficit[i], corr_lambda[i]);
   }
 
@@ -252,7 +307,17 @@ void PairSPHClearyHeat::update_correction()
     SPHCompat::forward_comm(comm, this);
     for (int i = 0; i < nall; i++)
       for (int k = 0; k < 3; k++) corr_coupling[i][k] = 0.0;
-    correction_pass(COMM_COUPLING);
+    for (const auto &p : correction_pairs) {
+      const double *const lambda_i = corr_lambda[p.i];
+      const double *const lambda_j = corr_lambda[p.j];
+      const double along_j = p.g * (p.r[0] * lambda_j[0] + p.r[1] * lambda_j[1] + p.r[2] * lambda_j[2]);
+      for (int k = 0; k < 3; k++) corr_coupling[p.i][k] += along_j * p.r[k];
+      if (gather_j(p.j)) {
+        const double along_i =
+            p.g * (p.r[0] * lambda_i[0] + p.r[1] * lambda_i[1] + p.r[2] * lambda_i[2]);
+        for (int k = 0; k < 3; k++) corr_coupling[p.j][k] += along_i * p.r[k];
+      }
+    }
     comm_stage = COMM_COUPLING;
     if (newton) SPHCompat::reverse_comm(comm, this);
     for (int i = 0; i < nlocal; i++)
@@ -260,42 +325,24 @@ void PairSPHClearyHeat::update_correction()
   }
   comm_stage = COMM_LAMBDA;
   SPHCompat::forward_comm(comm, this);
+  for (auto &p : correction_pairs) p.weight = pair_weight(p.i, p.j, sqrt(p.r[0] * p.r[0] + p.r[1] * p.r[1] + p.r[2] * p.r[2]));
 }
 
-void PairSPHClearyHeat::correction_pass(int stage)
-{
-  switch (kernel_kind) {
-    case SPHK_LUCY:
-      correction_loop<SPHK_LUCY>(stage);
-      break;
-    case SPHK_CUBIC:
-      correction_loop<SPHK_CUBIC>(stage);
-      break;
-    case SPHK_QUINTIC:
-      correction_loop<SPHK_QUINTIC>(stage);
-      break;
-    case SPHK_WENDLAND:
-      correction_loop<SPHK_WENDLAND>(stage);
-      break;
-  }
-}
+/* the pairs of the neighbour list within the support, with their plain
+   weight g = V_i V_j (-r dW/dr) / (r^2 + eta^2) */
 
-/* one pass over the pairs for update_correction(): both atoms of a pair
-   gather (the j side where it is this rank's to gather) */
-
-template <int KERNEL> void PairSPHClearyHeat::correction_loop(int stage)
+template <int KERNEL> void PairSPHClearyHeat::gather_correction_pairs()
 {
   const double *const *const x = atom->x;
   const double *const mass = atom->mass;
   const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
   const int *const type = atom->type;
   const double *const rho = atom->rho;
-  const int nlocal = atom->nlocal;
-  const int newton = force->newton_pair;
   const double cutsq_kernel = cut_global * cut_global;
   const double inv_h = kernel.inv_h;
   const double dw_scale = kernel.dw_scale;
 
+  correction_pairs.clear();
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const double volume_i = (rmass ? rmass[i] : mass[type[i]]) / rho[i];
@@ -303,38 +350,19 @@ template <int KERNEL> void PairSPHClearyHeat::correction_loop(int stage)
     const int jnum = list->numneigh[i];
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      const double r_ij[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
-      const double rsq = r_ij[0] * r_ij[0] + r_ij[1] * r_ij[1] + r_ij[2] * r_ij[2];
+      CorrectionPair p;
+      p.r[0] = x[i][0] - x[j][0];
+      p.r[1] = x[i][1] - x[j][1];
+      p.r[2] = x[i][2] - x[j][2];
+      const double rsq = p.r[0] * p.r[0] + p.r[1] * p.r[1] + p.r[2] * p.r[2];
       if (rsq >= cutsq_kernel) continue;
       const double r = sqrt(rsq);
       const double volume_j = (rmass ? rmass[j] : mass[type[j]]) / rho[j];
-      double g = volume_i * volume_j *
+      p.i = i;
+      p.j = j;
+      p.g = volume_i * volume_j *
           sphc_brookshaw_weight(r, dw_scale * sphk_df(KERNEL, r * inv_h), eta2);
-      const int gather_j = newton || j < nlocal;
-      if (stage == COMM_MOMENT) {
-        sphc_moment_add(corr_s[i], g, r_ij);
-        if (gather_j) sphc_moment_add(corr_s[j], g, r_ij);
-        continue;
-      }
-      const double e_ij[3] = {r_ij[0] / r, r_ij[1] / r, r_ij[2] / r};
-      g *= sphc_second_factor(corr_s[i], corr_s[j], e_ij);
-      if (stage == COMM_FIRST) {
-        sphc_moment_add(corr_kinv[i], g, r_ij);
-        if (gather_j) sphc_moment_add(corr_kinv[j], g, r_ij);
-        for (int k = 0; k < 3; k++) {
-          corr_deficit[i][k] += g * r_ij[k];
-          if (gather_j) corr_deficit[j][k] -= g * r_ij[k];
-        }
-      } else {    // COMM_COUPLING: sum_b G r (x) r lambda_b
-        const double along_i = g * (r_ij[0] * corr_lambda[j][0] + r_ij[1] * corr_lambda[j][1] +
-                                    r_ij[2] * corr_lambda[j][2]);
-        const double along_j = g * (r_ij[0] * corr_lambda[i][0] + r_ij[1] * corr_lambda[i][1] +
-                                    r_ij[2] * corr_lambda[i][2]);
-        for (int k = 0; k < 3; k++) {
-          corr_coupling[i][k] += along_i * r_ij[k];
-          if (gather_j) corr_coupling[j][k] += along_j * r_ij[k];
-        }
-      }
+      correction_pairs.push_back(p);
     }
   }
 }
@@ -366,6 +394,7 @@ void PairSPHClearyHeat::eval()
   const int *const ilist = list->ilist;
   const int *const numneigh = list->numneigh;
   int **const firstneigh = list->firstneigh;
+  size_t npair = 0;
 
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
@@ -397,13 +426,8 @@ void PairSPHClearyHeat::eval()
           VARYING_K ? sphc_conductance(MEAN, k_i, conductivity[j]) : conductance_i[jtype];
       const double temp_ij = temp_i - esph[j] / cv[j];
       const double mass_j = RMASS ? rmass[j] : mass[jtype];
-      double weight = 1.0;
-      if (CORRECT) {
-        const double r_ij[3] = {delx, dely, delz};
-        const double e_ij[3] = {delx / r, dely / r, delz / r};
-        weight = sphc_second_factor(corr_s[i], corr_s[j], e_ij) *
-            sphc_first_factor(corr_lambda[i], corr_lambda[j], r_ij);
-      }
+      // the pairs within the support come in the order update_correction() stored them
+      const double weight = CORRECT ? correction_pairs[npair++].weight : 1.0;
       // with RELAX, F_ij per unit temperature difference (<= 0, as dW/dr) is
       // needed too: one evaluation serves both
       const double g_ij = RELAX
@@ -586,6 +610,7 @@ void PairSPHClearyHeat::init_style()
                  i);
   conductivity_varies = !materials->conductivity_constant();
   relax_wanted = 0;    // set again by the styles that want it, at their init
+  corr_valid = 0;      // the correction's factors are made anew at the first step
   SPHCheck::atom_state(lmp, "Pair style sph/cleary/heat", 0,
                        SPHCheck::RHO | SPHCheck::CV | SPHCheck::ESPH);
 
@@ -646,7 +671,8 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
 
 double PairSPHClearyHeat::memory_usage()
 {
-  return Pair::memory_usage() + (double) (nmax + nmax_relax + 22 * nmax_correct) * sizeof(double);
+  return Pair::memory_usage() + (double) (nmax + nmax_relax + 26 * nmax_correct) * sizeof(double) +
+      (double) correction_pairs.capacity() * sizeof(CorrectionPair);
 }
 
 /* ----------------------------------------------------------------------

@@ -92,9 +92,24 @@ class PairSPHClearyHeat : public PairSPHKernel {
   double *corr_state;
   enum { COMM_RELAX, COMM_MOMENT, COMM_FIRST, COMM_STATE, COMM_LAMBDA, COMM_COUPLING };
   int comm_stage;
+  // the pairs within the support, in the order of the neighbour list, with
+  // their plain weight g (sph_consistent.h) and r_ij, gathered by the first
+  // pass and read by the others, and their factor w_ij
+  struct CorrectionPair {
+    int i, j;
+    double g, r[3];
+    double weight;    // w_ij, which compute() applies
+  };
+  std::vector<CorrectionPair> correction_pairs;
+  // positions and densities of the owned atoms at the last update: the
+  // factors depend on nothing else, so particles that keep them (solids,
+  // fix sph/stationary) keep their factors without a new update
+  double **corr_x;
+  double *corr_rho;
+  int corr_valid;
+  int correction_current();
   void update_correction();
-  void correction_pass(int stage);
-  template <int KERNEL> void correction_loop(int stage);
+  template <int KERNEL> void gather_correction_pairs();
 
   void allocate() override;
   void update_conductivity();
