@@ -27,7 +27,11 @@
        lambda_a <- K_a^-1 (sum_b G_ab r_ab (x) r_ab lambda_b - s_a),
        G_ab = g_ab 1/2 e.(S_a + S_b).e,  s_a = sum_b G_ab r_ab,
        K_a = sum_b G_ab r_ab (x) r_ab,
-     which converge fast because the deficit s_a is local noise.
+     whose first sweeps remove most of the deficit, because s_a is local
+     noise (a factor of about 100 in 10 sweeps on 0.2 dx jitter); the
+     smooth remainder relaxes slowly, as in any Jacobi iteration, and
+     matters little (the Laplacian of a quadratic field on that jitter:
+     relative error 0.21 after 5 sweeps, 0.18 converged, 7 plain).
    Where a particle's kernel support is incomplete (a free edge) its first
    moment is not noise but the boundary's own face: there S = I and
    lambda = 0 (the plain term), and the boundary stays adiabatic.

@@ -1,0 +1,586 @@
+/* Unit tests of sph_consistent.h (the consistency correction of the
+   conduction pair term) with sph_kernels.h, in C99 (test_consistent_terms_cxx.cpp
+   compiles the same checks as C++).
+   usage: test_consistent_terms inverse | eigen | factors
+          test_consistent_terms linear | quadratic | conservation 2|3
+   The last three build a jittered lattice, correct its pair weights as
+   pair sph/cleary/heat does with 'correction consistent' and check the
+   corrected Laplacian against the plain one. */
+
+#include "sph_consistent.h"
+#include "sph_kernels.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int failures = 0;
+
+static void expect(int ok, const char *what, double got, double want)
+{
+  if (!ok) {
+    failures++;
+    printf("FAIL %s: got %.15g, expected %.15g\n", what, got, want);
+  }
+}
+
+/* deterministic pseudo-random numbers in [lo, hi): a 64-bit LCG (Knuth's
+   MMIX constants), its top 53 bits */
+static unsigned long long lcg_state = 1;
+static double uniform(double lo, double hi)
+{
+  lcg_state = lcg_state * 6364136223846793005ULL + 1442695040888963407ULL;
+  return lo + (hi - lo) * (double) (lcg_state >> 11) / 9007199254740992.0;
+}
+
+/* ------------------------------------------------ symmetric 3 x 3 matrices */
+
+static void sym_to_full(const double m[6], double full[3][3])
+{
+  full[0][0] = m[SPHC_XX];
+  full[1][1] = m[SPHC_YY];
+  full[2][2] = m[SPHC_ZZ];
+  full[0][1] = full[1][0] = m[SPHC_XY];
+  full[0][2] = full[2][0] = m[SPHC_XZ];
+  full[1][2] = full[2][1] = m[SPHC_YZ];
+}
+
+/* largest |(m inv - I)_ij| over the dim x dim block */
+static double inverse_residual(int dim, const double m[6], const double inv[6])
+{
+  double a[3][3], b[3][3], worst = 0.0;
+  sym_to_full(m, a);
+  sym_to_full(inv, b);
+  for (int i = 0; i < dim; i++)
+    for (int j = 0; j < dim; j++) {
+      double product = 0.0;
+      for (int k = 0; k < dim; k++) product += a[i][k] * b[k][j];
+      worst = fmax(worst, fabs(product - (i == j ? 1.0 : 0.0)));
+    }
+  return worst;
+}
+
+static int is_identity(const double m[6])
+{
+  return m[SPHC_XX] == 1.0 && m[SPHC_YY] == 1.0 && m[SPHC_ZZ] == 1.0 && m[SPHC_XY] == 0.0 &&
+      m[SPHC_XZ] == 0.0 && m[SPHC_YZ] == 0.0;
+}
+
+/* a random symmetric positive definite matrix B B^T + 0.1 I (dim 2: z row and column 0) */
+static void random_spd(int dim, double m[6])
+{
+  double b[3][3] = {{0.0}};
+  for (int i = 0; i < dim; i++)
+    for (int j = 0; j < dim; j++) b[i][j] = uniform(-1.0, 1.0);
+  for (int k = 0; k < 6; k++) m[k] = 0.0;
+  for (int j = 0; j < dim; j++) {
+    const double column[3] = {b[0][j], b[1][j], b[2][j]};
+    sphc_moment_add(m, 1.0, column);
+  }
+  m[SPHC_XX] += 0.1;
+  m[SPHC_YY] += 0.1;
+  if (dim == 3) m[SPHC_ZZ] += 0.1;
+}
+
+/* R diag(d) R^T, R a rotation by the angles a (about z), b (about y), c
+   (about x); in 2-D only a is used, and d[2] is ignored */
+static void rotated_diagonal(int dim, const double d[3], double a, double b, double c, double m[6])
+{
+  double rz[3][3] = {{cos(a), -sin(a), 0.0}, {sin(a), cos(a), 0.0}, {0.0, 0.0, 1.0}};
+  double ry[3][3] = {{cos(b), 0.0, sin(b)}, {0.0, 1.0, 0.0}, {-sin(b), 0.0, cos(b)}};
+  double rx[3][3] = {{1.0, 0.0, 0.0}, {0.0, cos(c), -sin(c)}, {0.0, sin(c), cos(c)}};
+  double ryx[3][3], r[3][3];
+  if (dim == 2) {
+    ry[0][0] = ry[2][2] = rx[1][1] = rx[2][2] = 1.0;
+    ry[0][2] = ry[2][0] = rx[1][2] = rx[2][1] = 0.0;
+  }
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++) {
+      ryx[i][j] = 0.0;
+      for (int k = 0; k < 3; k++) ryx[i][j] += ry[i][k] * rx[k][j];
+    }
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++) {
+      r[i][j] = 0.0;
+      for (int k = 0; k < 3; k++) r[i][j] += rz[i][k] * ryx[k][j];
+    }
+  /* sum_k d_k (R e_k) (x) (R e_k) */
+  for (int k = 0; k < 6; k++) m[k] = 0.0;
+  for (int k = 0; k < dim; k++) {
+    const double column[3] = {r[0][k], r[1][k], r[2][k]};
+    sphc_moment_add(m, d[k], column);
+  }
+}
+
+/* m inv = I for random positive definite m; a singular or indefinite m
+   gives <= 0 and inv = I; a multiple of I has condition estimate 1 */
+static void check_inverse(void)
+{
+  for (int dim = 2; dim <= 3; dim++) {
+    double worst = 0.0, estimate_min = 1.0, estimate_max = 0.0;
+    for (int n = 0; n < 1000; n++) {
+      double m[6], inv[6];
+      random_spd(dim, m);
+      const double estimate = sphc_sym_inverse(dim, m, inv);
+      worst = fmax(worst, inverse_residual(dim, m, inv));
+      estimate_min = fmin(estimate_min, estimate);
+      estimate_max = fmax(estimate_max, estimate);
+      if (dim == 2 && !(inv[SPHC_ZZ] == 1.0 && inv[SPHC_XZ] == 0.0 && inv[SPHC_YZ] == 0.0)) {
+        expect(0, "2-D inverse: zz = 1, xz = yz = 0", inv[SPHC_ZZ], 1.0);
+        return;
+      }
+    }
+    expect(worst < 1e-12, dim == 2 ? "2-D: m inv = I" : "3-D: m inv = I", worst, 0.0);
+    expect(estimate_min > 0.0 && estimate_max <= 1.0 + 1e-15,
+           "condition estimate in (0, 1] for a positive definite m", estimate_min, 1.0);
+  }
+
+  /* exactly singular (integer entries, so det is exactly 0) and indefinite */
+  const double singular_2d[6] = {1.0, 4.0, 0.0, 2.0, 0.0, 0.0}; /* (1, 2) (x) (1, 2) */
+  const double indefinite_2d[6] = {1.0, -1.0, 0.0, 0.0, 0.0, 0.0};
+  /* (1, 2, 3) (x) (1, 2, 3) + (0, 1, 1) (x) (0, 1, 1): rank 2 */
+  const double singular_3d[6] = {1.0, 5.0, 10.0, 2.0, 3.0, 7.0};
+  const double indefinite_3d[6] = {2.0, 1.0, -1.0, 0.0, 0.0, 0.0};
+  /* positive det and trace, but not positive definite: diag(-1, -1, 4) */
+  const double two_negative_3d[6] = {-1.0, -1.0, 4.0, 0.0, 0.0, 0.0};
+  const double *bad[5] = {singular_2d, indefinite_2d, singular_3d, indefinite_3d, two_negative_3d};
+  const int bad_dim[5] = {2, 2, 3, 3, 3};
+  const char *bad_what[5] = {"2-D singular", "2-D indefinite", "3-D singular", "3-D indefinite",
+                             "3-D diag(-1, -1, 4)"};
+  for (int n = 0; n < 5; n++) {
+    double inv[6] = {7.0, 7.0, 7.0, 7.0, 7.0, 7.0};
+    const double estimate = sphc_sym_inverse(bad_dim[n], bad[n], inv);
+    char what[128];
+    snprintf(what, sizeof(what), "%s: estimate <= 0", bad_what[n]);
+    expect(estimate <= 0.0, what, estimate, 0.0);
+    snprintf(what, sizeof(what), "%s: inverse left as I", bad_what[n]);
+    expect(is_identity(inv), what, inv[SPHC_XY], 0.0);
+  }
+
+  /* a multiple of I: estimate 1, inverse I / 2.5 */
+  for (int dim = 2; dim <= 3; dim++) {
+    const double m[6] = {2.5, 2.5, dim == 3 ? 2.5 : 0.0, 0.0, 0.0, 0.0};
+    double inv[6];
+    const double estimate = sphc_sym_inverse(dim, m, inv);
+    expect(fabs(estimate - 1.0) < 1e-15, "2.5 I: condition estimate 1", estimate, 1.0);
+    expect(fabs(inv[SPHC_XX] - 0.4) < 1e-15 && fabs(inv[SPHC_YY] - 0.4) < 1e-15,
+           "2.5 I: inverse 0.4 I", inv[SPHC_XX], 0.4);
+  }
+}
+
+/* the smallest eigenvalue against matrices built from known ones */
+static void check_eigen(void)
+{
+  struct {
+    int dim;
+    double d[3], a, b, c, want, tolerance;
+    const char *what;
+  } cases[] = {
+      {2, {4.0, 1.0, 0.0}, 0.0, 0.0, 0.0, 1.0, 1e-12, "2-D diag(4, 1)"},
+      {2, {3.0, 3.0, 0.0}, 0.0, 0.0, 0.0, 3.0, 1e-12, "2-D 3 I"},
+      {2, {1.0, 3.0, 0.0}, 0.3, 0.0, 0.0, 1.0, 1e-12, "2-D diag(1, 3) rotated by 0.3"},
+      {2, {-2.0, 0.5, 0.0}, 1.1, 0.0, 0.0, -2.0, 1e-12, "2-D diag(-2, 0.5) rotated by 1.1"},
+      {3, {3.0, 1.0, 2.0}, 0.0, 0.0, 0.0, 1.0, 1e-12, "3-D diag(3, 1, 2)"},
+      {3, {2.0, 2.0, 2.0}, 0.0, 0.0, 0.0, 2.0, 1e-12, "3-D 2 I"},
+      {3, {1.0, 2.0, 5.0}, 0.4, -0.7, 1.2, 1.0, 1e-12, "3-D R diag(1, 2, 5) R^T"},
+      {3, {5.0, 2.0, 1.0}, 2.0, 0.3, -0.5, 1.0, 1e-12, "3-D R diag(5, 2, 1) R^T"},
+      {3, {0.5, -3.0, 4.0}, -1.0, 0.9, 0.2, -3.0, 1e-12, "3-D R diag(0.5, -3, 4) R^T"},
+      {3, {1.0, 5.0, 5.0}, 0.4, -0.7, 1.2, 1.0, 1e-12, "3-D R diag(1, 5, 5) R^T"},
+      /* a double smallest eigenvalue is the root where acos has infinite
+         slope: round-off of 1e-16 in its argument moves the root by
+         sqrt(1e-16) relative (harmless next to the pair style's test
+         against 0.7, but not 1e-12) */
+      {3, {1.0, 1.0, 5.0}, 0.4, -0.7, 1.2, 1.0, 1e-7, "3-D R diag(1, 1, 5) R^T"},
+  };
+  for (size_t n = 0; n < sizeof(cases) / sizeof(cases[0]); n++) {
+    double m[6];
+    rotated_diagonal(cases[n].dim, cases[n].d, cases[n].a, cases[n].b, cases[n].c, m);
+    const double got = sphc_sym_min_eigen(cases[n].dim, m);
+    expect(fabs(got - cases[n].want) < cases[n].tolerance, cases[n].what, got, cases[n].want);
+  }
+  /* 2-D ignores the z row and column */
+  const double with_z[6] = {4.0, 1.0, -9.0, 0.0, 5.0, 5.0};
+  expect(sphc_sym_min_eigen(2, with_z) == 1.0, "2-D ignores z", sphc_sym_min_eigen(2, with_z), 1.0);
+}
+
+/* the pair factors: the same from either side of the pair (r and e change
+   sign), known values, and the floor of the first-moment factor at 0 */
+static void check_factors(void)
+{
+  for (int n = 0; n < 1000; n++) {
+    double s_a[6], s_b[6], lambda_a[3], lambda_b[3], r[3], e[3], minus_r[3], minus_e[3];
+    random_spd(3, s_a);
+    random_spd(3, s_b);
+    for (int k = 0; k < 3; k++) {
+      lambda_a[k] = uniform(-0.5, 0.5);
+      lambda_b[k] = uniform(-0.5, 0.5);
+      r[k] = uniform(-2.0, 2.0);
+    }
+    const double length = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    for (int k = 0; k < 3; k++) {
+      e[k] = r[k] / length;
+      minus_r[k] = -r[k];
+      minus_e[k] = -e[k];
+    }
+    const double second_ab = sphc_second_factor(s_a, s_b, e);
+    const double second_ba = sphc_second_factor(s_b, s_a, minus_e);
+    const double first_ab = sphc_first_factor(lambda_a, lambda_b, r);
+    const double first_ba = sphc_first_factor(lambda_b, lambda_a, minus_r);
+    if (fabs(second_ab - second_ba) > 1e-15 * fabs(second_ab)) {
+      expect(0, "second factor: a, b, e -> b, a, -e", second_ba, second_ab);
+      return;
+    }
+    if (fabs(first_ab - first_ba) > 1e-15 * fabs(first_ab)) {
+      expect(0, "first factor: a, b, r -> b, a, -r", first_ba, first_ab);
+      return;
+    }
+    if (first_ab < 0.0) {
+      expect(0, "first factor never below 0", first_ab, 0.0);
+      return;
+    }
+  }
+
+  /* known values: 1/2 (e.S_a.e + e.S_b.e), 1 + (lambda_a - lambda_b).r */
+  const double s_a[6] = {1.0, 2.0, 3.0, 0.5, 0.0, 0.0}, identity[6] = {1, 1, 1, 0, 0, 0};
+  const double along_y[3] = {0.0, 1.0, 0.0}, diagonal[3] = {sqrt(0.5), sqrt(0.5), 0.0};
+  double got = sphc_second_factor(s_a, identity, along_y);
+  expect(fabs(got - 1.5) < 1e-15, "second factor along y: (2 + 1) / 2", got, 1.5);
+  got = sphc_second_factor(s_a, identity, diagonal);
+  expect(fabs(got - 1.5) < 1e-15, "second factor along (1, 1, 0): ((1 + 2) / 2 + 0.5 + 1) / 2", got,
+         1.5);
+  const double lambda_a[3] = {0.1, 0.2, 0.0}, lambda_b[3] = {0.0, 0.0, 0.3}, r[3] = {1.0, 2.0, 3.0};
+  got = sphc_first_factor(lambda_a, lambda_b, r);
+  expect(fabs(got - 0.6) < 1e-15, "first factor: 1 + 0.1 + 0.4 - 0.9", got, 0.6);
+  /* (lambda_a - lambda_b).r = -2: floored at 0, from both sides */
+  const double zero[3] = {0.0, 0.0, 0.0}, against[3] = {-2.0 / 14.0, -4.0 / 14.0, -6.0 / 14.0};
+  const double minus_r[3] = {-1.0, -2.0, -3.0};
+  got = sphc_first_factor(against, zero, r);
+  expect(got == 0.0, "first factor floored at 0", got, 0.0);
+  got = sphc_first_factor(zero, against, minus_r);
+  expect(got == 0.0, "first factor floored at 0, from b's side", got, 0.0);
+}
+
+/* ----------------------------------------------- a jittered particle set */
+
+enum { MAX_ATOMS = 1800, MAX_NEIGH = 128 };
+/* spacing 1, jitter up to 0.2 per coordinate; cubic spline with h = 1.3 */
+static const double JITTER = 0.2, CUTOFF = 2.6;
+/* interior (corrected): at least EDGE lattice spacings from the set's
+   edge; deep (asserted on): at least DEEP spacings from the nearest plain
+   (non-interior) particles' lattice row */
+enum { EDGE = 3, DEEP = 2 };
+
+typedef struct {
+  int dim, side, n;
+  double x[MAX_ATOMS][3], volume[MAX_ATOMS];
+  int interior[MAX_ATOMS], deep[MAX_ATOMS];
+  int nneigh[MAX_ATOMS], neigh[MAX_ATOMS][MAX_NEIGH];
+  double r[MAX_ATOMS][MAX_NEIGH][3];  /* r_ab = x_a - x_b */
+  double g[MAX_ATOMS][MAX_NEIGH];     /* plain Brookshaw weight g_ab */
+  double big_g[MAX_ATOMS][MAX_NEIGH]; /* G_ab = g_ab * second factor */
+  double s[MAX_ATOMS][6], k_inv[MAX_ATOMS][6];
+  double deficit[MAX_ATOMS][3], lambda[MAX_ATOMS][3];
+} particle_set;
+
+static particle_set particles;
+
+/* a side^dim square (cubic) lattice of spacing 1 from the origin, each
+   coordinate jittered by up to JITTER; the same set on every call */
+static void make_jittered_lattice(particle_set *p, int dim, int side)
+{
+  lcg_state = 20250204ULL;
+  p->dim = dim;
+  p->side = side;
+  p->n = 0;
+  const int nz = (dim == 3) ? side : 1;
+  for (int i = 0; i < side; i++)
+    for (int j = 0; j < side; j++)
+      for (int l = 0; l < nz; l++) {
+        const int a = p->n++;
+        const int index[3] = {i, j, l};
+        int from_edge = side;
+        for (int k = 0; k < 3; k++) {
+          if (k < dim) {
+            p->x[a][k] = index[k] + uniform(-JITTER, JITTER);
+            from_edge = (index[k] < from_edge) ? index[k] : from_edge;
+            from_edge = (side - 1 - index[k] < from_edge) ? side - 1 - index[k] : from_edge;
+          } else
+            p->x[a][k] = 0.0;
+        }
+        p->volume[a] = 1.0;
+        p->interior[a] = from_edge >= EDGE;
+        p->deep[a] = from_edge >= EDGE - 1 + DEEP;
+      }
+}
+
+/* all pairs within the support, both ways, with g_ab = V_a V_b (-r dW/dr) / (r^2 + eta^2) */
+static int gather_pairs(particle_set *p)
+{
+  const sphk_kernel kernel = sphk_make(SPHK_CUBIC, p->dim, CUTOFF);
+  const double eta2 = 0.01 * kernel.h * kernel.h;
+  for (int a = 0; a < p->n; a++) {
+    p->nneigh[a] = 0;
+    for (int b = 0; b < p->n; b++) {
+      double r[3];
+      for (int k = 0; k < 3; k++) r[k] = p->x[a][k] - p->x[b][k];
+      const double length = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+      if (b == a || length >= CUTOFF) continue;
+      if (p->nneigh[a] == MAX_NEIGH) return 0;
+      const int k = p->nneigh[a]++;
+      p->neigh[a][k] = b;
+      for (int c = 0; c < 3; c++) p->r[a][k][c] = r[c];
+      p->g[a][k] = p->volume[a] * p->volume[b] *
+          sphc_brookshaw_weight(length, sphk_dwdr(&kernel, length), eta2);
+    }
+  }
+  return 1;
+}
+
+static void unit_vector(const double r[3], double e[3])
+{
+  const double length = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+  for (int k = 0; k < 3; k++) e[k] = r[k] / length;
+}
+
+/* S, G, the deficits s, K^-1 and lambda by Jacobi sweeps, as the pair
+   style's update_correction; non-interior particles keep S = I and
+   lambda = 0. Returns 0 if an interior moment is not invertible. */
+static int correct(particle_set *p, int sweeps)
+{
+  static double next[MAX_ATOMS][3];
+  const double identity[6] = {1.0, 1.0, 1.0, 0.0, 0.0, 0.0};
+  int ok = 1;
+  for (int a = 0; a < p->n; a++) {
+    double moment[6] = {0.0}, inverse[6];
+    for (int k = 0; k < p->nneigh[a]; k++) sphc_moment_add(moment, p->g[a][k], p->r[a][k]);
+    const int invertible = sphc_sym_inverse(p->dim, moment, inverse) > 0.0;
+    ok &= invertible || !p->interior[a];
+    for (int c = 0; c < 6; c++)
+      p->s[a][c] = p->interior[a] ? p->volume[a] * inverse[c] : identity[c];
+  }
+  for (int a = 0; a < p->n; a++) {
+    double k_moment[6] = {0.0};
+    for (int c = 0; c < 3; c++) p->deficit[a][c] = p->lambda[a][c] = 0.0;
+    for (int k = 0; k < p->nneigh[a]; k++) {
+      double e[3];
+      unit_vector(p->r[a][k], e);
+      p->big_g[a][k] = p->g[a][k] * sphc_second_factor(p->s[a], p->s[p->neigh[a][k]], e);
+      for (int c = 0; c < 3; c++) p->deficit[a][c] += p->big_g[a][k] * p->r[a][k][c];
+      sphc_moment_add(k_moment, p->big_g[a][k], p->r[a][k]);
+    }
+    const int invertible = sphc_sym_inverse(p->dim, k_moment, p->k_inv[a]) > 0.0;
+    ok &= invertible || !p->interior[a];
+    if (!p->interior[a])
+      for (int c = 0; c < 6; c++) p->k_inv[a][c] = 0.0;
+  }
+  /* each sweep with the neighbours' lambda of the sweep before */
+  for (int sweep = 0; sweep < sweeps; sweep++) {
+    for (int a = 0; a < p->n; a++) {
+      double coupling[3] = {0.0, 0.0, 0.0};
+      for (int k = 0; k < p->nneigh[a]; k++) {
+        const double *r = p->r[a][k], *lambda_b = p->lambda[p->neigh[a][k]];
+        const double along =
+            p->big_g[a][k] * (r[0] * lambda_b[0] + r[1] * lambda_b[1] + r[2] * lambda_b[2]);
+        for (int c = 0; c < 3; c++) coupling[c] += along * r[c];
+      }
+      sphc_first_update(p->k_inv[a], coupling, p->deficit[a], next[a]);
+    }
+    memcpy(p->lambda, next, sizeof(double) * 3 * p->n);
+  }
+  return ok;
+}
+
+/* w_ab of a's k-th neighbour b: 1 for the plain term */
+static double pair_factor(const particle_set *p, int a, int k, int corrected)
+{
+  if (!corrected) return 1.0;
+  const int b = p->neigh[a][k];
+  double e[3];
+  unit_vector(p->r[a][k], e);
+  return sphc_second_factor(p->s[a], p->s[b], e) *
+      sphc_first_factor(p->lambda[a], p->lambda[b], p->r[a][k]);
+}
+
+/* |sum_b g_ab w_ab r_ab| */
+static double first_moment(const particle_set *p, int a, int corrected)
+{
+  double m[3] = {0.0, 0.0, 0.0};
+  for (int k = 0; k < p->nneigh[a]; k++) {
+    const double gw = p->g[a][k] * pair_factor(p, a, k, corrected);
+    for (int c = 0; c < 3; c++) m[c] += gw * p->r[a][k][c];
+  }
+  return sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+}
+
+/* (2 / V_a) sum_b g_ab w_ab (T_b - T_a) */
+static double laplacian(const particle_set *p, int a, int corrected, const double *t)
+{
+  double sum = 0.0;
+  for (int k = 0; k < p->nneigh[a]; k++)
+    sum += p->g[a][k] * pair_factor(p, a, k, corrected) * (t[p->neigh[a][k]] - t[a]);
+  return 2.0 * sum / p->volume[a];
+}
+
+/* the test set of each dimension: 30 x 30 in 2-D, 12^3 in 3-D, corrected
+   with enough sweeps to converge. The first sweeps take out the deficit's
+   noise (a factor 100 in 10 sweeps), but the smooth part of lambda
+   relaxes slowly across the interior, as in any Jacobi iteration
+   (measured in 2-D, interior 24 across: first moment 2e-4 of the plain
+   after 200 sweeps, 1e-8 after 800, 4e-14 after 1600; 3-D, 6 across:
+   2e-15 after 200) */
+enum { SWEEPS = 1500 };
+
+static int build_corrected_set(particle_set *p, int dim)
+{
+  make_jittered_lattice(p, dim, dim == 2 ? 30 : 12);
+  if (!gather_pairs(p)) {
+    expect(0, "neighbours within MAX_NEIGH", MAX_NEIGH + 1, MAX_NEIGH);
+    return 0;
+  }
+  if (!correct(p, SWEEPS)) {
+    expect(0, "interior moments M and K invertible", 0.0, 1.0);
+    return 0;
+  }
+  return 1;
+}
+
+/* the first moment of the corrected weights vanishes (the Laplacian of a
+   linear field is 0), while the plain one's is the disorder's. The plain
+   reference is taken on the deep interior; the corrected one is held to it
+   on every interior particle, next to the plain ones too, since their
+   lambda = 0 enters the sweeps as any other neighbour's */
+static void check_linear(int dim)
+{
+  particle_set *p = &particles;
+  if (!build_corrected_set(p, dim)) return;
+  static double t[MAX_ATOMS];
+  for (int a = 0; a < p->n; a++) t[a] = 2.0 * p->x[a][0] - 3.0 * p->x[a][1] + p->x[a][2];
+  double plain = 0.0, corrected = 0.0, plain_lap = 0.0, corrected_lap = 0.0;
+  int interior = 0, deep = 0;
+  for (int a = 0; a < p->n; a++) {
+    if (!p->interior[a]) continue;
+    interior++;
+    corrected = fmax(corrected, first_moment(p, a, 1));
+    corrected_lap = fmax(corrected_lap, fabs(laplacian(p, a, 1, t)));
+    if (!p->deep[a]) continue;
+    deep++;
+    plain = fmax(plain, first_moment(p, a, 0));
+    plain_lap = fmax(plain_lap, fabs(laplacian(p, a, 0, t)));
+  }
+  printf("%d-D: largest |first moment| plain %.3e (%d deep), corrected %.3e (%d interior)\n", dim,
+         plain, deep, corrected, interior);
+  printf("%d-D: largest |Laplacian of a linear field| plain %.3e, corrected %.3e\n", dim, plain_lap,
+         corrected_lap);
+  /* measured: plain 0.26 in 2-D, 0.17 in 3-D (0 to round-off on a lattice) */
+  expect(plain > 0.1, "the plain first moment shows the disorder", plain, 0.1);
+  expect(corrected < 1e-8 * plain, "corrected first moment below 1e-8 of the plain", corrected,
+         1e-8 * plain);
+  expect(corrected_lap < 1e-8 * plain_lap,
+         "corrected Laplacian of a linear field below 1e-8 of the plain", corrected_lap,
+         1e-8 * plain_lap);
+}
+
+/* the Laplacian of T = x^2 + 0.5 y^2 + 0.3 x y (+ 0.25 z^2 - 0.4 x z in
+   3-D): not exact on a disordered set (only the first moment is; the
+   second is normalised per particle, then symmetrised), so the measured
+   bound with a margin */
+static void check_quadratic(int dim)
+{
+  particle_set *p = &particles;
+  if (!build_corrected_set(p, dim)) return;
+  static double t[MAX_ATOMS];
+  for (int a = 0; a < p->n; a++) {
+    const double x = p->x[a][0], y = p->x[a][1], z = p->x[a][2];
+    t[a] = x * x + 0.5 * y * y + 0.3 * x * y + 0.25 * z * z - 0.4 * x * z;
+  }
+  const double exact = (dim == 2) ? 3.0 : 3.5;
+  double plain = 0.0, corrected = 0.0;
+  for (int a = 0; a < p->n; a++) {
+    if (!p->deep[a]) continue;
+    plain = fmax(plain, fabs(laplacian(p, a, 0, t) - exact) / exact);
+    corrected = fmax(corrected, fabs(laplacian(p, a, 1, t) - exact) / exact);
+  }
+  printf("%d-D: largest relative error of the quadratic's Laplacian: plain %.3e, corrected %.3e\n",
+         dim, plain, corrected);
+  /* measured: 2-D plain 7.0, corrected 0.179; 3-D plain 0.90, corrected
+     0.098. The plain error is (2 / V) grad(T).(first moment), so it grows
+     with |grad T| (up to 60 here in 2-D, 20 in 3-D); the corrected one does
+     not depend on it */
+  const double bound = (dim == 2) ? 0.25 : 0.14;
+  expect(corrected < bound, "corrected Laplacian of a quadratic: relative error", corrected, bound);
+  expect(corrected < 0.2 * plain, "corrected error below 1/5 of the plain", corrected, 0.2 * plain);
+}
+
+/* w_ab = w_ba from either side of every pair, and the corrected pair term
+   exchanges energy: sum_a m_a de_a = 0 to round-off with two materials */
+static void check_conservation(int dim)
+{
+  particle_set *p = &particles;
+  if (!build_corrected_set(p, dim)) return;
+  static double t[MAX_ATOMS], mass[MAX_ATOMS], de[MAX_ATOMS];
+  for (int a = 0; a < p->n; a++) {
+    const int dense = p->x[a][0] > 0.5 * (p->side - 1);
+    const double rho = dense ? 3.0 : 1.0, cv = dense ? 0.5 : 2.0;
+    mass[a] = rho * p->volume[a];
+    t[a] = uniform(0.0, 100.0) / cv;
+  }
+  double asymmetry = 0.0;
+  for (int a = 0; a < p->n; a++)
+    for (int k = 0; k < p->nneigh[a]; k++) {
+      const int b = p->neigh[a][k];
+      int back = 0;
+      while (back < p->nneigh[b] && p->neigh[b][back] != a) back++;
+      if (back == p->nneigh[b]) {
+        expect(0, "every pair in both neighbour lists", a, b);
+        return;
+      }
+      const double w_ab = pair_factor(p, a, k, 1), w_ba = pair_factor(p, b, back, 1);
+      asymmetry = fmax(asymmetry, fabs(w_ab - w_ba) / fabs(w_ab));
+    }
+  expect(asymmetry < 1e-14, "w_ab = w_ba", asymmetry, 0.0);
+
+  /* de_a = (1 / m_a) sum_b 2 g_ab w_ab (T_b - T_a), the pair term with k = 1 */
+  double total = 0.0, magnitude = 0.0;
+  for (int a = 0; a < p->n; a++) {
+    double sum = 0.0;
+    for (int k = 0; k < p->nneigh[a]; k++) {
+      const double term = 2.0 * p->g[a][k] * pair_factor(p, a, k, 1) * (t[p->neigh[a][k]] - t[a]);
+      sum += term;
+      magnitude += fabs(term);
+    }
+    de[a] = sum / mass[a];
+  }
+  for (int a = 0; a < p->n; a++) total += mass[a] * de[a];
+  printf("%d-D: |w_ab - w_ba| / w_ab %.3e; sum m de %.3e of sum |terms| %.3e\n", dim, asymmetry,
+         total, magnitude);
+  expect(fabs(total) < 1e-12 * magnitude, "sum_a m_a de_a = 0", total, 0.0);
+}
+
+int main(int argc, char **argv)
+{
+  const char *usage = "inverse | eigen | factors | linear 2|3 | quadratic 2|3 | conservation 2|3";
+  const int dim = (argc == 3) ? atoi(argv[2]) : 0;
+  if (argc < 2 || argc > 3 || (argc == 3 && dim != 2 && dim != 3)) {
+    fprintf(stderr, "usage: %s %s\n", argv[0], usage);
+    return 2;
+  }
+  const char *check = argv[1];
+  if (strcmp(check, "inverse") == 0 && argc == 2)
+    check_inverse();
+  else if (strcmp(check, "eigen") == 0 && argc == 2)
+    check_eigen();
+  else if (strcmp(check, "factors") == 0 && argc == 2)
+    check_factors();
+  else if (strcmp(check, "linear") == 0 && argc == 3)
+    check_linear(dim);
+  else if (strcmp(check, "quadratic") == 0 && argc == 3)
+    check_quadratic(dim);
+  else if (strcmp(check, "conservation") == 0 && argc == 3)
+    check_conservation(dim);
+  else {
+    fprintf(stderr, "usage: %s %s\n", argv[0], usage);
+    return 2;
+  }
+  if (failures == 0) printf("PASS %s\n", check);
+  return failures ? 1 : 0;
+}
