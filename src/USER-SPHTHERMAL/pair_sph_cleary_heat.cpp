@@ -67,7 +67,10 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   if (conductivity_varies) update_conductivity();
   if (update->setupflag) check_neighbours();
-  if (correct && !correction_current()) update_correction();
+  if (correct && !correction_current()) {
+    update_correction();
+    if (update->setupflag) report_correction();
+  }
   if (relax_wanted) {
     if (atom->nmax > nmax_relax) {
       nmax_relax = atom->nmax;
@@ -326,6 +329,23 @@ void PairSPHClearyHeat::update_correction()
   comm_stage = COMM_LAMBDA;
   SPHCompat::forward_comm(comm, this);
   for (auto &p : correction_pairs) p.weight = pair_weight(p.i, p.j, sqrt(p.r[0] * p.r[0] + p.r[1] * p.r[1] + p.r[2] * p.r[2]));
+}
+
+/* at a run's setup: how many atoms keep the plain term */
+
+void PairSPHClearyHeat::report_correction()
+{
+  bigint plain = 0, all = atom->nlocal;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (corr_state[i] == 0.0) plain++;
+  bigint plain_all = 0, all_all = 0;
+  MPI_Allreduce(&plain, &plain_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  MPI_Allreduce(&all, &all_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (comm->me == 0)
+    utils::logmesg(lmp,
+                   "Pair style sph/cleary/heat: correction consistent on {} of {} atoms; {} keep "
+                   "the plain term (incomplete kernel support: free edges or too few neighbours)\n",
+                   all_all - plain_all, all_all, plain_all);
 }
 
 /* the pairs of the neighbour list within the support, with their plain

@@ -109,6 +109,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   int corr_valid;
   int correction_current();
   void update_correction();
+  void report_correction();
   template <int KERNEL> void gather_correction_pairs();
 
   void allocate() override;
