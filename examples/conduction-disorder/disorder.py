@@ -143,14 +143,14 @@ def report(path, png):
               ("ratio", "property ratio case")]
     fig, axes = plt.subplots(1, 3, figsize=(12, 3.8))
     for ax, (kind, xlabel) in zip(axes, groups):
-        for op, style in [("plain", "o-"), ("consistent", "s-")]:
+        for op, style in [("none", "o--"), ("consistent", "s-")]:
             sel = [r for r in rows if r["label"].startswith(kind + " ")
                    and r["label"].endswith(" " + op)]
             labels = [r["label"].split()[1] for r in sel]
             xs = np.arange(len(sel)) if kind == "ratio" else [float(v) for v in labels]
             for key, colour in [("t1", "C0"), ("t10", "C1")]:
                 ax.plot(xs, [r[key] for r in sel], style, color=colour,
-                        mfc="none" if op == "plain" else colour,
+                        mfc="none" if op == "none" else colour,
                         label=f"{op}, {'t1' if key == 't1' else '10 t1'}")
             if kind == "ratio":
                 ax.set_xticks(xs)
