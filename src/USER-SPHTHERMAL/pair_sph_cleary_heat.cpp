@@ -202,7 +202,7 @@ int PairSPHClearyHeat::correction_current()
   return !any;
 }
 
-void PairSPHClearyHeat::update_correction()
+void PairSPHClearyHeat::grow_correction()
 {
   if (atom->nmax > nmax_correct) {
     nmax_correct = atom->nmax;
@@ -223,6 +223,11 @@ void PairSPHClearyHeat::update_correction()
     memory->create(corr_x, nmax_correct, 3, "pair:corr_x");
     memory->create(corr_rho, nmax_correct, "pair:corr_rho");
   }
+}
+
+void PairSPHClearyHeat::update_correction()
+{
+  grow_correction();
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
   const int dim = domain->dimension;
@@ -631,6 +636,8 @@ void PairSPHClearyHeat::init_style()
   conductivity_varies = !materials->conductivity_constant();
   relax_wanted = 0;    // set again by the styles that want it, at their init
   corr_valid = 0;      // the correction's factors are made anew at the first step
+  // the per-atom state exists from here on, for compute sph/correction/atom
+  if (correct) grow_correction();
   SPHCheck::atom_state(lmp, "Pair style sph/cleary/heat", 0,
                        SPHCheck::RHO | SPHCheck::CV | SPHCheck::ESPH);
 
@@ -711,6 +718,7 @@ void *PairSPHClearyHeat::extract(const char *name, int &dim)
   // per atom, after compute(): 1 where 'correction consistent' corrects the
   // atom's pair terms, 0 where it keeps the plain term (incomplete support);
   // nullptr without the correction
+  if (strcmp(name, "correction") == 0) return (void *) &correct;
   if (strcmp(name, "correction_state") == 0) {
     dim = 1;
     return (void *) &corr_state;

@@ -108,6 +108,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   double *corr_rho;
   int corr_valid;
   int correction_current();
+  void grow_correction();
   void update_correction();
   void report_correction();
   template <int KERNEL> void gather_correction_pairs();

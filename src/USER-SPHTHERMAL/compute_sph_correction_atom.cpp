@@ -1,0 +1,74 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   compute sph/correction/atom: where pair sph/cleary/heat's consistency
+   correction applies (1) and where the atom keeps the plain term (0).
+------------------------------------------------------------------------- */
+
+#include "compute_sph_correction_atom.h"
+
+#include "atom.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "pair.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+
+/* ---------------------------------------------------------------------- */
+
+ComputeSPHCorrectionAtom::ComputeSPHCorrectionAtom(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), nmax(0), state(nullptr), pair_state(nullptr)
+{
+  if (narg != 3)
+    error->all(FLERR, "Illegal compute sph/correction/atom command: takes no arguments after "
+                      "the group");
+  peratom_flag = 1;
+  size_peratom_cols = 0;
+}
+
+ComputeSPHCorrectionAtom::~ComputeSPHCorrectionAtom()
+{
+  memory->destroy(state);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeSPHCorrectionAtom::init()
+{
+  Pair *pair = force->pair_match("^sph/cleary/heat", 0);
+  if (!pair) error->all(FLERR, "Compute sph/correction/atom requires pair style sph/cleary/heat");
+  int dim;
+  int *wanted = (int *) pair->extract("correction", dim);
+  if (!wanted || !*wanted)
+    error->all(FLERR,
+               "Compute sph/correction/atom: pair style sph/cleary/heat runs without "
+               "'correction consistent'");
+  pair_state = (double **) pair->extract("correction_state", dim);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeSPHCorrectionAtom::compute_peratom()
+{
+  invoked_peratom = update->ntimestep;
+  if (atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(state);
+    memory->create(state, nmax, "sph/correction/atom:state");
+    vector_atom = state;
+  }
+  // the pair's array exists from its init on and is filled at its first
+  // evaluation of a run, which comes before any compute of the run
+  const int *const mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++) state[i] = (mask[i] & groupbit) ? (*pair_state)[i] : 0.0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double ComputeSPHCorrectionAtom::memory_usage()
+{
+  return (double) nmax * sizeof(double);
+}
