@@ -23,8 +23,9 @@ ComputeSPHCorrectionAtom::ComputeSPHCorrectionAtom(LAMMPS *lmp, int narg, char *
     Compute(lmp, narg, arg), nmax(0), state(nullptr), pair_state(nullptr)
 {
   if (narg != 3)
-    error->all(FLERR, "Illegal compute sph/correction/atom command: takes no arguments after "
-                      "the group");
+    error->all(FLERR,
+               "Illegal compute sph/correction/atom command: takes no arguments after "
+               "the group");
   peratom_flag = 1;
   size_peratom_cols = 0;
 }

@@ -318,7 +318,8 @@ void PairSPHClearyHeat::update_correction()
     for (const auto &p : correction_pairs) {
       const double *const lambda_i = corr_lambda[p.i];
       const double *const lambda_j = corr_lambda[p.j];
-      const double along_j = p.g * (p.r[0] * lambda_j[0] + p.r[1] * lambda_j[1] + p.r[2] * lambda_j[2]);
+      const double along_j =
+          p.g * (p.r[0] * lambda_j[0] + p.r[1] * lambda_j[1] + p.r[2] * lambda_j[2]);
       for (int k = 0; k < 3; k++) corr_coupling[p.i][k] += along_j * p.r[k];
       if (gather_j(p.j)) {
         const double along_i =
@@ -333,7 +334,8 @@ void PairSPHClearyHeat::update_correction()
   }
   comm_stage = COMM_LAMBDA;
   SPHCompat::forward_comm(comm, this);
-  for (auto &p : correction_pairs) p.weight = pair_weight(p.i, p.j, sqrt(p.r[0] * p.r[0] + p.r[1] * p.r[1] + p.r[2] * p.r[2]));
+  for (auto &p : correction_pairs)
+    p.weight = pair_weight(p.i, p.j, sqrt(p.r[0] * p.r[0] + p.r[1] * p.r[1] + p.r[2] * p.r[2]));
 }
 
 /* at a run's setup: how many atoms keep the plain term */
