@@ -162,9 +162,8 @@ def main():
     factor = consistent_factors(s) if a.weights == "consistent" else 1.0
     coefficient = conductance(s, a.conductance) * factor * s.r * s.dw / \
         (s.rho[s.A] * s.rho[s.B] * (s.r**2 + s.eta2)) * s.m[s.B]
-    alphas = [1.0 / 1000.0, a.k2 / (1000.0 * a.rhocv2)]
-    t1 = disorder.times_of(a.k2, a.rhocv2, nx)
-    dt = 0.1 * dx * dx / max(alphas)
+    t1 = disorder.t1_of(layers, nx)
+    dt = 0.1 * dx * dx / max(disorder.diffusivities(layers))
     e, t, out = s.cv * s.T, 0.0, []
     for target in (t1, 10 * t1):
         steps = int(round((target - t) / dt))

@@ -14,11 +14,14 @@ import argparse
 import os
 import re
 import subprocess
+import sys
 import tempfile
 
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.join(here, "..", "..")
 example = os.path.join(root, "examples", "conduction-disorder")
+sys.path.insert(0, example)
+import disorder  # noqa: E402
 
 
 def pair_time(lmp, plugin, workdir, data, spacing, correction, move):
@@ -43,9 +46,9 @@ def main():
     lmp, plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
     with tempfile.TemporaryDirectory() as workdir:
         data = os.path.join(workdir, "slab.data")
-        spacing = subprocess.run(["/usr/bin/python3", os.path.join(example, "disorder.py"), "data",
-                                  data, "--jitter", "0.2"], check=True, capture_output=True,
-                                 text=True).stdout.strip()
+        points, spacing, height = disorder.positions(80, 20, 0.2, 0.0, 1)
+        disorder.write_data(data, points, height)
+        spacing = f"{spacing:.17g}"
         cases = [("none", 0, "plain"), ("consistent", 0, "consistent, fixed particles"),
                  ("consistent", 1, "consistent, every particle moving")]
         best = {}

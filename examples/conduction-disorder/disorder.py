@@ -88,15 +88,19 @@ def layers_for(k2, rhocv2):
             fv1d.Layer(0.5, 1.0, f"constant:{k2}", 1000.0 * rhocv2, 1.0, 1.0)]
 
 
-def times_of(k2, rhocv2, nx):
+def diffusivities(layers):
+    return [float(L.k(np.array(L.T0))) / (L.rho * L.cv) for L in layers]
+
+
+def t1_of(layers, nx):
+    """when 2 sqrt(alpha t) of the less diffusive material is 4 spacings"""
     dx = 1.0 / nx
-    alpha_min = min(1.0 / 1000.0, k2 / (1000.0 * rhocv2))
-    return 4.0 * dx * dx / alpha_min
+    return 4.0 * dx * dx / min(diffusivities(layers))
 
 
 def errors(a):
     layers = layers_for(a.k2, a.rhocv2)
-    t1 = times_of(a.k2, a.rhocv2, a.nx)
+    t1 = t1_of(layers, a.nx)
     energy = np.loadtxt(a.prefix + ".energy", ndmin=2)
     frames = [(t, c) for t, (step, c) in zip(energy[:, 0], read_frames(a.prefix + ".dump"))
               if step > 0]
@@ -104,9 +108,8 @@ def errors(a):
     picked = [min(frames, key=lambda f: abs(f[0] - t)) for t in wanted]
     if a.cells is None:
         # fv1d is explicit: its step follows the most diffusive material
-        ratio = max(L.k(np.array(0.0)) / (L.rho * L.cv) for L in layers) / \
-            min(L.k(np.array(0.0)) / (L.rho * L.cv) for L in layers)
-        a.cells = 1000 if ratio <= 10.0 else 200
+        alphas = diffusivities(layers)
+        a.cells = 1000 if max(alphas) / min(alphas) <= 10.0 else 200
     x_fv, T_fv = fv1d.solve(layers, 1.0, a.cells, [t for t, _ in picked])
     fv_error = 100.0 * fv1d.reference_error(layers, 1.0, a.cells, [t for t, _ in picked])
     errs = []

@@ -37,7 +37,8 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     conductance(nullptr), conductivity(nullptr), nmax(0), relax_wanted(0), relax_rate(nullptr),
     nmax_relax(0), correct(0), sweeps(5), nmax_correct(0), corr_s(nullptr), corr_kinv(nullptr),
     corr_lambda(nullptr), corr_deficit(nullptr), corr_coupling(nullptr), corr_state(nullptr),
-    comm_stage(COMM_RELAX), corr_x(nullptr), corr_rho(nullptr), corr_valid(0)
+    comm_stage(COMM_RELAX), corr_x(nullptr), corr_rho(nullptr), corr_valid(0),
+    refresh_correction(0)
 {
   comm_forward = 7;    // S and the state of the correction
   comm_reverse = 9;    // the moments of the correction; relax_rate, when wanted
@@ -67,10 +68,7 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   if (conductivity_varies) update_conductivity();
   if (update->setupflag) check_neighbours();
-  if (correct && !correction_current()) {
-    update_correction();
-    if (update->setupflag) report_correction();
-  }
+  refresh_correction = correct && !correction_current();
   if (relax_wanted) {
     if (atom->nmax > nmax_relax) {
       nmax_relax = atom->nmax;
@@ -96,6 +94,7 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
       break;
   }
   check_rates(atom->desph, "desph");
+  if (refresh_correction && update->setupflag) report_correction();
 
   if (!flows.empty()) tally_flows();
 
@@ -109,6 +108,7 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
 
 template <int KERNEL> void PairSPHClearyHeat::eval_kernel()
 {
+  if (refresh_correction) update_correction<KERNEL>();
   if (mean == SPHC_ARITHMETIC)
     eval_mean<KERNEL, SPHC_ARITHMETIC>();
   else
@@ -225,37 +225,20 @@ void PairSPHClearyHeat::grow_correction()
   }
 }
 
-void PairSPHClearyHeat::update_correction()
+template <int KERNEL> void PairSPHClearyHeat::update_correction()
 {
   grow_correction();
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
   const int dim = domain->dimension;
   const int newton = force->newton_pair;
-  const double *const mass = atom->mass;
-  const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
-  const int *const type = atom->type;
-  const double *const rho = atom->rho;
   for (int i = 0; i < nlocal; i++) {
     for (int k = 0; k < 3; k++) corr_x[i][k] = atom->x[i][k];
-    corr_rho[i] = rho[i];
+    corr_rho[i] = atom->rho[i];
   }
   corr_valid = 1;
 
-  switch (kernel_kind) {
-    case SPHK_LUCY:
-      gather_correction_pairs<SPHK_LUCY>();
-      break;
-    case SPHK_CUBIC:
-      gather_correction_pairs<SPHK_CUBIC>();
-      break;
-    case SPHK_QUINTIC:
-      gather_correction_pairs<SPHK_QUINTIC>();
-      break;
-    case SPHK_WENDLAND:
-      gather_correction_pairs<SPHK_WENDLAND>();
-      break;
-  }
+  gather_correction_pairs<KERNEL>();
   // each pair is gathered by both its atoms (the j side where it is this
   // rank's to gather, the rest by reverse communication)
   auto gather_j = [&](int j) { return newton || j < nlocal; };
@@ -270,7 +253,7 @@ void PairSPHClearyHeat::update_correction()
   comm_stage = COMM_MOMENT;
   if (newton) SPHCompat::reverse_comm(comm, this);
   for (int i = 0; i < nlocal; i++) {
-    const double volume = (rmass ? rmass[i] : mass[type[i]]) / rho[i];
+    const double volume = volume_of(i);
     double inverse[6];
     const double smallest = sphc_sym_min_eigen(dim, corr_s[i]) / volume;
     const int full = smallest >= FULL_SUPPORT && sphc_sym_inverse(dim, corr_s[i], inverse) > 0.0;
@@ -282,9 +265,9 @@ void PairSPHClearyHeat::update_correction()
 
   // the weights with S from here on; their first moments s and K
   for (auto &p : correction_pairs) {
-    const double r = sqrt(p.r[0] * p.r[0] + p.r[1] * p.r[1] + p.r[2] * p.r[2]);
-    const double e[3] = {p.r[0] / r, p.r[1] / r, p.r[2] / r};
-    p.g *= sphc_second_factor(corr_s[p.i], corr_s[p.j], e);
+    const double e[3] = {p.r[0] / p.distance, p.r[1] / p.distance, p.r[2] / p.distance};
+    p.weight = sphc_second_factor(corr_s[p.i], corr_s[p.j], e);
+    p.g *= p.weight;
   }
   for (int i = 0; i < nall; i++) {
     for (int k = 0; k < 6; k++) corr_kinv[i][k] = 0.0;
@@ -335,36 +318,37 @@ void PairSPHClearyHeat::update_correction()
   comm_stage = COMM_LAMBDA;
   SPHCompat::forward_comm(comm, this);
   for (auto &p : correction_pairs)
-    p.weight = pair_weight(p.i, p.j, sqrt(p.r[0] * p.r[0] + p.r[1] * p.r[1] + p.r[2] * p.r[2]));
+    p.weight *= sphc_first_factor(corr_lambda[p.i], corr_lambda[p.j], p.r);
 }
 
 /* at a run's setup: how many atoms keep the plain term */
 
 void PairSPHClearyHeat::report_correction()
 {
-  bigint plain = 0, all = atom->nlocal;
+  bigint plain = 0;
   for (int i = 0; i < atom->nlocal; i++)
     if (corr_state[i] == 0.0) plain++;
-  bigint plain_all = 0, all_all = 0;
+  bigint plain_all = 0;
   MPI_Allreduce(&plain, &plain_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  MPI_Allreduce(&all, &all_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (comm->me == 0)
     utils::logmesg(lmp,
                    "Pair style sph/cleary/heat: correction consistent on {} of {} atoms; {} keep "
                    "the plain term (incomplete kernel support: free edges or too few neighbours)\n",
-                   all_all - plain_all, all_all, plain_all);
+                   atom->natoms - plain_all, atom->natoms, plain_all);
 }
 
 /* the pairs of the neighbour list within the support, with their plain
    weight g = V_i V_j (-r dW/dr) / (r^2 + eta^2) */
 
+double PairSPHClearyHeat::volume_of(int i) const
+{
+  const double mass_i = (atom->rmass_flag && atom->rmass) ? atom->rmass[i] : atom->mass[atom->type[i]];
+  return mass_i / atom->rho[i];
+}
+
 template <int KERNEL> void PairSPHClearyHeat::gather_correction_pairs()
 {
   const double *const *const x = atom->x;
-  const double *const mass = atom->mass;
-  const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
-  const int *const type = atom->type;
-  const double *const rho = atom->rho;
   const double cutsq_kernel = cut_global * cut_global;
   const double inv_h = kernel.inv_h;
   const double dw_scale = kernel.dw_scale;
@@ -372,7 +356,7 @@ template <int KERNEL> void PairSPHClearyHeat::gather_correction_pairs()
   correction_pairs.clear();
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
-    const double volume_i = (rmass ? rmass[i] : mass[type[i]]) / rho[i];
+    const double volume_i = volume_of(i);
     const int *const jlist = list->firstneigh[i];
     const int jnum = list->numneigh[i];
     for (int jj = 0; jj < jnum; jj++) {
@@ -383,12 +367,11 @@ template <int KERNEL> void PairSPHClearyHeat::gather_correction_pairs()
       p.r[2] = x[i][2] - x[j][2];
       const double rsq = p.r[0] * p.r[0] + p.r[1] * p.r[1] + p.r[2] * p.r[2];
       if (rsq >= cutsq_kernel) continue;
-      const double r = sqrt(rsq);
-      const double volume_j = (rmass ? rmass[j] : mass[type[j]]) / rho[j];
       p.i = i;
       p.j = j;
-      p.g = volume_i * volume_j *
-          sphc_brookshaw_weight(r, dw_scale * sphk_df(KERNEL, r * inv_h), eta2);
+      p.distance = sqrt(rsq);
+      p.g = volume_i * volume_of(j) *
+          sphc_brookshaw_weight(p.distance, dw_scale * sphk_df(KERNEL, p.distance * inv_h), eta2);
       correction_pairs.push_back(p);
     }
   }
@@ -717,10 +700,11 @@ void *PairSPHClearyHeat::extract(const char *name, int &dim)
     dim = 1;
     return (void *) &relax_rate;
   }
-  // per atom, after compute(): 1 where 'correction consistent' corrects the
-  // atom's pair terms, 0 where it keeps the plain term (incomplete support);
-  // nullptr without the correction
+  // whether 'correction consistent' is on
   if (strcmp(name, "correction") == 0) return (void *) &correct;
+  // per atom, from init on with the correction (filled by compute()): 1 where
+  // it corrects the atom's pair terms, 0 where the atom keeps the plain term
+  // (incomplete support)
   if (strcmp(name, "correction_state") == 0) {
     dim = 1;
     return (void *) &corr_state;

@@ -49,9 +49,6 @@ class PairSPHClearyHeat : public PairSPHKernel {
   // takes m_i F_ij from de_j/dt. For the styles that change a few pairs
   // after compute() (fix sph/inlet/temperature), with this style's list.
   double pair_term(int i, int j, double rsq, double temp_ij) const;
-  // the consistency factor w_ij of sph_consistent.h that pair_term() and
-  // compute() apply (1 without 'correction consistent')
-  double pair_weight(int i, int j, double r) const;
   // dW/dr of this style's kernel at distance r (for the styles that take
   // gradients with the same kernel)
   double kernel_dwdr(double r) const { return sphk_dwdr(&kernel, r); }
@@ -97,7 +94,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   // pass and read by the others, and their factor w_ij
   struct CorrectionPair {
     int i, j;
-    double g, r[3];
+    double g, r[3], distance;
     double weight;    // w_ij, which compute() applies
   };
   std::vector<CorrectionPair> correction_pairs;
@@ -107,11 +104,16 @@ class PairSPHClearyHeat : public PairSPHKernel {
   double **corr_x;
   double *corr_rho;
   int corr_valid;
+  int refresh_correction;    // this step's compute() makes the factors anew
   int correction_current();
   void grow_correction();
-  void update_correction();
+  template <int KERNEL> void update_correction();
   void report_correction();
   template <int KERNEL> void gather_correction_pairs();
+  double volume_of(int i) const;    // m / rho
+  // the factor w_ij of sph_consistent.h between atoms i and j at distance r,
+  // for pair_term() (1 without 'correction consistent')
+  double pair_weight(int i, int j, double r) const;
 
   void allocate() override;
   void update_conductivity();
