@@ -56,7 +56,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   double support() const { return cut_global; }
 
  protected:
-  int mean;                   // SPHC_HARMONIC or SPHC_ARITHMETIC of sph_conduction.h
+  int mean;                   // SPHC_HARMONIC, SPHC_ARITHMETIC or SPHC_INTERFACE (sph_conduction.h)
   double eta2;                // eta^2, regularises r -> 0
   class FixSPHMaterials *materials;
   int conductivity_varies;    // 1 when some conductivity depends on T
@@ -87,29 +87,59 @@ class PairSPHClearyHeat : public PairSPHKernel {
   int nmax_correct;
   double **corr_s, **corr_kinv, **corr_lambda, **corr_deficit, **corr_coupling;
   double *corr_state;
-  enum { COMM_RELAX, COMM_MOMENT, COMM_FIRST, COMM_STATE, COMM_LAMBDA, COMM_COUPLING };
+  enum {
+    COMM_RELAX,
+    COMM_MOMENT,
+    COMM_FIRST,
+    COMM_STATE,
+    COMM_LAMBDA,
+    COMM_COUPLING,
+    COMM_IFACE_MOMENT,
+    COMM_IFACE_VECTOR,
+    COMM_IFACE_SMOOTH,
+    COMM_IFACE_NORMAL,
+    COMM_IFACE_MARGIN,
+    COMM_IFACE_DISTANCE,
+    COMM_IFACE_PLANE
+  };
   int comm_stage;
+  // 'mean interface': per type pair, 1 when the two types differ in
+  // conductivity law (the pair crosses an interface); per type, the
+  // conductivity when all are constant; per atom (owned and ghost) the
+  // distance from the interface (-1 where no atom of another material is
+  // within the support) and work arrays of its estimate
+  int **interface_types;
+  double *type_conductivity;
+  int nmax_interface;
+  int interface_wanted;    // for extract("interface")
+  double *iface_distance;
+  double **iface_moment, **iface_vector, **iface_normal, **iface_sum;
   // the pairs within the support, in the order of the neighbour list, with
-  // their plain weight g (sph_consistent.h) and r_ij, gathered by the first
-  // pass and read by the others, and their factor w_ij
-  struct CorrectionPair {
+  // their plain weight g (sph_consistent.h), r_ij, dW/dr and W, gathered by
+  // the first pass and read by the others, and their factor w_ij
+  struct SupportPair {
     int i, j;
-    double g, r[3], distance;
+    double g, r[3], distance, dwdr, w;
     double weight;    // w_ij, which compute() applies
   };
-  std::vector<CorrectionPair> correction_pairs;
+  std::vector<SupportPair> support_pairs;
   // positions and densities of the owned atoms at the last update: the
   // factors depend on nothing else, so particles that keep them (solids,
   // fix sph/stationary) keep their factors without a new update
+  int nmax_pairs;
   double **corr_x;
   double *corr_rho;
   int corr_valid;
-  int refresh_correction;    // this step's compute() makes the factors anew
-  int correction_current();
+  int refresh_pairs;    // this step's compute() makes the factors and distances anew
+  int pairs_current();
   void grow_correction();
   template <int KERNEL> void update_correction();
   void report_correction();
-  template <int KERNEL> void gather_correction_pairs();
+  void grow_interface();
+  template <int KERNEL> void update_interface();
+  // the conductance of the pair i j (owned or ghost) for pair_term()
+  double pair_conductance(int i, int j) const;
+  template <int KERNEL> void gather_support_pairs();
   double volume_of(int i) const;    // m / rho
   // the factor w_ij of sph_consistent.h between atoms i and j at distance r,
   // for pair_term() (1 without 'correction consistent')

@@ -29,9 +29,30 @@ static inline double sphc_arithmetic_conductance(double k_a, double k_b)
   return k_a + k_b;
 }
 
-enum sphc_mean { SPHC_HARMONIC = 0, SPHC_ARITHMETIC };
+/* The harmonic mean is the series conductance of a pair whose interface lies
+   halfway between the two particles. Where the particles tell where it lies
+   (d_a, d_b: the distances of a and b from the interface), the conductance
+   of the pair's two segments in series,
+     2 / (f_a / k_a + f_b / k_b),   f_a = d_a / (d_a + d_b), f_b = 1 - f_a,
+   makes the pair carry the flux of the kinked linear profile of a steady
+   interface exactly, wherever the interface cuts the pair (f_a = 1/2 gives
+   the harmonic mean). Without two positive distances: the harmonic mean. */
+static inline double sphc_interface_conductance(double k_a, double k_b, double d_a, double d_b)
+{
+  double resistance;
+  if (!(d_a > 0.0) || !(d_b > 0.0)) return sphc_harmonic_conductance(k_a, k_b);
+  if (!(k_a > 0.0) || !(k_b > 0.0)) return 0.0;
+  resistance = (d_a / k_a + d_b / k_b) / (d_a + d_b);
+  return 2.0 / resistance;
+}
 
-/* called with a compile-time constant mean (templated pair loops) the switch folds */
+/* SPHC_INTERFACE: the harmonic mean between atoms of one material, the
+   interface conductance above between two materials */
+enum sphc_mean { SPHC_HARMONIC = 0, SPHC_ARITHMETIC, SPHC_INTERFACE };
+
+/* called with a compile-time constant mean (templated pair loops) the
+   switch folds; SPHC_INTERFACE gives the harmonic mean (the distances are
+   the caller's) */
 static inline double sphc_conductance(int mean, double k_a, double k_b)
 {
   return (mean == SPHC_ARITHMETIC) ? sphc_arithmetic_conductance(k_a, k_b)

@@ -26,6 +26,20 @@ typedef struct {
   const double *table_p; /* table: property values */
 } sphm_law;
 
+/* 1 when the two laws give the same property at every temperature (the
+   same kind, coefficients and table): the atoms are one material for the
+   property */
+static inline int sphm_law_same(const sphm_law *a, const sphm_law *b)
+{
+  int n;
+  if (a->kind != b->kind || a->c[0] != b->c[0] || a->c[1] != b->c[1] || a->c[2] != b->c[2] ||
+      a->ntable != b->ntable)
+    return 0;
+  for (n = 0; n < a->ntable; n++)
+    if (a->table_t[n] != b->table_t[n] || a->table_p[n] != b->table_p[n]) return 0;
+  return 1;
+}
+
 static inline const char *sphm_law_name(int kind)
 {
   static const char *const names[SPHM_NLAWS] = {"constant", "linear", "exponential", "table"};
