@@ -1,26 +1,31 @@
 #!/bin/sh
 # Stress tests of pair sph/cleary/heat on particles that are not a lattice
-# (README.md): the two-material slab, 80 x 20, with correction none and
-# consistent, against disorder, lattice angle and property ratio; writes
-# results.jsonl, prints the table and writes disorder.png.
-#   ./run.sh          all cases (about 10 minutes)
+# (README.md): the two-material slab, 80 x 20, plain, with correction
+# consistent, and with correction consistent and mean interface, against
+# disorder, lattice angle and property ratio; writes results.jsonl, prints
+# the table and writes disorder.png.
+#   ./run.sh          all cases (about 15 minutes)
 #   ./run.sh quick    jitter 0.2, k ratio 3, rho cv ratio 0.5 (the CI test, 10 seconds)
 # Environment: LMP, PLUGIN, NP (MPI ranks), OUT (default ./out), PYTHON.
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../common.sh"
 
-# case label, correction, data options, k2, rhocv2, [nx]
+# case label, operator (none, consistent or consistent+interface), data
+# options, k2, rhocv2, [nx]
 slab() {
-  label=$1 correction=$2 options=$3 k2=$4 rhocv2=$5 nx=${6:-80}
-  name=$(echo "$label-$correction" | tr " =,/" "____")
+  label=$1 operator=$2 options=$3 k2=$4 rhocv2=$5 nx=${6:-80}
+  correction=${operator%+interface}
+  mean=harmonic
+  [ "$correction" = "$operator" ] || mean=interface
+  name=$(echo "$label-$operator" | tr " =,/+" "_____")
   spacing=$("$PYTHON" "$here/disorder.py" data "$name.data" --nx "$nx" --ny $((nx / 4)) $options)
   $run "$LMP" -in "$here/in.disorder" -var plugin "$PLUGIN" -var data "$name.data" \
     -var spacing "$spacing" -var nx "$nx" -var k2 "$k2" -var rhocv2 "$rhocv2" \
-    -var correction "$correction" -var out "$name" -log "log.$name" > /dev/null
+    -var correction "$correction" -var mean "$mean" -var out "$name" -log "log.$name" > /dev/null
   shift 6
   "$PYTHON" "$here/disorder.py" errors "$name" --k2 "$k2" --rhocv2 "$rhocv2" --nx "$nx" \
-    --label "$label $correction" "$@"
+    --label "$label $operator" "$@"
 }
 
 if [ "${1:-}" = quick ]; then
@@ -31,18 +36,18 @@ if [ "${1:-}" = quick ]; then
 fi
 
 rm -f results.jsonl
-for correction in none consistent; do
+for operator in none consistent consistent+interface; do
   for jitter in 0 0.05 0.1 0.2 0.3; do
-    slab "jitter $jitter" $correction "--jitter $jitter" 3 0.5 80 --results results.jsonl
+    slab "jitter $jitter" $operator "--jitter $jitter" 3 0.5 80 --results results.jsonl
   done
   for angle in 8.5 20.2 36.9 45.0; do
-    slab "angle $angle" $correction "--angle $angle" 3 0.5 80 --results results.jsonl
+    slab "angle $angle" $operator "--angle $angle" 3 0.5 80 --results results.jsonl
   done
   # jittered by 0.2 dx: k ratio, rho cv ratio (steel/water: 0.613/14.9, 997*4179/(7900*477))
   for ratio in "3 0.5" "10 1" "100 1" "1000 1" "1 1000" "1000 1000" "0.04114 1.1057"; do
     set -- $ratio
-    slab "ratio k=$1,rhocv=$2" $correction "--jitter 0.2" $1 $2 80 --results results.jsonl
+    slab "ratio k=$1,rhocv=$2" $operator "--jitter 0.2" $1 $2 80 --results results.jsonl
   done
-  slab "steel/water lattice" $correction "" 0.04114 1.1057 80 --results results.jsonl
+  slab "steel/water lattice" $operator "" 0.04114 1.1057 80 --results results.jsonl
 done
 "$PYTHON" "$here/disorder.py" report results.jsonl disorder.png
