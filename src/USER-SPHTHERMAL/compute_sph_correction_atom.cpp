@@ -3,7 +3,9 @@
    This software is distributed under the GNU General Public License.
 
    compute sph/correction/atom: where pair sph/cleary/heat's consistency
-   correction applies (1) and where the atom keeps the plain term (0).
+   correction applies (1) and where the atom keeps the plain term (0); with
+   'interface', the distance from the interface that its 'mean interface'
+   estimates (-1 where none is within the kernel support).
 ------------------------------------------------------------------------- */
 
 #include "compute_sph_correction_atom.h"
@@ -15,17 +17,22 @@
 #include "pair.h"
 #include "update.h"
 
+#include <cstring>
+
 using namespace LAMMPS_NS;
 
 /* ---------------------------------------------------------------------- */
 
 ComputeSPHCorrectionAtom::ComputeSPHCorrectionAtom(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), nmax(0), state(nullptr), pair_state(nullptr)
+    Compute(lmp, narg, arg), nmax(0), state(nullptr), pair_state(nullptr), interface(0)
 {
-  if (narg != 3)
+  if (narg == 4 && strcmp(arg[3], "interface") == 0)
+    interface = 1;
+  else if (narg != 3)
     error->all(FLERR,
-               "Illegal compute sph/correction/atom command: takes no arguments after "
-               "the group");
+               "Illegal compute sph/correction/atom command: after the group only 'interface' "
+               "(got '{}')",
+               (narg > 3 && strcmp(arg[3], "interface") == 0) ? arg[4] : arg[3]);
   peratom_flag = 1;
   size_peratom_cols = 0;
 }
@@ -42,12 +49,11 @@ void ComputeSPHCorrectionAtom::init()
   Pair *pair = force->pair_match("^sph/cleary/heat", 0);
   if (!pair) error->all(FLERR, "Compute sph/correction/atom requires pair style sph/cleary/heat");
   int dim;
-  int *wanted = (int *) pair->extract("correction", dim);
+  int *wanted = (int *) pair->extract(interface ? "interface" : "correction", dim);
   if (!wanted || !*wanted)
-    error->all(FLERR,
-               "Compute sph/correction/atom: pair style sph/cleary/heat runs without "
-               "'correction consistent'");
-  pair_state = (double **) pair->extract("correction_state", dim);
+    error->all(FLERR, "Compute sph/correction/atom: pair style sph/cleary/heat runs without '{}'",
+               interface ? "mean interface" : "correction consistent");
+  pair_state = (double **) pair->extract(interface ? "interface_distance" : "correction_state", dim);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -64,7 +70,9 @@ void ComputeSPHCorrectionAtom::compute_peratom()
   // the pair's array exists from its init on and is filled at its first
   // evaluation of a run, which comes before any compute of the run
   const int *const mask = atom->mask;
-  for (int i = 0; i < atom->nlocal; i++) state[i] = (mask[i] & groupbit) ? (*pair_state)[i] : 0.0;
+  const double outside = interface ? -1.0 : 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    state[i] = (mask[i] & groupbit) ? (*pair_state)[i] : outside;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -18,7 +18,9 @@ namespace LAMMPS_NS {
 
 // Per atom: 1 where pair sph/cleary/heat's 'correction consistent' corrects
 // the atom's pair terms, 0 where the atom keeps the plain term (incomplete
-// kernel support), as of the pair's last evaluation.
+// kernel support), as of the pair's last evaluation; with 'interface' the
+// atom's distance from the interface of 'mean interface' (-1: none within
+// the kernel support).
 class ComputeSPHCorrectionAtom : public Compute {
  public:
   ComputeSPHCorrectionAtom(class LAMMPS *, int, char **);
@@ -31,6 +33,7 @@ class ComputeSPHCorrectionAtom : public Compute {
   int nmax;
   double *state;
   double **pair_state;    // the pair's per-atom array (extract "correction_state")
+  int interface;          // 1: the pair's "interface_distance" instead
 };
 
 }    // namespace LAMMPS_NS

@@ -39,7 +39,7 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     nmax_relax(0), correct(0), sweeps(5), nmax_correct(0), corr_s(nullptr), corr_kinv(nullptr),
     corr_lambda(nullptr), corr_deficit(nullptr), corr_coupling(nullptr), corr_state(nullptr),
     comm_stage(COMM_RELAX), interface_types(nullptr), type_conductivity(nullptr),
-    nmax_interface(0), iface_distance(nullptr), iface_moment(nullptr), iface_vector(nullptr),
+    nmax_interface(0), interface_wanted(0), iface_distance(nullptr), iface_moment(nullptr), iface_vector(nullptr),
     iface_normal(nullptr), iface_sum(nullptr), nmax_pairs(0), corr_x(nullptr), corr_rho(nullptr), corr_valid(0),
     refresh_pairs(0)
 {
@@ -488,10 +488,23 @@ template <int KERNEL> void PairSPHClearyHeat::update_interface()
   SPHCompat::forward_comm(comm, this);
 }
 
-/* at a run's setup: how many atoms keep the plain term */
+/* at a run's setup: how many atoms are near an interface, and how many
+   keep the plain term */
 
 void PairSPHClearyHeat::report_correction()
 {
+  if (mean == SPHC_INTERFACE) {
+    bigint near = 0, near_all = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if (iface_distance[i] != NO_INTERFACE) near++;
+    MPI_Allreduce(&near, &near_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    if (comm->me == 0)
+      utils::logmesg(lmp,
+                     "Pair style sph/cleary/heat: mean interface: {} atoms have an atom of "
+                     "another conductivity within the kernel support\n",
+                     near_all);
+  }
+  if (!correct) return;
   bigint plain = 0;
   for (int i = 0; i < atom->nlocal; i++)
     if (corr_state[i] == 0.0) plain++;

@@ -1,5 +1,5 @@
 /* Unit tests of sph_conduction.h with sph_kernels.h, in C99.
-   usage: test_conduction_terms symmetry | limits | conservation */
+   usage: test_conduction_terms symmetry | limits | conservation | interface */
 
 #include "sph_conduction.h"
 #include "sph_kernels.h"
@@ -115,10 +115,53 @@ static void check_conservation(void)
          "T relaxes to the heat-capacity-weighted mean", 0.5 * (tmax + tmin), tmean);
 }
 
+/* sphc_interface_conductance: the pair carries the flux of a kinked linear
+   profile exactly wherever the interface cuts it, is symmetric, reduces to
+   the harmonic mean at the midpoint and without distances */
+static void check_interface(void)
+{
+  for (int n = 0; n < 1000; n++) {
+    double ka = uniform(0.01, 100.0), kb = uniform(0.01, 100.0);
+    double da = uniform(0.001, 2.0), db = uniform(0.001, 2.0), q = uniform(-5.0, 5.0);
+    /* steady flux q through both materials: T_a - T_b = q (d_a / k_a + d_b / k_b) */
+    double c = sphc_interface_conductance(ka, kb, da, db);
+    double carried = c * q * (da / ka + db / kb), exact = 2.0 * q * (da + db);
+    if (fabs(carried - exact) > 1e-12 * fabs(exact)) {
+      expect(0, "conductance x kinked profile's difference = 2 q (d_a + d_b)", carried, exact);
+      return;
+    }
+    if (c != sphc_interface_conductance(kb, ka, db, da)) {
+      expect(0, "symmetric in a and b", sphc_interface_conductance(kb, ka, db, da), c);
+      return;
+    }
+    if (!(c >= 2.0 * fmin(ka, kb) * (1 - 1e-15) && c <= 2.0 * fmax(ka, kb) * (1 + 1e-15))) {
+      expect(0, "between 2 min(k) and 2 max(k)", c, 2.0 * fmin(ka, kb));
+      return;
+    }
+    double h = sphc_harmonic_conductance(ka, kb);
+    if (fabs(sphc_interface_conductance(ka, kb, da, da) - h) > 1e-14 * h) {
+      expect(0, "interface at the midpoint: the harmonic mean", sphc_interface_conductance(ka, kb, da, da), h);
+      return;
+    }
+  }
+  /* the closer a is to the interface, the more of the pair lies in b */
+  expect(sphc_interface_conductance(1.0, 100.0, 0.1, 1.9) > sphc_interface_conductance(1.0, 100.0, 1.0, 1.0),
+         "a near the interface: b's (better) conductor dominates", sphc_interface_conductance(1.0, 100.0, 0.1, 1.9),
+         sphc_interface_conductance(1.0, 100.0, 1.0, 1.0));
+  expect(sphc_interface_conductance(1.0, 100.0, -1.0, 1.0) == sphc_harmonic_conductance(1.0, 100.0),
+         "no distance (-1): the harmonic mean", sphc_interface_conductance(1.0, 100.0, -1.0, 1.0),
+         sphc_harmonic_conductance(1.0, 100.0));
+  expect(sphc_interface_conductance(0.0, 100.0, 0.5, 1.0) == 0.0, "an adiabatic (k = 0) side conducts nothing",
+         sphc_interface_conductance(0.0, 100.0, 0.5, 1.0), 0.0);
+  expect(sphc_conductance(SPHC_INTERFACE, 1.0, 3.0) == sphc_harmonic_conductance(1.0, 3.0),
+         "SPHC_INTERFACE without distances: the harmonic mean", sphc_conductance(SPHC_INTERFACE, 1.0, 3.0),
+         sphc_harmonic_conductance(1.0, 3.0));
+}
+
 int main(int argc, char **argv)
 {
   if (argc != 2) {
-    fprintf(stderr, "usage: %s symmetry | limits | conservation\n", argv[0]);
+    fprintf(stderr, "usage: %s symmetry | limits | conservation | interface\n", argv[0]);
     return 2;
   }
   if (strcmp(argv[1], "symmetry") == 0)
@@ -127,6 +170,8 @@ int main(int argc, char **argv)
     check_limits();
   else if (strcmp(argv[1], "conservation") == 0)
     check_conservation();
+  else if (strcmp(argv[1], "interface") == 0)
+    check_interface();
   else {
     fprintf(stderr, "unknown check %s\n", argv[1]);
     return 2;

@@ -42,6 +42,31 @@ int main(void)
   expect_near(sphm_law_lookup("quadratic"), -1, 0.0, "unknown law");
   expect_near(sphm_law_ncoeffs(SPHM_LINEAR), 3, 0.0, "linear takes 3 coefficients");
 
+  /* one material for mean interface: same kind, coefficients and table */
+  {
+    const double t2[4] = {250.0, 300.0, 350.0, 400.0}, p2[4] = {0.0223, 0.0263, 0.0301, 0.0338};
+    sphm_law same = law, other = law;
+    same.table_t = t2; /* equal values, another copy */
+    expect_near(sphm_law_same(&law, &same), 1, 0.0, "a copy of a table is the same law");
+    other.table_p = p2;
+    expect_near(sphm_law_same(&law, &other), 0, 0.0, "one table value differs");
+    other = law;
+    other.ntable = 3;
+    expect_near(sphm_law_same(&law, &other), 0, 0.0, "a shorter table differs");
+    sphm_law a = {SPHM_CONSTANT, {2.5, 0.0, 0.0}, 0, 0, 0}, b = a;
+    expect_near(sphm_law_same(&a, &b), 1, 0.0, "equal constants are one material");
+    b.c[0] = 2.5000001;
+    expect_near(sphm_law_same(&a, &b), 0, 0.0, "different constants");
+    b = a;
+    b.kind = SPHM_LINEAR;
+    expect_near(sphm_law_same(&a, &b), 0, 0.0, "constant and linear with the same c0");
+    b = a;
+    b.c[1] = 0.1;
+    b.kind = SPHM_EXPONENTIAL;
+    a.kind = SPHM_EXPONENTIAL;
+    expect_near(sphm_law_same(&a, &b), 0, 0.0, "exponentials with different rates");
+  }
+
   if (failures == 0) printf("PASS material laws\n");
   return failures ? 1 : 0;
 }
