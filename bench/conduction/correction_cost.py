@@ -1,11 +1,13 @@
-"""Cost of pair sph/cleary/heat's 'correction consistent' against the plain term.
+"""Cost of pair sph/cleary/heat's 'correction consistent' and 'mean interface'
+against the plain term.
 
 The jittered (0.2 dx) two-material slab of examples/conduction-disorder,
 80 x 20 particles, 4800 steps, serial: LAMMPS's "Pair" time per particle
-and step for correction none, consistent with fixed particles (the factors
-are kept) and consistent with every particle moving every step (the
-factors are made anew), each the fastest of --repeat runs, all in this run
-of the script. Writes bench/conduction/correction.md.
+and step for the plain term, correction consistent, mean interface and
+both, with fixed particles (the factors and distances are kept) and with
+every particle moving every step (they are made anew), each the fastest of
+--repeat runs, all in this run of the script. Writes
+bench/conduction/correction.md.
 
   /usr/bin/python3 bench/conduction/correction_cost.py [--repeat 3] [--lmp L] [--plugin P]
 """
@@ -24,11 +26,12 @@ sys.path.insert(0, example)
 import disorder  # noqa: E402
 
 
-def pair_time(lmp, plugin, workdir, data, spacing, correction, move):
+def pair_time(lmp, plugin, workdir, data, spacing, correction, mean, move):
     log = os.path.join(workdir, "log.cost")
     subprocess.run([lmp, "-in", os.path.join(example, "in.disorder"), "-var", "plugin", plugin,
                     "-var", "data", data, "-var", "spacing", spacing, "-var", "correction",
-                    correction, "-var", "move", str(move), "-var", "out", "cost", "-log", log],
+                    correction, "-var", "mean", mean, "-var", "move", str(move),
+                    "-var", "out", "cost", "-log", log],
                    cwd=workdir, check=True, stdout=subprocess.DEVNULL)
     text = open(log).read()
     pair = float(re.search(r"^Pair\s+\|\s+(\S+)", text, re.M).group(1))
@@ -49,15 +52,20 @@ def main():
         points, spacing, height = disorder.positions(80, 20, 0.2, 0.0, 1)
         disorder.write_data(data, points, height)
         spacing = f"{spacing:.17g}"
-        cases = [("none", 0, "plain"), ("consistent", 0, "consistent, fixed particles"),
-                 ("consistent", 1, "consistent, every particle moving")]
+        cases = [("none", "harmonic", 0, "plain"),
+                 ("consistent", "harmonic", 0, "consistent, fixed particles"),
+                 ("none", "interface", 0, "interface, fixed particles"),
+                 ("consistent", "interface", 0, "consistent + interface, fixed particles"),
+                 ("consistent", "harmonic", 1, "consistent, every particle moving"),
+                 ("none", "interface", 1, "interface, every particle moving"),
+                 ("consistent", "interface", 1, "consistent + interface, every particle moving")]
         best = {}
         for _ in range(a.repeat):
-            for correction, move, label in cases:
-                t = pair_time(lmp, plugin, workdir, data, spacing, correction, move)
+            for correction, mean, move, label in cases:
+                t = pair_time(lmp, plugin, workdir, data, spacing, correction, mean, move)
                 best[label] = min(best.get(label, t), t)
     plain = best["plain"]
-    lines = ["# Cost of correction consistent (pair sph/cleary/heat)", "",
+    lines = ["# Cost of correction consistent and mean interface (pair sph/cleary/heat)", "",
              "Jittered two-material slab, 80 x 20, 4800 steps, serial, fastest of "
              f"{a.repeat} runs (`bench/conduction/correction_cost.py`).", "",
              "| operator | pair time per particle-step (ns) | against plain |", "|---|---|---|"]
