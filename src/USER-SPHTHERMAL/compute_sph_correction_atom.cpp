@@ -53,7 +53,8 @@ void ComputeSPHCorrectionAtom::init()
   if (!wanted || !*wanted)
     error->all(FLERR, "Compute sph/correction/atom: pair style sph/cleary/heat runs without '{}'",
                interface ? "mean interface" : "correction consistent");
-  pair_state = (double **) pair->extract(interface ? "interface_distance" : "correction_state", dim);
+  pair_state =
+      (double **) pair->extract(interface ? "interface_distance" : "correction_state", dim);
 }
 
 /* ---------------------------------------------------------------------- */

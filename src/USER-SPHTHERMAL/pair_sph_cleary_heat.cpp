@@ -38,10 +38,10 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     conductance(nullptr), conductivity(nullptr), nmax(0), relax_wanted(0), relax_rate(nullptr),
     nmax_relax(0), correct(0), sweeps(5), nmax_correct(0), corr_s(nullptr), corr_kinv(nullptr),
     corr_lambda(nullptr), corr_deficit(nullptr), corr_coupling(nullptr), corr_state(nullptr),
-    comm_stage(COMM_RELAX), interface_types(nullptr), type_conductivity(nullptr),
-    nmax_interface(0), interface_wanted(0), iface_distance(nullptr), iface_moment(nullptr), iface_vector(nullptr),
-    iface_normal(nullptr), iface_sum(nullptr), nmax_pairs(0), corr_x(nullptr), corr_rho(nullptr), corr_valid(0),
-    refresh_pairs(0)
+    comm_stage(COMM_RELAX), interface_types(nullptr), type_conductivity(nullptr), nmax_interface(0),
+    interface_wanted(0), iface_distance(nullptr), iface_moment(nullptr), iface_vector(nullptr),
+    iface_normal(nullptr), iface_sum(nullptr), iface_near(nullptr), nmax_pairs(0), corr_x(nullptr),
+    corr_rho(nullptr), corr_valid(0), refresh_pairs(0)
 {
   comm_forward = 7;    // S and the state of the correction; the interface's estimate
   comm_reverse = 9;    // the moments of the correction and the interface; relax_rate
@@ -69,6 +69,7 @@ PairSPHClearyHeat::~PairSPHClearyHeat()
   memory->destroy(iface_vector);
   memory->destroy(iface_normal);
   memory->destroy(iface_sum);
+  memory->destroy(iface_near);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -119,6 +120,7 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
 template <int KERNEL> void PairSPHClearyHeat::eval_kernel()
 {
   if (refresh_pairs) {
+    if (mean == SPHC_INTERFACE) mark_interface_atoms();
     gather_support_pairs<KERNEL>();
     if (correct) update_correction<KERNEL>();
     if (mean == SPHC_INTERFACE) update_interface<KERNEL>();
@@ -352,6 +354,8 @@ void PairSPHClearyHeat::grow_interface()
     memory->destroy(iface_vector);
     memory->destroy(iface_normal);
     memory->destroy(iface_sum);
+    memory->destroy(iface_near);
+    memory->create(iface_near, nmax_interface, "pair:iface_near");
     memory->create(iface_distance, nmax_interface, "pair:iface_distance");
     memory->create(iface_moment, nmax_interface, 6, "pair:iface_moment");
     memory->create(iface_vector, nmax_interface, 3, "pair:iface_vector");
@@ -362,6 +366,37 @@ void PairSPHClearyHeat::grow_interface()
 
 // no interface within the support
 static constexpr double NO_INTERFACE = -1.0;
+
+/* iface_near (owned and ghost): 1 for the atoms with an atom of another
+   conductivity law within the support, the only ones whose distance is
+   estimated and whose pairs the estimate reads */
+
+void PairSPHClearyHeat::mark_interface_atoms()
+{
+  grow_interface();
+  const double *const *const x = atom->x;
+  const int *const type = atom->type;
+  const int nall = atom->nlocal + atom->nghost;
+  const double cutsq_kernel = cut_global * cut_global;
+  for (int i = 0; i < nall; i++) iface_near[i] = 0.0;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *const interface_i = interface_types[type[i]];
+    const int *const jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (!interface_i[type[j]]) continue;
+      const double delx = x[i][0] - x[j][0];
+      const double dely = x[i][1] - x[j][1];
+      const double delz = x[i][2] - x[j][2];
+      if (delx * delx + dely * dely + delz * delz >= cutsq_kernel) continue;
+      iface_near[i] = iface_near[j] = 1.0;
+    }
+  }
+  comm_stage = COMM_IFACE_NEAR;
+  if (force->newton_pair) SPHCompat::reverse_comm(comm, this);
+  SPHCompat::forward_comm(comm, this);
+}
 
 template <int KERNEL> void PairSPHClearyHeat::update_interface()
 {
@@ -375,7 +410,10 @@ template <int KERNEL> void PairSPHClearyHeat::update_interface()
   const double closest = 1e-3 * kernel.h;
   auto gather_j = [&](int j) { return newton || j < nlocal; };
   auto crosses = [&](const SupportPair &p) { return interface_types[type[p.i]][type[p.j]]; };
-  auto dot = [](const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  const double *const near = iface_near;
+  auto dot = [](const double *a, const double *b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  };
 
   // 1. the kernel's second moments and the sum towards the other material
   for (int i = 0; i < nall; i++) {
@@ -385,8 +423,9 @@ template <int KERNEL> void PairSPHClearyHeat::update_interface()
   for (const auto &p : support_pairs) {
     const double volume_i = volume_of(p.i), volume_j = volume_of(p.j);
     const double radial = -p.dwdr / p.distance;
-    sphc_moment_add(iface_moment[p.i], volume_j * radial, p.r);
-    if (gather_j(p.j)) sphc_moment_add(iface_moment[p.j], volume_i * radial, p.r);
+    if (near[p.i] != 0.0) sphc_moment_add(iface_moment[p.i], volume_j * radial, p.r);
+    if (near[p.j] != 0.0 && gather_j(p.j))
+      sphc_moment_add(iface_moment[p.j], volume_i * radial, p.r);
     if (crosses(p)) {
       // V dW/dr e_ij points from i towards j
       for (int k = 0; k < 3; k++) iface_vector[p.i][k] -= volume_j * radial * p.r[k];
@@ -412,7 +451,9 @@ template <int KERNEL> void PairSPHClearyHeat::update_interface()
     iface_sum[i][3] = self;
   }
   for (const auto &p : support_pairs) {
-    if (crosses(p)) continue;
+    // an atom that is not near has no gradient, and the weights' sum does
+    // not change the normal's direction
+    if (crosses(p) || near[p.i] == 0.0 || near[p.j] == 0.0) continue;
     const double weight_j = p.w * volume_of(p.j);
     for (int k = 0; k < 3; k++) iface_sum[p.i][k] += weight_j * iface_vector[p.j][k];
     iface_sum[p.i][3] += weight_j;
@@ -426,7 +467,8 @@ template <int KERNEL> void PairSPHClearyHeat::update_interface()
   if (newton) SPHCompat::reverse_comm(comm, this);
   for (int i = 0; i < nlocal; i++) {
     const double length = sqrt(dot(iface_sum[i], iface_sum[i]));
-    for (int k = 0; k < 3; k++) iface_normal[i][k] = (length > 0.0) ? iface_sum[i][k] / length : 0.0;
+    for (int k = 0; k < 3; k++)
+      iface_normal[i][k] = (length > 0.0) ? iface_sum[i][k] / length : 0.0;
   }
   comm_stage = COMM_IFACE_NORMAL;
   SPHCompat::forward_comm(comm, this);
@@ -438,6 +480,7 @@ template <int KERNEL> void PairSPHClearyHeat::update_interface()
     iface_sum[i][1] = HUGE_VAL;
   }
   for (const auto &p : support_pairs) {
+    if (near[p.i] == 0.0 && near[p.j] == 0.0) continue;
     const double along_i = -dot(iface_normal[p.i], p.r);    // n_i . (x_j - x_i)
     const double along_j = dot(iface_normal[p.j], p.r);
     const int slot = crosses(p) ? 1 : 0;
@@ -467,7 +510,7 @@ template <int KERNEL> void PairSPHClearyHeat::update_interface()
     iface_sum[i][1] = self;
   }
   for (const auto &p : support_pairs) {
-    if (crosses(p)) continue;
+    if (crosses(p) || near[p.i] == 0.0 || near[p.j] == 0.0) continue;
     if (iface_distance[p.j] != NO_INTERFACE) {
       const double weight_j = p.w * volume_of(p.j);
       iface_sum[p.i][0] += weight_j * (iface_distance[p.j] - dot(iface_normal[p.i], p.r));
@@ -550,6 +593,9 @@ template <int KERNEL> void PairSPHClearyHeat::gather_support_pairs()
   }
   corr_valid = 1;
 
+  // without the correction only the interface needs pairs: those of the
+  // atoms near it
+  const double *const near = correct ? nullptr : iface_near;
   support_pairs.clear();
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
@@ -558,6 +604,7 @@ template <int KERNEL> void PairSPHClearyHeat::gather_support_pairs()
     const int jnum = list->numneigh[i];
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
+      if (near && near[i] == 0.0 && near[j] == 0.0) continue;
       SupportPair p;
       p.r[0] = x[i][0] - x[j][0];
       p.r[1] = x[i][1] - x[j][1];
@@ -912,7 +959,7 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
 double PairSPHClearyHeat::memory_usage()
 {
   return Pair::memory_usage() +
-      (double) (nmax + nmax_relax + 22 * nmax_correct + 16 * nmax_interface + 4 * nmax_pairs) *
+      (double) (nmax + nmax_relax + 22 * nmax_correct + 17 * nmax_interface + 4 * nmax_pairs) *
       sizeof(double) +
       (double) support_pairs.capacity() * sizeof(SupportPair);
 }
@@ -968,6 +1015,8 @@ int PairSPHClearyHeat::pack_forward_comm(int n, int *send, double *buf, int /*pb
       for (int c = 0; c < 3; c++) buf[m++] = iface_normal[i][c];
     } else if (comm_stage == COMM_IFACE_DISTANCE) {
       buf[m++] = iface_distance[i];
+    } else if (comm_stage == COMM_IFACE_NEAR) {
+      buf[m++] = iface_near[i];
     } else {    // COMM_LAMBDA
       for (int c = 0; c < 3; c++) buf[m++] = corr_lambda[i][c];
     }
@@ -988,6 +1037,8 @@ void PairSPHClearyHeat::unpack_forward_comm(int n, int first, double *buf)
       for (int c = 0; c < 3; c++) iface_normal[i][c] = buf[m++];
     } else if (comm_stage == COMM_IFACE_DISTANCE) {
       iface_distance[i] = buf[m++];
+    } else if (comm_stage == COMM_IFACE_NEAR) {
+      iface_near[i] = buf[m++];
     } else {
       for (int c = 0; c < 3; c++) corr_lambda[i][c] = buf[m++];
     }
@@ -1012,6 +1063,8 @@ int PairSPHClearyHeat::pack_reverse_comm(int n, int first, double *buf)
       for (int c = 0; c < 4; c++) buf[m++] = iface_sum[i][c];
     } else if (comm_stage == COMM_IFACE_MARGIN || comm_stage == COMM_IFACE_PLANE) {
       for (int c = 0; c < 2; c++) buf[m++] = iface_sum[i][c];
+    } else if (comm_stage == COMM_IFACE_NEAR) {
+      buf[m++] = iface_near[i];
     } else {    // COMM_COUPLING
       for (int c = 0; c < 3; c++) buf[m++] = corr_coupling[i][c];
     }
@@ -1042,6 +1095,8 @@ void PairSPHClearyHeat::unpack_reverse_comm(int n, int *list, double *buf)
       iface_sum[i][1] = std::min(iface_sum[i][1], buf[m++]);
     } else if (comm_stage == COMM_IFACE_PLANE) {
       for (int c = 0; c < 2; c++) iface_sum[i][c] += buf[m++];
+    } else if (comm_stage == COMM_IFACE_NEAR) {
+      iface_near[i] = std::max(iface_near[i], buf[m++]);
     } else {
       for (int c = 0; c < 3; c++) corr_coupling[i][c] += buf[m++];
     }

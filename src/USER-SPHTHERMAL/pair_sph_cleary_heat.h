@@ -56,7 +56,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   double support() const { return cut_global; }
 
  protected:
-  int mean;                   // SPHC_HARMONIC, SPHC_ARITHMETIC or SPHC_INTERFACE (sph_conduction.h)
+  int mean;                   // SPHC_HARMONIC, SPHC_ARITHMETIC or SPHC_INTERFACE
   double eta2;                // eta^2, regularises r -> 0
   class FixSPHMaterials *materials;
   int conductivity_varies;    // 1 when some conductivity depends on T
@@ -100,7 +100,8 @@ class PairSPHClearyHeat : public PairSPHKernel {
     COMM_IFACE_NORMAL,
     COMM_IFACE_MARGIN,
     COMM_IFACE_DISTANCE,
-    COMM_IFACE_PLANE
+    COMM_IFACE_PLANE,
+    COMM_IFACE_NEAR
   };
   int comm_stage;
   // 'mean interface': per type pair, 1 when the two types differ in
@@ -114,6 +115,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   int interface_wanted;    // for extract("interface")
   double *iface_distance;
   double **iface_moment, **iface_vector, **iface_normal, **iface_sum;
+  double *iface_near;    // 1: an atom of another material within the support
   // the pairs within the support, in the order of the neighbour list, with
   // their plain weight g (sph_consistent.h), r_ij, dW/dr and W, gathered by
   // the first pass and read by the others, and their factor w_ij
@@ -136,6 +138,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   template <int KERNEL> void update_correction();
   void report_correction();
   void grow_interface();
+  void mark_interface_atoms();
   template <int KERNEL> void update_interface();
   // the conductance of the pair i j (owned or ghost) for pair_term()
   double pair_conductance(int i, int j) const;
