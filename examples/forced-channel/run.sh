@@ -16,8 +16,9 @@
 #                       depend on it; PLATECP), about 25 minutes each
 # Environment: LMP, PLUGIN, NP, OUT as in the other examples; N (particles
 # across), TEND (s), RE, KSK, SHIFT (yes|no), START (developed|rest),
-# DTFAC (dt = DTFAC h / c0), MAX_T_ERROR (exit 1 above it, % of T_w - T_in),
-# MAX_VY (exit 1 above it, % of u_max).
+# DTFAC (dt = DTFAC h / c0), CONDUCTION (options of pair sph/cleary/heat,
+# e.g. "correction consistent mean interface"), MAX_T_ERROR (exit 1 above
+# it, % of T_w - T_in), MAX_VY (exit 1 above it, % of u_max).
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../common.sh"
@@ -48,6 +49,7 @@ rm -f "$name.dump"
 $run "$LMP" -in "$here/in.channel" -var plugin "$PLUGIN" -var n "$N" -var tend "$TEND" \
   -var re "$RE" -var walls "$WALLS" -var ksk "$KSK" -var shift "${SHIFT:-yes}" \
   -var start "${START:-developed}" -var dtfac "${DTFAC:-0.15}" -var every "$TEND" \
-  -var out "$name" -log "log.$name" | grep -E "^u_max|Loop time"
+  -var conduction "${CONDUCTION:-mean harmonic}" -var out "$name" -log "log.$name" |
+  grep -E "^u_max|Loop time|sph/cleary/heat:"
 "$PYTHON" "$here/analyse.py" "$name.dump" --walls "$WALLS" --ksk "$KSK" --re "$RE" --n "$N" \
   --png "$name.png" ${MAX_T_ERROR:+--max-t-error "$MAX_T_ERROR"} ${MAX_VY:+--max-vy "$MAX_VY"}
