@@ -894,6 +894,13 @@ void PairSPHClearyHeat::init_style()
           !sphm_law_same(materials->conductivity(i), materials->conductivity(j));
   }
   if (mean == SPHC_INTERFACE) grow_interface();
+  int interfaces = 0;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = 1; j <= atom->ntypes; j++) interfaces |= interface_types[i][j];
+  if (mean == SPHC_INTERFACE && !interfaces && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair style sph/cleary/heat: mean interface has no effect: every atom type has "
+                   "the same conductivity law in fix sph/materials");
   relax_wanted = 0;    // set again by the styles that want it, at their init
   corr_valid = 0;      // the correction's factors are made anew at the first step
   // the per-atom state exists from here on, for compute sph/correction/atom
