@@ -15,6 +15,7 @@
 #include "force.h"
 #include "memory.h"
 #include "pair.h"
+#include "sph_conduction.h"
 #include "update.h"
 
 #include <cstring>
@@ -49,8 +50,9 @@ void ComputeSPHCorrectionAtom::init()
   Pair *pair = force->pair_match("^sph/cleary/heat", 0);
   if (!pair) error->all(FLERR, "Compute sph/correction/atom requires pair style sph/cleary/heat");
   int dim;
-  int *wanted = (int *) pair->extract(interface ? "interface" : "correction", dim);
-  if (!wanted || !*wanted)
+  const int *const correct = (int *) pair->extract("correction", dim);
+  const int *const mean = (int *) pair->extract("mean", dim);
+  if (interface ? (*mean != SPHC_INTERFACE) : !*correct)
     error->all(FLERR, "Compute sph/correction/atom: pair style sph/cleary/heat runs without '{}'",
                interface ? "mean interface" : "correction consistent");
   pair_state =

@@ -13,6 +13,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix_sph_materials.h"
+#include "math_extra.h"
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
@@ -39,7 +40,7 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     nmax_relax(0), correct(0), sweeps(5), nmax_correct(0), corr_s(nullptr), corr_kinv(nullptr),
     corr_lambda(nullptr), corr_deficit(nullptr), corr_coupling(nullptr), corr_state(nullptr),
     comm_stage(COMM_RELAX), interface_types(nullptr), type_conductivity(nullptr), nmax_interface(0),
-    interface_wanted(0), iface_distance(nullptr), iface_moment(nullptr), iface_vector(nullptr),
+    iface_distance(nullptr), iface_moment(nullptr), iface_vector(nullptr),
     iface_normal(nullptr), iface_sum(nullptr), iface_near(nullptr), nmax_pairs(0), corr_x(nullptr),
     corr_rho(nullptr), corr_valid(0), refresh_pairs(0)
 {
@@ -105,7 +106,7 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
       break;
   }
   check_rates(atom->desph, "desph");
-  if (refresh_pairs && update->setupflag) report_correction();
+  if (refresh_pairs && update->setupflag) report_setup();
 
   if (!flows.empty()) tally_flows();
 
@@ -360,7 +361,7 @@ void PairSPHClearyHeat::grow_interface()
     memory->create(iface_moment, nmax_interface, 6, "pair:iface_moment");
     memory->create(iface_vector, nmax_interface, 3, "pair:iface_vector");
     memory->create(iface_normal, nmax_interface, 3, "pair:iface_normal");
-    memory->create(iface_sum, nmax_interface, 4, "pair:iface_sum");
+    memory->create(iface_sum, nmax_interface, 3, "pair:iface_sum");
   }
 }
 
@@ -411,9 +412,7 @@ template <int KERNEL> void PairSPHClearyHeat::update_interface()
   auto gather_j = [&](int j) { return newton || j < nlocal; };
   auto crosses = [&](const SupportPair &p) { return interface_types[type[p.i]][type[p.j]]; };
   const double *const near = iface_near;
-  auto dot = [](const double *a, const double *b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  };
+  using MathExtra::dot3;
 
   // 1. the kernel's second moments and the sum towards the other material
   for (int i = 0; i < nall; i++) {
@@ -444,29 +443,26 @@ template <int KERNEL> void PairSPHClearyHeat::update_interface()
   comm_stage = COMM_IFACE_VECTOR;
   SPHCompat::forward_comm(comm, this);
 
-  // 2. the normal: the corrected gradients averaged over the own material
+  // 2. the normal: the corrected gradients averaged over the own material;
+  // only the direction is kept, so the Shepard weights' sum is not needed,
+  // and an atom that is not near has no gradient to add
   for (int i = 0; i < nall; i++) {
     const double self = (i < nlocal) ? w_self * volume_of(i) : 0.0;
     for (int k = 0; k < 3; k++) iface_sum[i][k] = self * iface_vector[i][k];
-    iface_sum[i][3] = self;
   }
   for (const auto &p : support_pairs) {
-    // an atom that is not near has no gradient, and the weights' sum does
-    // not change the normal's direction
     if (crosses(p) || near[p.i] == 0.0 || near[p.j] == 0.0) continue;
     const double weight_j = p.w * volume_of(p.j);
     for (int k = 0; k < 3; k++) iface_sum[p.i][k] += weight_j * iface_vector[p.j][k];
-    iface_sum[p.i][3] += weight_j;
     if (gather_j(p.j)) {
       const double weight_i = p.w * volume_of(p.i);
       for (int k = 0; k < 3; k++) iface_sum[p.j][k] += weight_i * iface_vector[p.i][k];
-      iface_sum[p.j][3] += weight_i;
     }
   }
   comm_stage = COMM_IFACE_SMOOTH;
   if (newton) SPHCompat::reverse_comm(comm, this);
   for (int i = 0; i < nlocal; i++) {
-    const double length = sqrt(dot(iface_sum[i], iface_sum[i]));
+    const double length = sqrt(dot3(iface_sum[i], iface_sum[i]));
     for (int k = 0; k < 3; k++)
       iface_normal[i][k] = (length > 0.0) ? iface_sum[i][k] / length : 0.0;
   }
@@ -481,8 +477,8 @@ template <int KERNEL> void PairSPHClearyHeat::update_interface()
   }
   for (const auto &p : support_pairs) {
     if (near[p.i] == 0.0 && near[p.j] == 0.0) continue;
-    const double along_i = -dot(iface_normal[p.i], p.r);    // n_i . (x_j - x_i)
-    const double along_j = dot(iface_normal[p.j], p.r);
+    const double along_i = -dot3(iface_normal[p.i], p.r);    // n_i . (x_j - x_i)
+    const double along_j = dot3(iface_normal[p.j], p.r);
     const int slot = crosses(p) ? 1 : 0;
     double *const gap_i = iface_sum[p.i];
     double *const gap_j = iface_sum[p.j];
@@ -502,31 +498,28 @@ template <int KERNEL> void PairSPHClearyHeat::update_interface()
   comm_stage = COMM_IFACE_DISTANCE;
   SPHCompat::forward_comm(comm, this);
 
-  // 4. the plane averaged over the own material, seen along each atom's normal
+  // 4. the plane averaged over the own material, seen along each atom's
+  // normal (the atoms near an interface are those with a distance)
   for (int i = 0; i < nall; i++) {
-    const double self =
-        (i < nlocal && iface_distance[i] != NO_INTERFACE) ? w_self * volume_of(i) : 0.0;
+    const double self = (i < nlocal && near[i] != 0.0) ? w_self * volume_of(i) : 0.0;
     iface_sum[i][0] = self * iface_distance[i];
     iface_sum[i][1] = self;
   }
   for (const auto &p : support_pairs) {
     if (crosses(p) || near[p.i] == 0.0 || near[p.j] == 0.0) continue;
-    if (iface_distance[p.j] != NO_INTERFACE) {
-      const double weight_j = p.w * volume_of(p.j);
-      iface_sum[p.i][0] += weight_j * (iface_distance[p.j] - dot(iface_normal[p.i], p.r));
-      iface_sum[p.i][1] += weight_j;
-    }
-    if (iface_distance[p.i] != NO_INTERFACE && gather_j(p.j)) {
+    const double weight_j = p.w * volume_of(p.j);
+    iface_sum[p.i][0] += weight_j * (iface_distance[p.j] - dot3(iface_normal[p.i], p.r));
+    iface_sum[p.i][1] += weight_j;
+    if (gather_j(p.j)) {
       const double weight_i = p.w * volume_of(p.i);
-      iface_sum[p.j][0] += weight_i * (iface_distance[p.i] + dot(iface_normal[p.j], p.r));
+      iface_sum[p.j][0] += weight_i * (iface_distance[p.i] + dot3(iface_normal[p.j], p.r));
       iface_sum[p.j][1] += weight_i;
     }
   }
   comm_stage = COMM_IFACE_PLANE;
   if (newton) SPHCompat::reverse_comm(comm, this);
   for (int i = 0; i < nlocal; i++)
-    if (iface_distance[i] != NO_INTERFACE)
-      iface_distance[i] = std::max(iface_sum[i][0] / iface_sum[i][1], closest);
+    if (near[i] != 0.0) iface_distance[i] = std::max(iface_sum[i][0] / iface_sum[i][1], closest);
   comm_stage = COMM_IFACE_DISTANCE;
   SPHCompat::forward_comm(comm, this);
 }
@@ -534,7 +527,7 @@ template <int KERNEL> void PairSPHClearyHeat::update_interface()
 /* at a run's setup: how many atoms are near an interface, and how many
    keep the plain term */
 
-void PairSPHClearyHeat::report_correction()
+void PairSPHClearyHeat::report_setup()
 {
   if (mean == SPHC_INTERFACE) {
     bigint near = 0, near_all = 0;
@@ -966,7 +959,7 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
 double PairSPHClearyHeat::memory_usage()
 {
   return Pair::memory_usage() +
-      (double) (nmax + nmax_relax + 22 * nmax_correct + 17 * nmax_interface + 4 * nmax_pairs) *
+      (double) (nmax + nmax_relax + 22 * nmax_correct + 16 * nmax_interface + 4 * nmax_pairs) *
       sizeof(double) +
       (double) support_pairs.capacity() * sizeof(SupportPair);
 }
@@ -993,13 +986,10 @@ void *PairSPHClearyHeat::extract(const char *name, int &dim)
     dim = 1;
     return (void *) &corr_state;
   }
-  // whether 'mean interface' is on; per atom, from init on with it (filled
-  // by compute()): the distance from the interface, -1 where no atom of
-  // another material is within the support
-  if (strcmp(name, "interface") == 0) {
-    interface_wanted = (mean == SPHC_INTERFACE);
-    return (void *) &interface_wanted;
-  }
+  // the mean (enum sphc_mean of sph_conduction.h); per atom, from init on
+  // with 'mean interface' (filled by compute()): the distance from the
+  // interface, -1 where no atom of another material is within the support
+  if (strcmp(name, "mean") == 0) return (void *) &mean;
   if (strcmp(name, "interface_distance") == 0) {
     dim = 1;
     return (void *) &iface_distance;
@@ -1067,7 +1057,7 @@ int PairSPHClearyHeat::pack_reverse_comm(int n, int first, double *buf)
       for (int c = 0; c < 6; c++) buf[m++] = iface_moment[i][c];
       for (int c = 0; c < 3; c++) buf[m++] = iface_vector[i][c];
     } else if (comm_stage == COMM_IFACE_SMOOTH) {
-      for (int c = 0; c < 4; c++) buf[m++] = iface_sum[i][c];
+      for (int c = 0; c < 3; c++) buf[m++] = iface_sum[i][c];
     } else if (comm_stage == COMM_IFACE_MARGIN || comm_stage == COMM_IFACE_PLANE) {
       for (int c = 0; c < 2; c++) buf[m++] = iface_sum[i][c];
     } else if (comm_stage == COMM_IFACE_NEAR) {
@@ -1095,7 +1085,7 @@ void PairSPHClearyHeat::unpack_reverse_comm(int n, int *list, double *buf)
       for (int c = 0; c < 6; c++) iface_moment[i][c] += buf[m++];
       for (int c = 0; c < 3; c++) iface_vector[i][c] += buf[m++];
     } else if (comm_stage == COMM_IFACE_SMOOTH) {
-      for (int c = 0; c < 4; c++) iface_sum[i][c] += buf[m++];
+      for (int c = 0; c < 3; c++) iface_sum[i][c] += buf[m++];
     } else if (comm_stage == COMM_IFACE_MARGIN) {
       // the farthest own-material atom and the nearest other one
       iface_sum[i][0] = std::max(iface_sum[i][0], buf[m++]);

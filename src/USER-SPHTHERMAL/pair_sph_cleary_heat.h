@@ -112,7 +112,6 @@ class PairSPHClearyHeat : public PairSPHKernel {
   int **interface_types;
   double *type_conductivity;
   int nmax_interface;
-  int interface_wanted;    // for extract("interface")
   double *iface_distance;
   double **iface_moment, **iface_vector, **iface_normal, **iface_sum;
   double *iface_near;    // 1: an atom of another material within the support
@@ -136,7 +135,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   int pairs_current();
   void grow_correction();
   template <int KERNEL> void update_correction();
-  void report_correction();
+  void report_setup();    // at a run's setup: atoms near an interface, plain atoms
   void grow_interface();
   void mark_interface_atoms();
   template <int KERNEL> void update_interface();
