@@ -13,8 +13,8 @@
 #include "domain.h"
 #include "error.h"
 #include "fix_sph_materials.h"
-#include "math_extra.h"
 #include "force.h"
+#include "math_extra.h"
 #include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
@@ -40,9 +40,9 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     nmax_relax(0), correct(0), sweeps(5), nmax_correct(0), corr_s(nullptr), corr_kinv(nullptr),
     corr_lambda(nullptr), corr_deficit(nullptr), corr_coupling(nullptr), corr_state(nullptr),
     comm_stage(COMM_RELAX), interface_types(nullptr), type_conductivity(nullptr), nmax_interface(0),
-    iface_distance(nullptr), iface_moment(nullptr), iface_vector(nullptr),
-    iface_normal(nullptr), iface_sum(nullptr), iface_near(nullptr), nmax_pairs(0), corr_x(nullptr),
-    corr_rho(nullptr), corr_valid(0), refresh_pairs(0)
+    iface_distance(nullptr), iface_moment(nullptr), iface_vector(nullptr), iface_normal(nullptr),
+    iface_sum(nullptr), iface_near(nullptr), nmax_pairs(0), corr_x(nullptr), corr_rho(nullptr),
+    corr_valid(0), refresh_pairs(0)
 {
   comm_forward = 7;    // S and the state of the correction; the interface's estimate
   comm_reverse = 9;    // the moments of the correction and the interface; relax_rate
