@@ -21,6 +21,9 @@ here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.normpath(os.path.join(here, "..", ".."))
 
 
+NOTES_MARK = "<!-- notes written by hand from here on; run_bench.py keeps them -->"
+
+
 def cpu_seconds(cmd, workdir):
     """CPU time of a child process: on a shared machine wall time counts the
     waiting too."""
@@ -64,47 +67,63 @@ def main():
     args = p.parse_args()
     if args.repeat is None:
         args.repeat = 1 if args.quick else 3
-    sizes = [60] if args.quick else [60, 120]
+    # (n, dim): n x n particles in 2-D, n x n x n in 3-D
+    sizes = [(60, 2)] if args.quick else [(60, 2), (120, 2), (24, 3)]
     steps = 300 if args.quick else 1000
     workdir = tempfile.mkdtemp(prefix="sphflowbench")
 
     rows = []
-    for n in sizes:
-        base = {"n": n, "steps": steps}
+    for n, dim in sizes:
+        base = {"n": n, "steps": steps if dim == 2 else steps // 4, "dim": dim}
+        label = f"{n} x {n}" + (f" x {n}" if dim == 3 else "")
         # the same particles, kernel (Lucy) and cutoff (2.6 dx) for both packages
         lammps = cost(args, workdir, dict(base, pair="lammps", kernel="lucy", hdx=2.6))
         ours = cost(args, workdir, dict(base, pair="ours", kernel="lucy", hdx=2.6))
+        own = cost(args, workdir, dict(base, pair="own", kernel="lucy", hdx=2.6))
         flow = cost(args, workdir, dict(base, pair="flow", kernel="lucy", hdx=2.6))
         heat = cost(args, workdir, dict(base, pair="heat", kernel="lucy", hdx=2.6))
-        rows.append((n, "lucy, cutoff 2.6 dx", lammps, ours, flow, heat))
-        print(f"n = {n}: LAMMPS {1e6 * lammps:.3f} us, ours {1e6 * ours:.3f} us "
-              f"(ratio {ours / lammps:.2f}); flow alone {1e6 * flow:.3f}, heat alone {1e6 * heat:.3f}")
-        if not args.quick:
+        rows.append((label, "lucy, cutoff 2.6 dx", lammps, ours, own, flow, heat))
+        print(f"{label}: LAMMPS {1e6 * lammps:.3f} us, ours {1e6 * ours:.3f} us "
+              f"(ratio {ours / lammps:.2f}); loop own {1e6 * own:.3f}, flow alone {1e6 * flow:.3f}, "
+              f"heat alone {1e6 * heat:.3f}")
+        if not args.quick and dim == 2:
             for kernel, hdx in [("quintic", 1.0), ("wendland", 1.3), ("cubic", 1.3)]:
                 ours_k = cost(args, workdir, dict(base, pair="ours", kernel=kernel, hdx=hdx))
+                own_k = cost(args, workdir, dict(base, pair="own", kernel=kernel, hdx=hdx))
                 flow_k = cost(args, workdir, dict(base, pair="flow", kernel=kernel, hdx=hdx))
                 heat_k = cost(args, workdir, dict(base, pair="heat", kernel=kernel, hdx=hdx))
                 cut = {"quintic": 3, "wendland": 2, "cubic": 2}[kernel] * hdx
-                rows.append((n, f"{kernel}, h = {hdx} dx (cutoff {cut:.1f} dx)", None, ours_k, flow_k,
-                             heat_k))
-                print(f"n = {n}, {kernel}: ours {1e6 * ours_k:.3f} us")
+                rows.append((label, f"{kernel}, h = {hdx} dx (cutoff {cut:.1f} dx)", None, ours_k,
+                             own_k, flow_k, heat_k))
+                print(f"{label}, {kernel}: ours {1e6 * ours_k:.3f} us, loop own {1e6 * own_k:.3f} us")
 
-    with open(os.path.join(args.out, "results.md"), "w") as f:
+    # the notes below the table are written by hand: kept from the file's last version
+    path = os.path.join(args.out, "results.md")
+    notes = ""
+    if os.path.exists(path):
+        text = open(path).read()
+        if NOTES_MARK in text:
+            notes = text[text.index(NOTES_MARK):]
+    with open(path, "w") as f:
         f.write("# Flow benchmark results\n\n")
         f.write("Pair CPU time per particle-step (microseconds), serial, the fastest of "
                 f"{args.repeat} runs of {steps} steps; n x n particles in a periodic box "
-                "(2-D), shear flow and temperature field, fix sph. *thermal flow* = continuity, "
+                "(2-D; n x n x n in 3-D), shear flow and temperature field, fix sph. *thermal flow* = continuity, "
                 "momentum and energy: ours = `sph/harmonic/visc` (delta 0, as LAMMPS has no "
-                "density diffusion) + `sph/cleary/heat`; LAMMPS = `sph/taitwater/morris` + "
+                "density diffusion) + `sph/cleary/heat`, whose term the flow pair evaluates in "
+                "its own loop (`loop shared`, the default); *loop own*: the same with `loop own` "
+                "(each pair loops over the pairs itself); LAMMPS = `sph/taitwater/morris` + "
                 "`sph/heatconduction`, both as `pair hybrid/overlay`, Lucy kernel on the same "
-                "cutoff. Written by `bench/flow/run_bench.py`.\n\n")
-        f.write("| particles | kernel | LAMMPS thermal flow | ours thermal flow | ratio | ours: flow pair alone | ours: heat pair alone |\n")
-        f.write("|---|---|---|---|---|---|---|\n")
-        for n, kernel, lammps, ours, flow, heat in rows:
+                "cutoff. 3-D runs a quarter of the steps. Written by `bench/flow/run_bench.py`."
+                "\n\n")
+        f.write("| particles | kernel | LAMMPS thermal flow | ours thermal flow | ratio | ours, loop own | ours: flow pair alone | ours: heat pair alone |\n")
+        f.write("|---|---|---|---|---|---|---|---|\n")
+        for label, kernel, lammps, ours, own, flow, heat in rows:
             lt = f"{1e6 * lammps:.3f}" if lammps else "-"
             ratio = f"{ours / lammps:.2f}" if lammps else "-"
-            f.write(f"| {n} x {n} | {kernel} | {lt} | {1e6 * ours:.3f} | {ratio} | {1e6 * flow:.3f} | "
-                    f"{1e6 * heat:.3f} |\n")
+            f.write(f"| {label} | {kernel} | {lt} | {1e6 * ours:.3f} | {ratio} | {1e6 * own:.3f} | "
+                    f"{1e6 * flow:.3f} | {1e6 * heat:.3f} |\n")
+        f.write("\n" + (notes or NOTES_MARK + "\n"))
     print("wrote", os.path.join(args.out, "results.md"))
 
 

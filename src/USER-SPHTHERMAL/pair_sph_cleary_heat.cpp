@@ -35,7 +35,8 @@ using namespace LAMMPS_NS;
 
 PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     PairSPHKernel(lmp, "sph/cleary/heat", "conductivities come from fix sph/materials"),
-    mean(SPHC_HARMONIC), eta2(0.0), materials(nullptr), conductivity_varies(0),
+    mean(SPHC_HARMONIC), loop_own(0), in_flow_loop(0), temperature(nullptr), mass_of(nullptr),
+    nmax_flow_loop(0), eta2(0.0), materials(nullptr), conductivity_varies(0),
     conductance(nullptr), conductivity(nullptr), nmax(0), relax_wanted(0), relax_rate(nullptr),
     nmax_relax(0), correct(0), sweeps(5), nmax_correct(0), corr_s(nullptr), corr_kinv(nullptr),
     corr_lambda(nullptr), corr_deficit(nullptr), corr_coupling(nullptr), corr_state(nullptr),
@@ -55,6 +56,8 @@ PairSPHClearyHeat::~PairSPHClearyHeat()
   memory->destroy(conductance);
   memory->destroy(conductivity);
   memory->destroy(relax_rate);
+  memory->destroy(temperature);
+  memory->destroy(mass_of);
   memory->destroy(corr_s);
   memory->destroy(corr_kinv);
   memory->destroy(corr_lambda);
@@ -78,8 +81,17 @@ PairSPHClearyHeat::~PairSPHClearyHeat()
 void PairSPHClearyHeat::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  if (in_flow_loop) {
+    // pair sph/harmonic/visc evaluates the term (begin_flow_loop_term)
+    if (!flows.empty()) {
+      if (conductivity_varies) update_conductivity();
+      tally_flows();
+    }
+    return;
+  }
   if (conductivity_varies) update_conductivity();
   if (update->setupflag) check_neighbours();
+  update_temperature();
   refresh_pairs = (correct || mean == SPHC_INTERFACE) && !pairs_current();
   if (relax_wanted) {
     if (atom->nmax > nmax_relax) {
@@ -109,13 +121,100 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
   if (refresh_pairs && update->setupflag) report_setup();
 
   if (!flows.empty()) tally_flows();
+  if (relax_wanted) finish_relax();
+}
 
+/* ----------------------------------------------------------------------
+   lambda_i of the ghosts to their owners, divided by cv
+------------------------------------------------------------------------- */
+
+void PairSPHClearyHeat::finish_relax()
+{
+  comm_stage = COMM_RELAX;
+  if (force->newton_pair) SPHCompat::reverse_comm(comm, this);
+  const double *const cv = atom->cv;
+  for (int i = 0; i < atom->nlocal; i++) relax_rate[i] /= cv[i];
+}
+
+/* ----------------------------------------------------------------------
+   the term in pair sph/harmonic/visc's loop: possible when that style is
+   the only flow pair and this the only heat pair, both with one kernel and
+   cutoff on the same type pairs (so on the same neighbour list), and the
+   term needs only the pair: no correction, no interface distances, a mean
+   of per-atom conductivities only when harmonic (per type pair otherwise)
+------------------------------------------------------------------------- */
+
+int PairSPHClearyHeat::flow_loop_possible()
+{
+  if (loop_own || correct || mean == SPHC_INTERFACE) return 0;
+  if (conductivity_varies && mean != SPHC_HARMONIC) return 0;
+  if (force->pair_match("sph/cleary/heat", 1) != this) return 0;
+  auto flow = (PairSPHKernel *) force->pair_match("sph/harmonic/visc", 1);
+  if (!flow || !same_kernel(flow)) return 0;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (flow->setflag[i][j] != setflag[i][j]) return 0;
+  return 1;
+}
+
+/* ----------------------------------------------------------------------
+   this step's temperature and mass of every owned and ghost atom (and
+   conductivity, and zeroed relax_rate) for the flow pair's loop
+------------------------------------------------------------------------- */
+
+PairSPHClearyHeat::FlowLoopTerm PairSPHClearyHeat::begin_flow_loop_term()
+{
+  if (conductivity_varies) update_conductivity();
+  if (update->setupflag) check_neighbours();
+  update_temperature();
+  const int nall = atom->nlocal + atom->nghost;
   if (relax_wanted) {
-    comm_stage = COMM_RELAX;
-    if (force->newton_pair) SPHCompat::reverse_comm(comm, this);
-    const double *const cv = atom->cv;
-    for (int i = 0; i < atom->nlocal; i++) relax_rate[i] /= cv[i];
+    if (atom->nmax > nmax_relax) {
+      nmax_relax = atom->nmax;
+      memory->destroy(relax_rate);
+      memory->create(relax_rate, nmax_relax, "pair:relax_rate");
+    }
+    for (int i = 0; i < nall; i++) relax_rate[i] = 0.0;
   }
+  FlowLoopTerm term;
+  term.temperature = temperature;
+  term.mass = mass_of;
+  term.rho = atom->rho;
+  term.conductivity = conductivity_varies ? conductivity : nullptr;
+  term.conductance = conductance;
+  term.relax_rate = relax_wanted ? relax_rate : nullptr;
+  term.eta2 = eta2;
+  return term;
+}
+
+/* ----------------------------------------------------------------------
+   T = esph / cv and the mass of every owned and ghost atom, once per step
+   rather than once per pair
+------------------------------------------------------------------------- */
+
+void PairSPHClearyHeat::update_temperature()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  if (atom->nmax > nmax_flow_loop) {
+    nmax_flow_loop = atom->nmax;
+    memory->destroy(temperature);
+    memory->destroy(mass_of);
+    memory->create(temperature, nmax_flow_loop, "pair:temperature");
+    memory->create(mass_of, nmax_flow_loop, "pair:mass_of");
+  }
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+  for (int i = 0; i < nall; i++) temperature[i] = esph[i] / cv[i];
+  if (atom->rmass_flag && atom->rmass)
+    memcpy(mass_of, atom->rmass, nall * sizeof(double));
+  else
+    for (int i = 0; i < nall; i++) mass_of[i] = atom->mass[atom->type[i]];
+}
+
+void PairSPHClearyHeat::end_flow_loop_term()
+{
+  check_rates(atom->desph, "desph");
+  if (relax_wanted) finish_relax();
 }
 
 template <int KERNEL> void PairSPHClearyHeat::eval_kernel()
@@ -144,25 +243,17 @@ template <int KERNEL, int MEAN> void PairSPHClearyHeat::eval_mean()
 
 template <int KERNEL, int MEAN, int CORRECT> void PairSPHClearyHeat::eval_flags()
 {
-  const int flags = (relax_wanted ? 8 : 0) | (conductivity_varies ? 4 : 0) |
-      (force->newton_pair ? 2 : 0) | ((atom->rmass_flag && atom->rmass) ? 1 : 0);
+  const int flags =
+      (relax_wanted ? 4 : 0) | (conductivity_varies ? 2 : 0) | (force->newton_pair ? 1 : 0);
   switch (flags) {
-    case 0: eval<KERNEL, MEAN, CORRECT, 0, 0, 0, 0>(); break;
-    case 1: eval<KERNEL, MEAN, CORRECT, 0, 0, 1, 0>(); break;
-    case 2: eval<KERNEL, MEAN, CORRECT, 0, 1, 0, 0>(); break;
-    case 3: eval<KERNEL, MEAN, CORRECT, 0, 1, 1, 0>(); break;
-    case 4: eval<KERNEL, MEAN, CORRECT, 1, 0, 0, 0>(); break;
-    case 5: eval<KERNEL, MEAN, CORRECT, 1, 0, 1, 0>(); break;
-    case 6: eval<KERNEL, MEAN, CORRECT, 1, 1, 0, 0>(); break;
-    case 7: eval<KERNEL, MEAN, CORRECT, 1, 1, 1, 0>(); break;
-    case 8: eval<KERNEL, MEAN, CORRECT, 0, 0, 0, 1>(); break;
-    case 9: eval<KERNEL, MEAN, CORRECT, 0, 0, 1, 1>(); break;
-    case 10: eval<KERNEL, MEAN, CORRECT, 0, 1, 0, 1>(); break;
-    case 11: eval<KERNEL, MEAN, CORRECT, 0, 1, 1, 1>(); break;
-    case 12: eval<KERNEL, MEAN, CORRECT, 1, 0, 0, 1>(); break;
-    case 13: eval<KERNEL, MEAN, CORRECT, 1, 0, 1, 1>(); break;
-    case 14: eval<KERNEL, MEAN, CORRECT, 1, 1, 0, 1>(); break;
-    case 15: eval<KERNEL, MEAN, CORRECT, 1, 1, 1, 1>(); break;
+    case 0: eval<KERNEL, MEAN, CORRECT, 0, 0, 0>(); break;
+    case 1: eval<KERNEL, MEAN, CORRECT, 0, 1, 0>(); break;
+    case 2: eval<KERNEL, MEAN, CORRECT, 1, 0, 0>(); break;
+    case 3: eval<KERNEL, MEAN, CORRECT, 1, 1, 0>(); break;
+    case 4: eval<KERNEL, MEAN, CORRECT, 0, 0, 1>(); break;
+    case 5: eval<KERNEL, MEAN, CORRECT, 0, 1, 1>(); break;
+    case 6: eval<KERNEL, MEAN, CORRECT, 1, 0, 1>(); break;
+    case 7: eval<KERNEL, MEAN, CORRECT, 1, 1, 1>(); break;
   }
 }
 
@@ -620,23 +711,20 @@ template <int KERNEL> void PairSPHClearyHeat::gather_support_pairs()
    kernel support (sph_conduction.h); T = esph / cv
 ------------------------------------------------------------------------- */
 
-template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RMASS,
-          int RELAX>
+template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RELAX>
 void PairSPHClearyHeat::eval()
 {
   const double *const *const x = atom->x;
-  const double *const esph = atom->esph;
-  const double *const cv = atom->cv;
+  const double *const temperature = this->temperature;
+  const double *const mass_of = this->mass_of;
   const double *const rho = atom->rho;
-  const double *const mass = atom->mass;
-  const double *const rmass = atom->rmass;
   const int *const type = atom->type;
   double *const desph = atom->desph;
   const int nlocal = atom->nlocal;
 
   const double cutsq_kernel = cut_global * cut_global;
   const double inv_h = kernel.inv_h;
-  const double dw_scale = kernel.dw_scale;
+  const double dwdr_r_scale = kernel.dw_scale * kernel.inv_h;    // dW/dr / r = this f'(q) / q
 
   const int inum = list->inum;
   const int *const ilist = list->ilist;
@@ -650,9 +738,9 @@ void PairSPHClearyHeat::eval()
     const double xtmp = x[i][0];
     const double ytmp = x[i][1];
     const double ztmp = x[i][2];
-    const double temp_i = esph[i] / cv[i];
+    const double temp_i = temperature[i];
     const double rho_i = rho[i];
-    const double mass_i = RMASS ? rmass[i] : mass[itype];
+    const double mass_i = mass_of[i];
     const double k_i = VARYING_K ? conductivity[i] : 0.0;
     const double distance_i = (MEAN == SPHC_INTERFACE) ? iface_distance[i] : 0.0;
     const int *const interface_i = (MEAN == SPHC_INTERFACE) ? interface_types[itype] : nullptr;
@@ -670,8 +758,8 @@ void PairSPHClearyHeat::eval()
       if (rsq >= cutsq_kernel) continue;
 
       const int jtype = type[j];
-      const double r = sqrt(rsq);
-      const double dwdr = dw_scale * sphk_df(KERNEL, r * inv_h);
+      // r dW/dr = r^2 (dW/dr / r): the division below does not wait for the root
+      const double r_dwdr = rsq * dwdr_r_scale * sphk_df_over_q(KERNEL, sqrt(rsq) * inv_h);
       double conductance_ij =
           VARYING_K ? sphc_conductance(MEAN, k_i, conductivity[j]) : conductance_i[jtype];
       if (MEAN == SPHC_INTERFACE && interface_i[jtype])
@@ -679,18 +767,18 @@ void PairSPHClearyHeat::eval()
             ? sphc_interface_conductance(k_i, conductivity[j], distance_i, iface_distance[j])
             : sphc_interface_conductance(type_conductivity[itype], type_conductivity[jtype],
                                          distance_i, iface_distance[j]);
-      const double temp_ij = temp_i - esph[j] / cv[j];
-      const double mass_j = RMASS ? rmass[j] : mass[jtype];
+      const double temp_ij = temp_i - temperature[j];
+      const double mass_j = mass_of[j];
       // the pairs within the support come in the order update_correction() stored them
       const double weight = CORRECT ? support_pairs[npair++].weight : 1.0;
       // with RELAX, F_ij per unit temperature difference (<= 0, as dW/dr) is
       // needed too: one evaluation serves both
-      const double g_ij = RELAX
-          ? weight * sphc_cleary_pair(conductance_ij, 1.0, rho_i, rho[j], r, dwdr, eta2)
-          : 0.0;
+      const double inv_den = 1.0 / sphc_cleary_denominator(rho_i, rho[j], rsq, eta2);
+      const double g_ij =
+          RELAX ? weight * sphc_cleary_pair_inv(conductance_ij, 1.0, r_dwdr, inv_den) : 0.0;
       const double f_ij = RELAX
           ? g_ij * temp_ij
-          : weight * sphc_cleary_pair(conductance_ij, temp_ij, rho_i, rho[j], r, dwdr, eta2);
+          : weight * sphc_cleary_pair_inv(conductance_ij, temp_ij, r_dwdr, inv_den);
       desph_i += mass_j * f_ij;
       if (NEWTON_PAIR || j < nlocal) desph[j] -= mass_i * f_ij;
       if (RELAX) {
@@ -816,12 +904,14 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
   mean = SPHC_HARMONIC;
   correct = 0;
   sweeps = 5;
+  loop_own = 0;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "eta") != 0 && strcmp(arg[iarg], "mean") != 0 &&
-        strcmp(arg[iarg], "correction") != 0 && strcmp(arg[iarg], "sweeps") != 0)
+        strcmp(arg[iarg], "correction") != 0 && strcmp(arg[iarg], "sweeps") != 0 &&
+        strcmp(arg[iarg], "loop") != 0)
       error->all(FLERR,
                  "Illegal pair_style sph/cleary/heat command: unknown keyword '{}' (after the "
-                 "kernel and cutoff: eta, mean, correction or sweeps)",
+                 "kernel and cutoff: eta, mean, correction, sweeps or loop)",
                  arg[iarg]);
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal pair_style sph/cleary/heat command: missing value after '{}'",
@@ -840,6 +930,15 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
         error->all(FLERR,
                    "Illegal pair_style sph/cleary/heat command: unknown correction '{}' "
                    "(none or consistent)",
+                   arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "loop") == 0) {
+      if (strcmp(arg[iarg + 1], "shared") == 0)
+        loop_own = 0;
+      else if (strcmp(arg[iarg + 1], "own") == 0)
+        loop_own = 1;
+      else
+        error->all(FLERR,
+                   "Illegal pair_style sph/cleary/heat command: unknown loop '{}' (shared or own)",
                    arg[iarg + 1]);
     } else if (strcmp(arg[iarg], "sweeps") == 0) {
       sweeps = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
@@ -909,6 +1008,12 @@ void PairSPHClearyHeat::init_style()
   }
 
   eta2 = init_kernel();
+  const int was_in_flow_loop = in_flow_loop;
+  in_flow_loop = flow_loop_possible();
+  if (in_flow_loop && !was_in_flow_loop && comm->me == 0)
+    utils::logmesg(lmp,
+                   "Pair style sph/cleary/heat: the term is evaluated in the pair loop of "
+                   "sph/harmonic/visc (loop shared)\n");
 
   SPHCompat::request_half_list(neighbor, this, instance_me);
 }
@@ -934,6 +1039,7 @@ void PairSPHClearyHeat::write_restart_settings(FILE *fp)
   fwrite(&eta_factor, sizeof(double), 1, fp);
   fwrite(&correct, sizeof(int), 1, fp);
   fwrite(&sweeps, sizeof(int), 1, fp);
+  fwrite(&loop_own, sizeof(int), 1, fp);
 }
 
 void PairSPHClearyHeat::read_restart_settings(FILE *fp)
@@ -945,6 +1051,7 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &eta_factor, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &correct, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &sweeps, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &loop_own, sizeof(int), 1, fp, nullptr, error);
   }
   MPI_Bcast(&kernel_kind, 1, MPI_INT, 0, world);
   MPI_Bcast(&mean, 1, MPI_INT, 0, world);
@@ -952,6 +1059,7 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
   MPI_Bcast(&eta_factor, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&correct, 1, MPI_INT, 0, world);
   MPI_Bcast(&sweeps, 1, MPI_INT, 0, world);
+  MPI_Bcast(&loop_own, 1, MPI_INT, 0, world);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -55,8 +55,28 @@ class PairSPHClearyHeat : public PairSPHKernel {
   class NeighList *pair_list() const { return list; }
   double support() const { return cut_global; }
 
+  // pair sph/harmonic/visc evaluates this style's term in its own pair loop
+  // (one neighbour pass, square root and division per pair for both) when
+  // both see the same pairs with the same kernel and the term needs only
+  // the pair (no correction, no interface distances): decided at init
+  int term_in_flow_loop() const { return in_flow_loop; }
+  // what the flow loop reads, made for this step's state
+  struct FlowLoopTerm {
+    const double *temperature, *mass, *rho;    // per atom, owned and ghost
+    const double *conductivity;    // per atom when some conductivity varies (harmonic mean)
+    double **conductance;          // per type pair otherwise
+    double *relax_rate;            // per atom when a style asks for it, else nullptr
+    double eta2;
+  };
+  FlowLoopTerm begin_flow_loop_term();
+  void end_flow_loop_term();
+
  protected:
   int mean;                   // SPHC_HARMONIC, SPHC_ARITHMETIC or SPHC_INTERFACE
+  int loop_own;               // 'loop own': never in the flow pair's loop
+  int in_flow_loop;           // this run's term is evaluated by the flow pair
+  double *temperature, *mass_of;    // per atom (owned and ghost), refreshed every step
+  int nmax_flow_loop;
   double eta2;                // eta^2, regularises r -> 0
   class FixSPHMaterials *materials;
   int conductivity_varies;    // 1 when some conductivity depends on T
@@ -152,10 +172,12 @@ class PairSPHClearyHeat : public PairSPHKernel {
   template <int KERNEL> void eval_kernel();
   template <int KERNEL, int MEAN> void eval_mean();
   template <int KERNEL, int MEAN, int CORRECT> void eval_flags();
-  template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RMASS,
-            int RELAX>
+  template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RELAX>
   void eval();
   void tally_flows();
+  int flow_loop_possible();
+  void update_temperature();
+  void finish_relax();
   std::string diagnose(int) override;
 };
 

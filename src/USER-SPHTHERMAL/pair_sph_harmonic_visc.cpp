@@ -25,9 +25,11 @@
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "pair_sph_cleary_heat.h"
 #include "sph_body_force.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
+#include "sph_conduction.h"
 #include "sph_flow.h"
 #include "update.h"
 
@@ -46,7 +48,7 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI), xi(SPHF_XI_CLEARY), delta(0.1),
     diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr), eta2(0.0), materials(nullptr), viscosity_varies(0), wall_groupbit(0),
     pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr), density(nullptr),
-    nmax(0)
+    nmax(0), heat(nullptr)
 {
   // the continuity equation and the viscous term need the velocities of
   // ghost atoms: turned on here, as comm_modify vel yes would
@@ -80,6 +82,8 @@ void PairSPHHarmonicVisc::compute(int eflag, int vflag)
     hydrostatic = (gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0);
   }
 
+  if (heat && heat->term_in_flow_loop()) heat_term = heat->begin_flow_loop_term();
+
   switch (kernel_kind) {
     case SPHK_LUCY:
       eval_kernel<SPHK_LUCY>();
@@ -96,6 +100,7 @@ void PairSPHHarmonicVisc::compute(int eflag, int vflag)
   }
   check_rates3(atom->f, "force");
   check_rates(atom->drho, "drho");
+  if (heat && heat->term_in_flow_loop()) heat->end_flow_loop_term();
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
@@ -126,22 +131,47 @@ template <int KERNEL, int PRESSURE> void PairSPHHarmonicVisc::eval_pressure()
 {
   switch (viscosity_form) {
     case SPHF_V_CLEARY:
-      eval_newton<KERNEL, PRESSURE, SPHF_V_CLEARY>();
+      eval_heat<KERNEL, PRESSURE, SPHF_V_CLEARY>();
       break;
     case SPHF_V_MORRIS:
-      eval_newton<KERNEL, PRESSURE, SPHF_V_MORRIS>();
+      eval_heat<KERNEL, PRESSURE, SPHF_V_MORRIS>();
       break;
     default:
-      eval_newton<KERNEL, PRESSURE, SPHF_V_ADAMI>();
+      eval_heat<KERNEL, PRESSURE, SPHF_V_ADAMI>();
   }
 }
 
-template <int KERNEL, int PRESSURE, int VISCOSITY> void PairSPHHarmonicVisc::eval_newton()
+template <int KERNEL, int PRESSURE, int VISCOSITY> void PairSPHHarmonicVisc::eval_heat()
 {
-  if (force->newton_pair)
-    eval<KERNEL, PRESSURE, VISCOSITY, 1>();
+  if (!heat || !heat->term_in_flow_loop()) {
+    eval_dimension<KERNEL, PRESSURE, VISCOSITY, 0>();
+    return;
+  }
+  const int k_flag = heat_term.conductivity ? HEAT_ATOM_K : 0;
+  const int relax_flag = heat_term.relax_rate ? HEAT_RELAX : 0;
+  switch (k_flag | relax_flag) {
+    case 0:
+      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON>();
+      break;
+    case HEAT_ATOM_K:
+      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON | HEAT_ATOM_K>();
+      break;
+    case HEAT_RELAX:
+      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON | HEAT_RELAX>();
+      break;
+    default:
+      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON | HEAT_ATOM_K | HEAT_RELAX>();
+  }
+}
+
+template <int KERNEL, int PRESSURE, int VISCOSITY, int HEAT>
+void PairSPHHarmonicVisc::eval_dimension()
+{
+  // 2-D: the z components are zero, and so are their terms
+  if (domain->dimension == 2)
+    eval<KERNEL, PRESSURE, VISCOSITY, HEAT, 2>();
   else
-    eval<KERNEL, PRESSURE, VISCOSITY, 0>();
+    eval<KERNEL, PRESSURE, VISCOSITY, HEAT, 3>();
 }
 
 /* ----------------------------------------------------------------------
@@ -207,19 +237,34 @@ void PairSPHHarmonicVisc::update_atom_state()
    continuity equation v
 ------------------------------------------------------------------------- */
 
-template <int KERNEL, int PRESSURE, int VISCOSITY, int NEWTON_PAIR>
+template <int KERNEL, int PRESSURE, int VISCOSITY, int HEAT, int DIM>
 void PairSPHHarmonicVisc::eval()
 {
+  const int newton_pair = force->newton_pair;
   const double *const *const x = atom->x;
   const double *const *const v = atom->v;
   const double *const *const vest = atom->vest;
   double *const *const f = atom->f;
   double *const drho = atom->drho;
+  double *const desph = atom->desph;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
+  const int wall_groupbit = this->wall_groupbit;
+  // local copies: a store to f could alias a member, which would then be
+  // read again for every pair
+  const double *const mass_of = this->mass_of;
+  const double *const density = this->density;
+  const double *const volume = this->volume;
+  const double *const pressure = this->pressure;
+  const double *const viscosity = this->viscosity;
+  const double xi = this->xi;
+  const double eta2 = this->eta2;
+  const PairSPHClearyHeat::FlowLoopTerm term = heat_term;
 
   const double cutsq_kernel = cut_global * cut_global;
   const double inv_h = kernel.inv_h;
-  const double dw_scale = kernel.dw_scale;
+  const double dwdr_r_scale = kernel.dw_scale * kernel.inv_h;    // dW/dr / r = this f'(q) / q
 
   const int inum = list->inum;
   const int *const ilist = list->ilist;
@@ -232,46 +277,85 @@ void PairSPHHarmonicVisc::eval()
     const sphf_particle a = {mass_of[i], density[i], volume[i], pressure[i], viscosity[i]};
     const int *const jlist = firstneigh[i];
     const int jnum = numneigh[i];
-    double fx_i = 0.0, fy_i = 0.0, fz_i = 0.0, drho_i = 0.0;
+    double fx_i = 0.0, fy_i = 0.0, fz_i = 0.0, drho_i = 0.0, desph_i = 0.0, relax_i = 0.0;
+    // the heat term's state of i (sph/cleary/heat's eval())
+    const double temp_i = HEAT ? term.temperature[i] : 0.0;
+    const double hmass_i = HEAT ? term.mass[i] : 0.0;
+    const double rho_i = HEAT ? term.rho[i] : 0.0;
+    const double k_i = (HEAT & HEAT_ATOM_K) ? term.conductivity[i] : 0.0;
+    const double *const conductance_i = (HEAT & HEAT_ATOM_K) ? nullptr : term.conductance[type[i]];
+    const int wall_i = mask[i] & wall_groupbit;
+
+    // the heat term of sph/cleary/heat's eval() for the pair, given 1 over
+    // its denominator: F_ij per unit temperature difference, then F_ij
+    auto add_heat = [&](int j, double r_dwdr, double inv_heat) {
+      const double conductance_ij = (HEAT & HEAT_ATOM_K)
+          ? sphc_harmonic_conductance(k_i, term.conductivity[j])
+          : conductance_i[type[j]];
+      const double relax_ij = sphc_cleary_pair_inv(conductance_ij, 1.0, r_dwdr, inv_heat);
+      const double heat_ij = relax_ij * (temp_i - term.temperature[j]);
+      desph_i += term.mass[j] * heat_ij;
+      if (HEAT & HEAT_RELAX) relax_i -= term.mass[j] * relax_ij;
+      if (newton_pair || j < nlocal) {
+        desph[j] -= hmass_i * heat_ij;
+        if (HEAT & HEAT_RELAX) term.relax_rate[j] -= hmass_i * relax_ij;
+      }
+    };
 
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const double delx = xtmp - x[j][0];
       const double dely = ytmp - x[j][1];
-      const double delz = ztmp - x[j][2];
+      const double delz = (DIM == 3) ? ztmp - x[j][2] : 0.0;
       const double rsq = delx * delx + dely * dely + delz * delz;
       if (rsq >= cutsq_kernel) continue;
 
-      const double r = sqrt(rsq);
-      const double dwdr = dw_scale * sphk_df(KERNEL, r * inv_h);
+      // dW/dr / r needs r only for q: the division below does not wait for the root
+      const double dwdr_r = dwdr_r_scale * sphk_df_over_q(KERNEL, sqrt(rsq) * inv_h);
+      // between two wall particles the flow changes nothing: fix sph/wall/adami
+      // sets their density and velocity every step and they are not
+      // integrated with fix sph; heat still flows
+      if (wall_i && (mask[j] & wall_groupbit)) {
+        if (HEAT)
+          add_heat(j, rsq * dwdr_r,
+                   1.0 / sphc_cleary_denominator(rho_i, term.rho[j], rsq, term.eta2));
+        continue;
+      }
       const sphf_particle b = {mass_of[j], density[j], volume[j], pressure[j], viscosity[j]};
       const double dvx = vest[i][0] - vest[j][0];
       const double dvy = vest[i][1] - vest[j][1];
-      const double dvz = vest[i][2] - vest[j][2];
+      const double dvz = (DIM == 3) ? vest[i][2] - vest[j][2] : 0.0;
       const double vr_est = (VISCOSITY == SPHF_V_CLEARY) ? dvx * delx + dvy * dely + dvz * delz : 0.0;
-      double s_r, s_v, c_i, c_j;
-      sphf_pair(PRESSURE, VISCOSITY, xi, &a, &b, r, dwdr, eta2, vr_est, &s_r, &s_v, &c_i, &c_j);
+      double s_r, s_v, c_i, c_j, inv_heat;
+      // the heat term's denominator shares the flow's one division
+      const double heat_den =
+          HEAT ? sphc_cleary_denominator(rho_i, term.rho[j], rsq, term.eta2) : 1.0;
+      sphf_pair(PRESSURE, VISCOSITY, xi, &a, &b, rsq, dwdr_r, eta2, vr_est, heat_den, &s_r, &s_v,
+                &c_i, &c_j, &inv_heat);
       const double fx = s_r * delx + s_v * dvx;
       const double fy = s_r * dely + s_v * dvy;
       const double fz = s_r * delz + s_v * dvz;
       const double vr = (v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely +
-          (v[i][2] - v[j][2]) * delz;
+          ((DIM == 3) ? (v[i][2] - v[j][2]) * delz : 0.0);
       fx_i += fx;
       fy_i += fy;
       fz_i += fz;
       drho_i += c_i * vr;
-      if (NEWTON_PAIR || j < nlocal) {
+      if (HEAT) add_heat(j, rsq * dwdr_r, inv_heat);
+      if (newton_pair || j < nlocal) {
         f[j][0] -= fx;
         f[j][1] -= fy;
-        f[j][2] -= fz;
+        if (DIM == 3) f[j][2] -= fz;
         drho[j] += c_j * vr;
       }
-      if (evflag) ev_tally_xyz(i, j, nlocal, NEWTON_PAIR, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
     }
     f[i][0] += fx_i;
     f[i][1] += fy_i;
-    f[i][2] += fz_i;
+    if (DIM == 3) f[i][2] += fz_i;
     drho[i] += drho_i;
+    if (HEAT) desph[i] += desph_i;
+    if (HEAT & HEAT_RELAX) term.relax_rate[i] += relax_i;
   }
 }
 
@@ -485,6 +569,8 @@ void PairSPHHarmonicVisc::init_style()
 
 
   eta2 = init_kernel();
+  // sph/cleary/heat decides at its init whether this loop evaluates its term
+  heat = (PairSPHClearyHeat *) force->pair_match("sph/cleary/heat", 1);
 
   SPHCompat::request_half_list(neighbor, this, instance_me);
 }

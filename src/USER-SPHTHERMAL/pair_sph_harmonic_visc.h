@@ -12,6 +12,7 @@ PairStyle(sph/harmonic/visc,PairSPHHarmonicVisc);
 #ifndef LMP_PAIR_SPH_HARMONIC_VISC_H
 #define LMP_PAIR_SPH_HARMONIC_VISC_H
 
+#include "pair_sph_cleary_heat.h"
 #include "pair_sph_kernel.h"
 
 #include <vector>
@@ -59,12 +60,18 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // the wall, its own volume)
   double *pressure, *viscosity, *mass_of, *volume, *density;
   int nmax;
+  // pair sph/cleary/heat, when its term is evaluated in this style's loop
+  class PairSPHClearyHeat *heat;
+  PairSPHClearyHeat::FlowLoopTerm heat_term;
+  // the heat term in eval(): on, per-atom conductivities, relax_rate
+  enum { HEAT_ON = 1, HEAT_ATOM_K = 2, HEAT_RELAX = 4 };
 
   void update_atom_state();
   template <int KERNEL> void eval_kernel();
   template <int KERNEL, int PRESSURE> void eval_pressure();
-  template <int KERNEL, int PRESSURE, int VISCOSITY> void eval_newton();
-  template <int KERNEL, int PRESSURE, int VISCOSITY, int NEWTON_PAIR> void eval();
+  template <int KERNEL, int PRESSURE, int VISCOSITY> void eval_heat();
+  template <int KERNEL, int PRESSURE, int VISCOSITY, int HEAT> void eval_dimension();
+  template <int KERNEL, int PRESSURE, int VISCOSITY, int HEAT, int DIM> void eval();
   template <int KERNEL, int NEWTON_PAIR, int HYDROSTATIC> void eval_diffusion();
 };
 

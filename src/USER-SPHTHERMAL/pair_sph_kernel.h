@@ -26,6 +26,11 @@ class PairSPHKernel : public Pair {
   void write_restart(FILE *) override;
   void read_restart(FILE *) override;
   void *extract(const char *, int &) override;
+  // the same kernel on the same support (two styles can share a pair loop)
+  int same_kernel(const PairSPHKernel *other) const
+  {
+    return other->kernel_kind == kernel_kind && other->cut_global == cut_global;
+  }
 
  protected:
   const char *style;             // for messages: "sph/cleary/heat"

@@ -66,10 +66,23 @@ static inline double sphc_conductance(int mean, double k_a, double k_b)
    the other papers differ only in the mean and in eta: Ng et al. 2020,
    eq 10, is the same; Reece et al. 2024, eq 9, and Xu (LS-DYNA), eq 11,
    have eta = 0. */
+static inline double sphc_cleary_denominator(double rho_a, double rho_b, double rsq, double eta2)
+{
+  return rho_a * rho_b * (rsq + eta2);
+}
+
+/* F_ab given r dW/dr and 1 / sphc_cleary_denominator (for a pair loop
+   that shares one division between several terms, sph_flow.h) */
+static inline double sphc_cleary_pair_inv(double conductance, double T_ab, double r_dwdr,
+                                          double inv_denominator)
+{
+  return conductance * T_ab * r_dwdr * inv_denominator;
+}
+
 static inline double sphc_cleary_pair(double conductance, double T_ab, double rho_a, double rho_b,
                                       double r, double dwdr, double eta2)
 {
-  return conductance * T_ab * r * dwdr / (rho_a * rho_b * (r * r + eta2));
+  return conductance * T_ab * r * dwdr / sphc_cleary_denominator(rho_a, rho_b, r * r, eta2);
 }
 
 #endif

@@ -117,20 +117,25 @@ static inline double sphf_diffusion_pair(double delta_h_c0, double m_b, double r
 
 /* The pair loop's form of the terms above, with one division per pair
    instead of six (the divisions dominate the cost of a pair): the
-   denominators of pressure, viscosity, 1/(r^2 + eta^2) and 1/r are
-   multiplied and inverted once. Particle state: m, rho, V = m / rho, P, mu.
+   denominators of pressure, viscosity and 1/(r^2 + eta^2) are multiplied
+   and inverted once, and that division does not wait for the square root
+   of the pair's distance (it takes r^2 and dW/dr / r, which sph_kernels.h
+   gives without dividing by r). Particle state: m, rho, V = m / rho, P, mu.
    Returns through the pointers: s_r (force on a along r_ab: pressure and
    the cleary viscosity), s_v (force on a along v_ab: adami and morris
    viscosity), c_a and c_b (drho_a += c_a (v_ab . r_ab), drho_b += c_b
-   (v_ab . r_ab)). Equal to the separate terms to round-off
-   (test_flow_terms fused). */
+   (v_ab . r_ab)), and inv_other = 1 / other_den from the same division,
+   for a caller that evaluates another pair term in the same loop (the
+   conduction of sph_conduction.h; 1 when none). Equal to the separate terms
+   to round-off (test_flow_terms fused). */
 typedef struct {
   double m, rho, vol, p, mu;
 } sphf_particle;
 
 static inline void sphf_pair(int pform, int vform, double xi, const sphf_particle *a,
-                             const sphf_particle *b, double r, double dwdr, double eta2, double vr,
-                             double *s_r, double *s_v, double *c_a, double *c_b)
+                             const sphf_particle *b, double rsq, double dwdr_r, double eta2,
+                             double vr, double other_den, double *s_r, double *s_v, double *c_a,
+                             double *c_b, double *inv_other)
 {
   const double rho_ab = a->rho * b->rho;
   double num_p, den_p;
@@ -156,21 +161,23 @@ static inline void sphf_pair(int pform, int vform, double xi, const sphf_particl
         a->mu * b->mu;
     den_v = ok ? ((vform == SPHF_V_ADAMI) ? mu_sum : rho_ab * mu_sum) : 1.0;
   }
-  const double r2eta2 = r * r + eta2;
-  const double inv = 1.0 / (den_p * den_v * r2eta2 * r);
-  const double inv_r = den_p * den_v * r2eta2 * inv;
-  *s_r = -num_p * den_v * r2eta2 * dwdr * inv;
+  const double r2eta2 = rsq + eta2;
+  const double inv_all = 1.0 / (den_p * den_v * r2eta2 * other_den);
+  const double inv_p = den_v * r2eta2 * other_den * inv_all;    /* 1 / den_p */
+  const double inv_v = den_p * other_den * inv_all;             /* 1 / (den_v (r^2 + eta^2)) */
+  *inv_other = den_p * den_v * r2eta2 * inv_all;
+  *s_r = -num_p * dwdr_r * inv_p;
   *s_v = 0.0;
   if (vform == SPHF_V_CLEARY)
-    *s_r += num_v * den_p * vr * dwdr * inv;
+    *s_r += num_v * vr * dwdr_r * inv_v;
   else
-    *s_v = num_v * den_p * r * r * dwdr * inv;
+    *s_v = num_v * rsq * dwdr_r * inv_v;
   if (pform == SPHF_P_SYMMETRIC) {
-    *c_a = b->m * dwdr * inv_r;
-    *c_b = a->m * dwdr * inv_r;
+    *c_a = b->m * dwdr_r;
+    *c_b = a->m * dwdr_r;
   } else {
-    *c_a = a->rho * b->vol * dwdr * inv_r;
-    *c_b = b->rho * a->vol * dwdr * inv_r;
+    *c_a = a->rho * b->vol * dwdr_r;
+    *c_b = b->rho * a->vol * dwdr_r;
   }
 }
 

@@ -144,6 +144,35 @@ static inline double sphk_df(int kind, double q)
   }
 }
 
+/* f'(q) / q, which pair loops use for dW/dr / r = sigma_d / h^(d+2) f'(q) / q:
+   a polynomial without division where f' has the factor q (Lucy, Wendland
+   C2, and the cubic and quintic splines for q < 1), f'(q) / q elsewhere
+   (q >= 1 there), so that a loop need not divide by r */
+static inline double sphk_df_over_q(int kind, double q)
+{
+  switch (kind) {
+    case SPHK_LUCY: {
+      if (q >= 1.0) return 0.0;
+      const double u = 1.0 - q;
+      return -12.0 * u * u;
+    }
+    case SPHK_CUBIC:
+      if (q >= 1.0) return sphk_cubic_df(q) / q;
+      return -3.0 + 2.25 * q;
+    case SPHK_QUINTIC:
+      /* -5 (3-q)^4 + 30 (2-q)^4 - 75 (1-q)^4 = q (-120 + 120 q^2 - 50 q^3) */
+      if (q >= 1.0) return sphk_quintic_df(q) / q;
+      return -120.0 + q * q * (120.0 - 50.0 * q);
+    case SPHK_WENDLAND: {
+      if (q >= 2.0) return 0.0;
+      const double u = 1.0 - 0.5 * q;
+      return -5.0 * u * u * u;
+    }
+    default:
+      return 0.0;
+  }
+}
+
 /* name, support q_max and normalisation sigma_d for d = 1, 2, 3 */
 static inline const char *sphk_name(int kind)
 {

@@ -223,10 +223,13 @@ static void check_fused(void)
     if (n % 11 == 0) pa.mu = 0.0; /* both inviscid now and then */
     const double r = uniform(0.01, 1.0), dwdr = -uniform(0.1, 10.0), eta2 = uniform(0.0, 0.01);
     const double vr = uniform(-1.0, 1.0);
+    /* another term's denominator sharing the division, or none (1) */
+    const double other_den = (n % 2) ? uniform(1e-6, 1e6) : 1.0;
     for (int pf = 0; pf < SPHF_P_NFORMS; pf++)
       for (int vf = 0; vf < SPHF_V_NFORMS; vf++) {
-        double s_r, s_v, c_a, c_b;
-        sphf_pair(pf, vf, SPHF_XI_CLEARY, &pa, &pb, r, dwdr, eta2, vr, &s_r, &s_v, &c_a, &c_b);
+        double s_r, s_v, c_a, c_b, inv_other;
+        sphf_pair(pf, vf, SPHF_XI_CLEARY, &pa, &pb, r * r, dwdr / r, eta2, vr, other_den, &s_r,
+                  &s_v, &c_a, &c_b, &inv_other);
         const double dwdr_r = dwdr / r, inv = 1.0 / (r * r + eta2), dwdr_rr = dwdr * r * inv;
         double want_r = sphf_pressure_pair(pf, pa.m, pb.m, pa.rho, pb.rho, pa.p, pb.p, dwdr_r);
         const double visc = sphf_viscosity_pair(vf, SPHF_XI_CLEARY, pa.m, pb.m, pa.rho, pb.rho,
@@ -242,6 +245,8 @@ static void check_fused(void)
         expect(near(s_v, want_v, 1e-12), "fused s_v", s_v, want_v);
         expect(near(c_a, want_ca, 1e-12), "fused c_a", c_a, want_ca);
         expect(near(c_b, want_cb, 1e-12), "fused c_b", c_b, want_cb);
+        expect(near(inv_other, 1.0 / other_den, 1e-12), "fused inv_other", inv_other,
+               1.0 / other_den);
       }
   }
 }

@@ -1,6 +1,6 @@
 /* Unit tests of sph_kernels.h, in C99 (also compiled as C++ to prove the
    header is valid C++). Usage: test_kernels <check> [dim]
-   checks: normalisation <dim> | derivative | support | shape */
+   checks: normalisation <dim> | derivative | support | shape | over_q */
 
 #include "sph_kernels.h"
 
@@ -120,10 +120,36 @@ static void check_shape(void)
   }
 }
 
+/* f'(q) / q (the pair loops' form, polynomial where it can be) equals
+   f'(q) divided by q, through each piece's breaks and down to q = 0, where
+   it tends to f''(0) (the polynomials are exact there, the quotient is not) */
+static void check_over_q(void)
+{
+  for (int kind = 0; kind < SPHK_NKINDS; kind++) {
+    const double support = sphk_support(kind);
+    double worst = 0.0, at = 0.0;
+    for (int i = 1; i <= 3000; i++) {
+      const double q = support * i / 3000.0;
+      const double want = sphk_df(kind, q) / q, got = sphk_df_over_q(kind, q);
+      const double err = fabs(got - want) / (1.0 + fabs(want));
+      if (err > worst) worst = err, at = q;
+    }
+    char what[96];
+    snprintf(what, sizeof(what), "f'(q)/q against f'(q) / q (worst at q = %g)", at);
+    expect(worst < 1e-12, sphk_name(kind), what, worst, 0.0);
+    /* q -> 0: the second derivative of f at 0, by central differences of f' */
+    const double dq = 1e-5, second = (sphk_df(kind, dq) - sphk_df(kind, -dq)) / (2.0 * dq);
+    expect(fabs(sphk_df_over_q(kind, 0.0) - second) < 1e-6 * (1.0 + fabs(second)),
+           sphk_name(kind), "f'(q)/q at q = 0 against f''(0)", sphk_df_over_q(kind, 0.0), second);
+    expect(sphk_df_over_q(kind, support) == 0.0, sphk_name(kind), "f'(q)/q at the support",
+           sphk_df_over_q(kind, support), 0.0);
+  }
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 2) {
-    fprintf(stderr, "usage: %s normalisation <dim> | derivative | support | shape\n", argv[0]);
+    fprintf(stderr, "usage: %s normalisation <dim> | derivative | support | shape | over_q\n", argv[0]);
     return 2;
   }
   if (strcmp(argv[1], "normalisation") == 0 && argc == 3)
@@ -134,6 +160,8 @@ int main(int argc, char **argv)
     check_support();
   else if (strcmp(argv[1], "shape") == 0)
     check_shape();
+  else if (strcmp(argv[1], "over_q") == 0)
+    check_over_q();
   else {
     fprintf(stderr, "unknown check %s\n", argv[1]);
     return 2;
