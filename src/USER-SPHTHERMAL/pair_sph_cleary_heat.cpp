@@ -37,8 +37,8 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     PairSPHKernel(lmp, "sph/cleary/heat", "conductivities come from fix sph/materials"),
     mean(SPHC_HARMONIC), loop_own(0), in_flow_loop(0), temperature(nullptr), mass_of(nullptr),
     nmax_flow_loop(0), eta2(0.0), materials(nullptr), conductivity_varies(0),
-    conductance(nullptr), conductivity(nullptr), nmax(0), relax_wanted(0), relax_rate(nullptr),
-    nmax_relax(0), correct(0), sweeps(5), nmax_correct(0), corr_s(nullptr), corr_kinv(nullptr),
+    conductance(nullptr), loop_conductance(nullptr), conductivity(nullptr), nmax(0),
+    relax_wanted(0), relax_rate(nullptr), nmax_relax(0), correct(0), sweeps(5), nmax_correct(0), corr_s(nullptr), corr_kinv(nullptr),
     corr_lambda(nullptr), corr_deficit(nullptr), corr_coupling(nullptr), corr_state(nullptr),
     comm_stage(COMM_RELAX), interface_types(nullptr), type_conductivity(nullptr), nmax_interface(0),
     iface_distance(nullptr), iface_moment(nullptr), iface_vector(nullptr), iface_normal(nullptr),
@@ -54,6 +54,7 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
 PairSPHClearyHeat::~PairSPHClearyHeat()
 {
   memory->destroy(conductance);
+  memory->destroy(loop_conductance);
   memory->destroy(conductivity);
   memory->destroy(relax_rate);
   memory->destroy(temperature);
@@ -151,10 +152,15 @@ int PairSPHClearyHeat::flow_loop_possible()
   if (force->pair_match("sph/cleary/heat", 1) != this) return 0;
   auto flow = (PairSPHKernel *) force->pair_match("sph/harmonic/visc", 1);
   if (!flow || !same_kernel(flow)) return 0;
+  // the flow's list holds every pair of this style's; on type pairs only
+  // the flow covers, a zero conductance (per type pair) keeps the term out
+  int same_pairs = 1;
   for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++)
-      if (flow->setflag[i][j] != setflag[i][j]) return 0;
-  return 1;
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (setflag[i][j] && !flow->setflag[i][j]) return 0;
+      if (setflag[i][j] != flow->setflag[i][j]) same_pairs = 0;
+    }
+  return same_pairs || !conductivity_varies;
 }
 
 /* ----------------------------------------------------------------------
@@ -176,12 +182,18 @@ PairSPHClearyHeat::FlowLoopTerm PairSPHClearyHeat::begin_flow_loop_term()
     }
     for (int i = 0; i < nall; i++) relax_rate[i] = 0.0;
   }
+  // per type pair, zero where this style has no pair_coeff (init_one has
+  // set the others by now)
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = 1; j <= atom->ntypes; j++)
+      loop_conductance[i][j] =
+          setflag[std::min(i, j)][std::max(i, j)] && !conductivity_varies ? conductance[i][j] : 0.0;
   FlowLoopTerm term;
   term.temperature = temperature;
   term.mass = mass_of;
   term.rho = atom->rho;
   term.conductivity = conductivity_varies ? conductivity : nullptr;
-  term.conductance = conductance;
+  term.conductance = loop_conductance;
   term.relax_rate = relax_wanted ? relax_rate : nullptr;
   term.eta2 = eta2;
   return term;
@@ -243,17 +255,25 @@ template <int KERNEL, int MEAN> void PairSPHClearyHeat::eval_mean()
 
 template <int KERNEL, int MEAN, int CORRECT> void PairSPHClearyHeat::eval_flags()
 {
-  const int flags =
-      (relax_wanted ? 4 : 0) | (conductivity_varies ? 2 : 0) | (force->newton_pair ? 1 : 0);
+  const int flags = (relax_wanted ? 8 : 0) | (conductivity_varies ? 4 : 0) |
+      (force->newton_pair ? 2 : 0) | ((atom->rmass_flag && atom->rmass) ? 1 : 0);
   switch (flags) {
-    case 0: eval<KERNEL, MEAN, CORRECT, 0, 0, 0>(); break;
-    case 1: eval<KERNEL, MEAN, CORRECT, 0, 1, 0>(); break;
-    case 2: eval<KERNEL, MEAN, CORRECT, 1, 0, 0>(); break;
-    case 3: eval<KERNEL, MEAN, CORRECT, 1, 1, 0>(); break;
-    case 4: eval<KERNEL, MEAN, CORRECT, 0, 0, 1>(); break;
-    case 5: eval<KERNEL, MEAN, CORRECT, 0, 1, 1>(); break;
-    case 6: eval<KERNEL, MEAN, CORRECT, 1, 0, 1>(); break;
-    case 7: eval<KERNEL, MEAN, CORRECT, 1, 1, 1>(); break;
+    case 0: eval<KERNEL, MEAN, CORRECT, 0, 0, 0, 0>(); break;
+    case 1: eval<KERNEL, MEAN, CORRECT, 0, 0, 1, 0>(); break;
+    case 2: eval<KERNEL, MEAN, CORRECT, 0, 1, 0, 0>(); break;
+    case 3: eval<KERNEL, MEAN, CORRECT, 0, 1, 1, 0>(); break;
+    case 4: eval<KERNEL, MEAN, CORRECT, 1, 0, 0, 0>(); break;
+    case 5: eval<KERNEL, MEAN, CORRECT, 1, 0, 1, 0>(); break;
+    case 6: eval<KERNEL, MEAN, CORRECT, 1, 1, 0, 0>(); break;
+    case 7: eval<KERNEL, MEAN, CORRECT, 1, 1, 1, 0>(); break;
+    case 8: eval<KERNEL, MEAN, CORRECT, 0, 0, 0, 1>(); break;
+    case 9: eval<KERNEL, MEAN, CORRECT, 0, 0, 1, 1>(); break;
+    case 10: eval<KERNEL, MEAN, CORRECT, 0, 1, 0, 1>(); break;
+    case 11: eval<KERNEL, MEAN, CORRECT, 0, 1, 1, 1>(); break;
+    case 12: eval<KERNEL, MEAN, CORRECT, 1, 0, 0, 1>(); break;
+    case 13: eval<KERNEL, MEAN, CORRECT, 1, 0, 1, 1>(); break;
+    case 14: eval<KERNEL, MEAN, CORRECT, 1, 1, 0, 1>(); break;
+    case 15: eval<KERNEL, MEAN, CORRECT, 1, 1, 1, 1>(); break;
   }
 }
 
@@ -711,20 +731,23 @@ template <int KERNEL> void PairSPHClearyHeat::gather_support_pairs()
    kernel support (sph_conduction.h); T = esph / cv
 ------------------------------------------------------------------------- */
 
-template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RELAX>
+template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RMASS,
+          int RELAX>
 void PairSPHClearyHeat::eval()
 {
   const double *const *const x = atom->x;
   const double *const temperature = this->temperature;
-  const double *const mass_of = this->mass_of;
   const double *const rho = atom->rho;
+  // the mass by type: one array fewer to stream than a per-atom copy
+  const double *const mass = atom->mass;
+  const double *const rmass = atom->rmass;
   const int *const type = atom->type;
   double *const desph = atom->desph;
   const int nlocal = atom->nlocal;
 
   const double cutsq_kernel = cut_global * cut_global;
   const double inv_h = kernel.inv_h;
-  const double dwdr_r_scale = kernel.dw_scale * kernel.inv_h;    // dW/dr / r = this f'(q) / q
+  const double dw_scale = kernel.dw_scale;
 
   const int inum = list->inum;
   const int *const ilist = list->ilist;
@@ -740,7 +763,7 @@ void PairSPHClearyHeat::eval()
     const double ztmp = x[i][2];
     const double temp_i = temperature[i];
     const double rho_i = rho[i];
-    const double mass_i = mass_of[i];
+    const double mass_i = RMASS ? rmass[i] : mass[itype];
     const double k_i = VARYING_K ? conductivity[i] : 0.0;
     const double distance_i = (MEAN == SPHC_INTERFACE) ? iface_distance[i] : 0.0;
     const int *const interface_i = (MEAN == SPHC_INTERFACE) ? interface_types[itype] : nullptr;
@@ -758,8 +781,9 @@ void PairSPHClearyHeat::eval()
       if (rsq >= cutsq_kernel) continue;
 
       const int jtype = type[j];
-      // r dW/dr = r^2 (dW/dr / r): the division below does not wait for the root
-      const double r_dwdr = rsq * dwdr_r_scale * sphk_df_over_q(KERNEL, sqrt(rsq) * inv_h);
+      // the division below does not wait for the root
+      const double r = sqrt(rsq);
+      const double r_dwdr = r * dw_scale * sphk_df(KERNEL, r * inv_h);
       double conductance_ij =
           VARYING_K ? sphc_conductance(MEAN, k_i, conductivity[j]) : conductance_i[jtype];
       if (MEAN == SPHC_INTERFACE && interface_i[jtype])
@@ -768,7 +792,7 @@ void PairSPHClearyHeat::eval()
             : sphc_interface_conductance(type_conductivity[itype], type_conductivity[jtype],
                                          distance_i, iface_distance[j]);
       const double temp_ij = temp_i - temperature[j];
-      const double mass_j = mass_of[j];
+      const double mass_j = RMASS ? rmass[j] : mass[jtype];
       // the pairs within the support come in the order update_correction() stored them
       const double weight = CORRECT ? support_pairs[npair++].weight : 1.0;
       // with RELAX, F_ij per unit temperature difference (<= 0, as dW/dr) is
@@ -881,6 +905,7 @@ void PairSPHClearyHeat::allocate()
   PairSPHKernel::allocate();
   const int n = atom->ntypes;
   memory->create(conductance, n + 1, n + 1, "pair:conductance");
+  memory->create(loop_conductance, n + 1, n + 1, "pair:loop_conductance");
   memory->create(interface_types, n + 1, n + 1, "pair:interface_types");
   memory->create(type_conductivity, n + 1, "pair:type_conductivity");
   for (int i = 0; i <= n; i++) {

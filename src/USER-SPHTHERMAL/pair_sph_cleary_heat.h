@@ -81,6 +81,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   class FixSPHMaterials *materials;
   int conductivity_varies;    // 1 when some conductivity depends on T
   double **conductance;       // per type pair, when no conductivity varies
+  double **loop_conductance;  // the same for the flow pair's loop, 0 where this style has no pair
   double *conductivity;       // per atom (owned and ghost), when some varies
   int nmax;
   // per atom: the rate at which T relaxes towards the neighbours,
@@ -172,7 +173,8 @@ class PairSPHClearyHeat : public PairSPHKernel {
   template <int KERNEL> void eval_kernel();
   template <int KERNEL, int MEAN> void eval_mean();
   template <int KERNEL, int MEAN, int CORRECT> void eval_flags();
-  template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RELAX>
+  template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RMASS,
+            int RELAX>
   void eval();
   void tally_flows();
   int flow_loop_possible();
