@@ -214,7 +214,8 @@ double FixSPHDtReset::smoothing_length()
   if (h_user > 0.0) return h_user;
   double hmin = 0.0;
   for (const char *style : sph_pairs) {
-    Pair *pair = force->pair_match(style, 1);
+    // also the /omp styles
+    Pair *pair = force->pair_match(std::string("^") + style, 0);
     if (!pair) continue;
     int dim;
     const int *kind = (const int *) pair->extract("kernel_kind", dim);

@@ -90,37 +90,87 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
     }
     return;
   }
+  begin_compute();
+  eval_pairs(0, list->inum, atom->desph, relax_wanted ? relax_rate : nullptr);
+  end_compute();
+}
+
+/* ----------------------------------------------------------------------
+   before the pair loop: the per-atom state it reads, the correction's and
+   the interface's factors when the particles have moved, relax_rate zeroed
+------------------------------------------------------------------------- */
+
+void PairSPHClearyHeat::begin_compute()
+{
   if (conductivity_varies) update_conductivity();
   if (update->setupflag) check_neighbours();
   update_temperature();
   refresh_pairs = (correct || mean == SPHC_INTERFACE) && !pairs_current();
-  if (relax_wanted) {
-    if (atom->nmax > nmax_relax) {
-      nmax_relax = atom->nmax;
-      memory->destroy(relax_rate);
-      memory->create(relax_rate, nmax_relax, "pair:relax_rate");
+  if (relax_wanted) zero_relax_rate();
+  if (refresh_pairs) {
+    switch (kernel_kind) {
+      case SPHK_LUCY:
+        update_pairs<SPHK_LUCY>();
+        break;
+      case SPHK_CUBIC:
+        update_pairs<SPHK_CUBIC>();
+        break;
+      case SPHK_QUINTIC:
+        update_pairs<SPHK_QUINTIC>();
+        break;
+      case SPHK_WENDLAND:
+        update_pairs<SPHK_WENDLAND>();
+        break;
     }
-    const int nall = atom->nlocal + atom->nghost;
-    for (int i = 0; i < nall; i++) relax_rate[i] = 0.0;
   }
+}
 
+/* ----------------------------------------------------------------------
+   relax_rate of every owned and ghost atom zeroed, room for one copy per
+   thread (the /omp styles)
+------------------------------------------------------------------------- */
+
+void PairSPHClearyHeat::zero_relax_rate()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  if (atom->nmax * comm->nthreads > nmax_relax) {
+    nmax_relax = atom->nmax * comm->nthreads;
+    memory->destroy(relax_rate);
+    memory->create(relax_rate, nmax_relax, "pair:relax_rate");
+  }
+  for (int i = 0; i < nall; i++) relax_rate[i] = 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   the pair loop over ilist[ifrom..ito), adding to desph (and relax_rate)
+------------------------------------------------------------------------- */
+
+void PairSPHClearyHeat::eval_pairs(int ifrom, int ito, double *desph, double *relax)
+{
   switch (kernel_kind) {
     case SPHK_LUCY:
-      eval_kernel<SPHK_LUCY>();
+      eval_kernel<SPHK_LUCY>(ifrom, ito, desph, relax);
       break;
     case SPHK_CUBIC:
-      eval_kernel<SPHK_CUBIC>();
+      eval_kernel<SPHK_CUBIC>(ifrom, ito, desph, relax);
       break;
     case SPHK_QUINTIC:
-      eval_kernel<SPHK_QUINTIC>();
+      eval_kernel<SPHK_QUINTIC>(ifrom, ito, desph, relax);
       break;
     case SPHK_WENDLAND:
-      eval_kernel<SPHK_WENDLAND>();
+      eval_kernel<SPHK_WENDLAND>(ifrom, ito, desph, relax);
       break;
   }
+}
+
+/* ----------------------------------------------------------------------
+   after the pair loop (the rates summed)
+------------------------------------------------------------------------- */
+
+void PairSPHClearyHeat::end_compute()
+{
   check_rates(atom->desph, "desph");
   if (refresh_pairs && update->setupflag) report_setup();
-
   if (!flows.empty()) tally_flows();
   if (relax_wanted) finish_relax();
 }
@@ -173,15 +223,7 @@ PairSPHClearyHeat::FlowLoopTerm PairSPHClearyHeat::begin_flow_loop_term()
   if (conductivity_varies) update_conductivity();
   if (update->setupflag) check_neighbours();
   update_temperature();
-  const int nall = atom->nlocal + atom->nghost;
-  if (relax_wanted) {
-    if (atom->nmax > nmax_relax) {
-      nmax_relax = atom->nmax;
-      memory->destroy(relax_rate);
-      memory->create(relax_rate, nmax_relax, "pair:relax_rate");
-    }
-    for (int i = 0; i < nall; i++) relax_rate[i] = 0.0;
-  }
+  if (relax_wanted) zero_relax_rate();
   // per type pair, zero where this style has no pair_coeff (init_one has
   // set the others by now)
   for (int i = 1; i <= atom->ntypes; i++)
@@ -229,51 +271,56 @@ void PairSPHClearyHeat::end_flow_loop_term()
   if (relax_wanted) finish_relax();
 }
 
-template <int KERNEL> void PairSPHClearyHeat::eval_kernel()
+template <int KERNEL> void PairSPHClearyHeat::update_pairs()
 {
-  if (refresh_pairs) {
-    if (mean == SPHC_INTERFACE) mark_interface_atoms();
-    gather_support_pairs<KERNEL>();
-    if (correct) update_correction<KERNEL>();
-    if (mean == SPHC_INTERFACE) update_interface<KERNEL>();
-  }
-  if (mean == SPHC_ARITHMETIC)
-    eval_mean<KERNEL, SPHC_ARITHMETIC>();
-  else if (mean == SPHC_INTERFACE)
-    eval_mean<KERNEL, SPHC_INTERFACE>();
-  else
-    eval_mean<KERNEL, SPHC_HARMONIC>();
+  if (mean == SPHC_INTERFACE) mark_interface_atoms();
+  gather_support_pairs<KERNEL>();
+  if (correct) update_correction<KERNEL>();
+  if (mean == SPHC_INTERFACE) update_interface<KERNEL>();
 }
 
-template <int KERNEL, int MEAN> void PairSPHClearyHeat::eval_mean()
+template <int KERNEL>
+void PairSPHClearyHeat::eval_kernel(int ifrom, int ito, double *desph, double *relax)
+{
+  if (mean == SPHC_ARITHMETIC)
+    eval_mean<KERNEL, SPHC_ARITHMETIC>(ifrom, ito, desph, relax);
+  else if (mean == SPHC_INTERFACE)
+    eval_mean<KERNEL, SPHC_INTERFACE>(ifrom, ito, desph, relax);
+  else
+    eval_mean<KERNEL, SPHC_HARMONIC>(ifrom, ito, desph, relax);
+}
+
+template <int KERNEL, int MEAN>
+void PairSPHClearyHeat::eval_mean(int ifrom, int ito, double *desph, double *relax)
 {
   if (correct)
-    eval_flags<KERNEL, MEAN, 1>();
+    eval_flags<KERNEL, MEAN, 1>(ifrom, ito, desph, relax);
   else
-    eval_flags<KERNEL, MEAN, 0>();
+    eval_flags<KERNEL, MEAN, 0>(ifrom, ito, desph, relax);
 }
 
-template <int KERNEL, int MEAN, int CORRECT> void PairSPHClearyHeat::eval_flags()
+template <int KERNEL, int MEAN, int CORRECT>
+void PairSPHClearyHeat::eval_flags(int ifrom, int ito, double *desph, double *relax)
 {
   const int flags = (relax_wanted ? 8 : 0) | (conductivity_varies ? 4 : 0) |
       (force->newton_pair ? 2 : 0) | ((atom->rmass_flag && atom->rmass) ? 1 : 0);
   switch (flags) {
-    case 0: eval<KERNEL, MEAN, CORRECT, 0, 0, 0, 0>(); break;
-    case 1: eval<KERNEL, MEAN, CORRECT, 0, 0, 1, 0>(); break;
-    case 2: eval<KERNEL, MEAN, CORRECT, 0, 1, 0, 0>(); break;
-    case 3: eval<KERNEL, MEAN, CORRECT, 0, 1, 1, 0>(); break;
-    case 4: eval<KERNEL, MEAN, CORRECT, 1, 0, 0, 0>(); break;
-    case 5: eval<KERNEL, MEAN, CORRECT, 1, 0, 1, 0>(); break;
-    case 6: eval<KERNEL, MEAN, CORRECT, 1, 1, 0, 0>(); break;
-    case 7: eval<KERNEL, MEAN, CORRECT, 1, 1, 1, 0>(); break;
-    case 8: eval<KERNEL, MEAN, CORRECT, 0, 0, 0, 1>(); break;
-    case 9: eval<KERNEL, MEAN, CORRECT, 0, 0, 1, 1>(); break;
-    case 10: eval<KERNEL, MEAN, CORRECT, 0, 1, 0, 1>(); break;
-    case 11: eval<KERNEL, MEAN, CORRECT, 0, 1, 1, 1>(); break;
-    case 12: eval<KERNEL, MEAN, CORRECT, 1, 0, 0, 1>(); break;
-    case 13: eval<KERNEL, MEAN, CORRECT, 1, 0, 1, 1>(); break;
-    case 14: eval<KERNEL, MEAN, CORRECT, 1, 1, 0, 1>(); break;
-    case 15: eval<KERNEL, MEAN, CORRECT, 1, 1, 1, 1>(); break;
+    case 0: eval<KERNEL, MEAN, CORRECT, 0, 0, 0, 0>(ifrom, ito, desph, relax); break;
+    case 1: eval<KERNEL, MEAN, CORRECT, 0, 0, 1, 0>(ifrom, ito, desph, relax); break;
+    case 2: eval<KERNEL, MEAN, CORRECT, 0, 1, 0, 0>(ifrom, ito, desph, relax); break;
+    case 3: eval<KERNEL, MEAN, CORRECT, 0, 1, 1, 0>(ifrom, ito, desph, relax); break;
+    case 4: eval<KERNEL, MEAN, CORRECT, 1, 0, 0, 0>(ifrom, ito, desph, relax); break;
+    case 5: eval<KERNEL, MEAN, CORRECT, 1, 0, 1, 0>(ifrom, ito, desph, relax); break;
+    case 6: eval<KERNEL, MEAN, CORRECT, 1, 1, 0, 0>(ifrom, ito, desph, relax); break;
+    case 7: eval<KERNEL, MEAN, CORRECT, 1, 1, 1, 0>(ifrom, ito, desph, relax); break;
+    case 8: eval<KERNEL, MEAN, CORRECT, 0, 0, 0, 1>(ifrom, ito, desph, relax); break;
+    case 9: eval<KERNEL, MEAN, CORRECT, 0, 0, 1, 1>(ifrom, ito, desph, relax); break;
+    case 10: eval<KERNEL, MEAN, CORRECT, 0, 1, 0, 1>(ifrom, ito, desph, relax); break;
+    case 11: eval<KERNEL, MEAN, CORRECT, 0, 1, 1, 1>(ifrom, ito, desph, relax); break;
+    case 12: eval<KERNEL, MEAN, CORRECT, 1, 0, 0, 1>(ifrom, ito, desph, relax); break;
+    case 13: eval<KERNEL, MEAN, CORRECT, 1, 0, 1, 1>(ifrom, ito, desph, relax); break;
+    case 14: eval<KERNEL, MEAN, CORRECT, 1, 1, 0, 1>(ifrom, ito, desph, relax); break;
+    case 15: eval<KERNEL, MEAN, CORRECT, 1, 1, 1, 1>(ifrom, ito, desph, relax); break;
   }
 }
 
@@ -733,7 +780,7 @@ template <int KERNEL> void PairSPHClearyHeat::gather_support_pairs()
 
 template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RMASS,
           int RELAX>
-void PairSPHClearyHeat::eval()
+void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_rate)
 {
   const double *const *const x = atom->x;
   const double *const temperature = this->temperature;
@@ -742,20 +789,20 @@ void PairSPHClearyHeat::eval()
   const double *const mass = atom->mass;
   const double *const rmass = atom->rmass;
   const int *const type = atom->type;
-  double *const desph = atom->desph;
   const int nlocal = atom->nlocal;
 
   const double cutsq_kernel = cut_global * cut_global;
   const double inv_h = kernel.inv_h;
   const double dw_scale = kernel.dw_scale;
 
-  const int inum = list->inum;
   const int *const ilist = list->ilist;
   const int *const numneigh = list->numneigh;
   int **const firstneigh = list->firstneigh;
+  // the correction's pairs are stored in list order: only the whole list
+  // (one thread) reads them
   size_t npair = 0;
 
-  for (int ii = 0; ii < inum; ii++) {
+  for (int ii = ifrom; ii < ito; ii++) {
     const int i = ilist[ii];
     const int itype = type[i];
     const double xtmp = x[i][0];

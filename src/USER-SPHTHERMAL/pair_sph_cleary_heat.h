@@ -170,12 +170,19 @@ class PairSPHClearyHeat : public PairSPHKernel {
 
   void allocate() override;
   void update_conductivity();
-  template <int KERNEL> void eval_kernel();
-  template <int KERNEL, int MEAN> void eval_mean();
-  template <int KERNEL, int MEAN, int CORRECT> void eval_flags();
+  void begin_compute();
+  void eval_pairs(int ifrom, int ito, double *desph, double *relax);
+  void end_compute();
+  void zero_relax_rate();
+  template <int KERNEL> void update_pairs();
+  template <int KERNEL> void eval_kernel(int ifrom, int ito, double *desph, double *relax);
+  template <int KERNEL, int MEAN>
+  void eval_mean(int ifrom, int ito, double *desph, double *relax);
+  template <int KERNEL, int MEAN, int CORRECT>
+  void eval_flags(int ifrom, int ito, double *desph, double *relax);
   template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RMASS,
             int RELAX>
-  void eval();
+  void eval(int ifrom, int ito, double *desph, double *relax);
   void tally_flows();
   int flow_loop_possible();
   void update_temperature();

@@ -71,6 +71,19 @@ PairSPHHarmonicVisc::~PairSPHHarmonicVisc()
 void PairSPHHarmonicVisc::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  begin_compute();
+  const Rates rates = {atom->f, atom->drho, atom->desph, heat_term.relax_rate, nullptr};
+  eval_pairs(0, list->inum, rates);
+  end_compute();
+  if (vflag_fdotr) virial_fdotr_compute();
+}
+
+/* ----------------------------------------------------------------------
+   before the pair loops: the per-atom state they read
+------------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::begin_compute()
+{
   // fix sph sets vest = v on owned atoms at setup without updating their
   // ghosts: refresh them, or results depend on newton and the rank count
   if (update->setupflag) SPHCompat::forward_comm(comm, this);
@@ -81,97 +94,120 @@ void PairSPHHarmonicVisc::compute(int eflag, int vflag)
     for (int k = 0; k < 3; k++) gravity[k] = body_force[k];
     hydrostatic = (gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0);
   }
-
+  heat_term = PairSPHClearyHeat::FlowLoopTerm();
   if (heat && heat->term_in_flow_loop()) heat_term = heat->begin_flow_loop_term();
+}
 
+/* ----------------------------------------------------------------------
+   the pair loops over ilist[ifrom..ito), adding to 'rates'
+------------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::eval_pairs(int ifrom, int ito, const Rates &rates)
+{
   switch (kernel_kind) {
     case SPHK_LUCY:
-      eval_kernel<SPHK_LUCY>();
+      eval_kernel<SPHK_LUCY>(ifrom, ito, rates);
       break;
     case SPHK_CUBIC:
-      eval_kernel<SPHK_CUBIC>();
+      eval_kernel<SPHK_CUBIC>(ifrom, ito, rates);
       break;
     case SPHK_QUINTIC:
-      eval_kernel<SPHK_QUINTIC>();
+      eval_kernel<SPHK_QUINTIC>(ifrom, ito, rates);
       break;
     case SPHK_WENDLAND:
-      eval_kernel<SPHK_WENDLAND>();
+      eval_kernel<SPHK_WENDLAND>(ifrom, ito, rates);
       break;
   }
+}
+
+/* ----------------------------------------------------------------------
+   after the pair loops (the rates summed): no non-finite rate
+------------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::end_compute()
+{
   check_rates3(atom->f, "force");
   check_rates(atom->drho, "drho");
   if (heat && heat->term_in_flow_loop()) heat->end_flow_loop_term();
-  if (vflag_fdotr) virial_fdotr_compute();
 }
 
-template <int KERNEL> void PairSPHHarmonicVisc::eval_kernel()
+void PairSPHHarmonicVisc::tally_pair(int i, int j, double fx, double fy, double fz, double delx,
+                                     double dely, double delz, void * /*thread*/)
+{
+  ev_tally_xyz(i, j, atom->nlocal, force->newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+}
+
+template <int KERNEL>
+void PairSPHHarmonicVisc::eval_kernel(int ifrom, int ito, const Rates &rates)
 {
   switch (pressure_form) {
     case SPHF_P_SYMMETRIC:
-      eval_pressure<KERNEL, SPHF_P_SYMMETRIC>();
+      eval_pressure<KERNEL, SPHF_P_SYMMETRIC>(ifrom, ito, rates);
       break;
     case SPHF_P_SUM:
-      eval_pressure<KERNEL, SPHF_P_SUM>();
+      eval_pressure<KERNEL, SPHF_P_SUM>(ifrom, ito, rates);
       break;
     default:
-      eval_pressure<KERNEL, SPHF_P_AVERAGED>();
+      eval_pressure<KERNEL, SPHF_P_AVERAGED>(ifrom, ito, rates);
   }
   if (delta > 0.0) {
     const int flags = (force->newton_pair ? 1 : 0) | (hydrostatic ? 2 : 0);
     switch (flags) {
-      case 0: eval_diffusion<KERNEL, 0, 0>(); break;
-      case 1: eval_diffusion<KERNEL, 1, 0>(); break;
-      case 2: eval_diffusion<KERNEL, 0, 1>(); break;
-      case 3: eval_diffusion<KERNEL, 1, 1>(); break;
+      case 0: eval_diffusion<KERNEL, 0, 0>(ifrom, ito, rates.drho); break;
+      case 1: eval_diffusion<KERNEL, 1, 0>(ifrom, ito, rates.drho); break;
+      case 2: eval_diffusion<KERNEL, 0, 1>(ifrom, ito, rates.drho); break;
+      case 3: eval_diffusion<KERNEL, 1, 1>(ifrom, ito, rates.drho); break;
     }
   }
 }
 
-template <int KERNEL, int PRESSURE> void PairSPHHarmonicVisc::eval_pressure()
+template <int KERNEL, int PRESSURE>
+void PairSPHHarmonicVisc::eval_pressure(int ifrom, int ito, const Rates &rates)
 {
   switch (viscosity_form) {
     case SPHF_V_CLEARY:
-      eval_heat<KERNEL, PRESSURE, SPHF_V_CLEARY>();
+      eval_heat<KERNEL, PRESSURE, SPHF_V_CLEARY>(ifrom, ito, rates);
       break;
     case SPHF_V_MORRIS:
-      eval_heat<KERNEL, PRESSURE, SPHF_V_MORRIS>();
+      eval_heat<KERNEL, PRESSURE, SPHF_V_MORRIS>(ifrom, ito, rates);
       break;
     default:
-      eval_heat<KERNEL, PRESSURE, SPHF_V_ADAMI>();
+      eval_heat<KERNEL, PRESSURE, SPHF_V_ADAMI>(ifrom, ito, rates);
   }
 }
 
-template <int KERNEL, int PRESSURE, int VISCOSITY> void PairSPHHarmonicVisc::eval_heat()
+template <int KERNEL, int PRESSURE, int VISCOSITY>
+void PairSPHHarmonicVisc::eval_heat(int ifrom, int ito, const Rates &rates)
 {
   if (!heat || !heat->term_in_flow_loop()) {
-    eval_dimension<KERNEL, PRESSURE, VISCOSITY, 0>();
+    eval_dimension<KERNEL, PRESSURE, VISCOSITY, 0>(ifrom, ito, rates);
     return;
   }
   const int k_flag = heat_term.conductivity ? HEAT_ATOM_K : 0;
   const int relax_flag = heat_term.relax_rate ? HEAT_RELAX : 0;
   switch (k_flag | relax_flag) {
     case 0:
-      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON>();
+      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON>(ifrom, ito, rates);
       break;
     case HEAT_ATOM_K:
-      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON | HEAT_ATOM_K>();
+      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON | HEAT_ATOM_K>(ifrom, ito, rates);
       break;
     case HEAT_RELAX:
-      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON | HEAT_RELAX>();
+      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON | HEAT_RELAX>(ifrom, ito, rates);
       break;
     default:
-      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON | HEAT_ATOM_K | HEAT_RELAX>();
+      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON | HEAT_ATOM_K | HEAT_RELAX>(ifrom, ito, rates);
   }
 }
 
 template <int KERNEL, int PRESSURE, int VISCOSITY, int HEAT>
-void PairSPHHarmonicVisc::eval_dimension()
+void PairSPHHarmonicVisc::eval_dimension(int ifrom, int ito, const Rates &rates)
 {
   // 2-D: the z components are zero, and so are their terms
   if (domain->dimension == 2)
-    eval<KERNEL, PRESSURE, VISCOSITY, HEAT, 2>();
+    eval<KERNEL, PRESSURE, VISCOSITY, HEAT, 2>(ifrom, ito, rates);
   else
-    eval<KERNEL, PRESSURE, VISCOSITY, HEAT, 3>();
+    eval<KERNEL, PRESSURE, VISCOSITY, HEAT, 3>(ifrom, ito, rates);
 }
 
 /* ----------------------------------------------------------------------
@@ -238,15 +274,16 @@ void PairSPHHarmonicVisc::update_atom_state()
 ------------------------------------------------------------------------- */
 
 template <int KERNEL, int PRESSURE, int VISCOSITY, int HEAT, int DIM>
-void PairSPHHarmonicVisc::eval()
+void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
 {
   const int newton_pair = force->newton_pair;
   const double *const *const x = atom->x;
   const double *const *const v = atom->v;
   const double *const *const vest = atom->vest;
-  double *const *const f = atom->f;
-  double *const drho = atom->drho;
-  double *const desph = atom->desph;
+  double *const *const f = rates.f;
+  double *const drho = rates.drho;
+  double *const desph = rates.desph;
+  double *const relax_rate = rates.relax_rate;
   const int *const type = atom->type;
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
@@ -266,12 +303,11 @@ void PairSPHHarmonicVisc::eval()
   const double inv_h = kernel.inv_h;
   const double dwdr_r_scale = kernel.dw_scale * kernel.inv_h;    // dW/dr / r = this f'(q) / q
 
-  const int inum = list->inum;
   const int *const ilist = list->ilist;
   const int *const numneigh = list->numneigh;
   int **const firstneigh = list->firstneigh;
 
-  for (int ii = 0; ii < inum; ii++) {
+  for (int ii = ifrom; ii < ito; ii++) {
     const int i = ilist[ii];
     const double xtmp = x[i][0], ytmp = x[i][1], ztmp = x[i][2];
     const sphf_particle a = {mass_of[i], density[i], volume[i], pressure[i], viscosity[i]};
@@ -298,7 +334,7 @@ void PairSPHHarmonicVisc::eval()
       if (HEAT & HEAT_RELAX) relax_i -= term.mass[j] * relax_ij;
       if (newton_pair || j < nlocal) {
         desph[j] -= hmass_i * heat_ij;
-        if (HEAT & HEAT_RELAX) term.relax_rate[j] -= hmass_i * relax_ij;
+        if (HEAT & HEAT_RELAX) relax_rate[j] -= hmass_i * relax_ij;
       }
     };
 
@@ -348,14 +384,14 @@ void PairSPHHarmonicVisc::eval()
         if (DIM == 3) f[j][2] -= fz;
         drho[j] += c_j * vr;
       }
-      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+      if (evflag) tally_pair(i, j, fx, fy, fz, delx, dely, delz, rates.thread);
     }
     f[i][0] += fx_i;
     f[i][1] += fy_i;
     if (DIM == 3) f[i][2] += fz_i;
     drho[i] += drho_i;
     if (HEAT) desph[i] += desph_i;
-    if (HEAT & HEAT_RELAX) term.relax_rate[i] += relax_i;
+    if (HEAT & HEAT_RELAX) relax_rate[i] += relax_i;
   }
 }
 
@@ -368,11 +404,11 @@ void PairSPHHarmonicVisc::eval()
    papers set rho_b = rho_a for wall particles)
 ------------------------------------------------------------------------- */
 
-template <int KERNEL, int NEWTON_PAIR, int HYDROSTATIC> void PairSPHHarmonicVisc::eval_diffusion()
+template <int KERNEL, int NEWTON_PAIR, int HYDROSTATIC>
+void PairSPHHarmonicVisc::eval_diffusion(int ifrom, int ito, double *drho)
 {
   const double *const *const x = atom->x;
   const double *const rho = atom->rho;
-  double *const drho = atom->drho;
   const int *const type = atom->type;
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
@@ -380,7 +416,7 @@ template <int KERNEL, int NEWTON_PAIR, int HYDROSTATIC> void PairSPHHarmonicVisc
   const double inv_h = kernel.inv_h;
   const double dw_scale = kernel.dw_scale;
 
-  for (int ii = 0; ii < list->inum; ii++) {
+  for (int ii = ifrom; ii < ito; ii++) {
     const int i = list->ilist[ii];
     if (mask[i] & wall_groupbit) continue;
     const sphe_eos *const eos_i = materials->eos(type[i]);

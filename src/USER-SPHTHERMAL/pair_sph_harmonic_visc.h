@@ -66,13 +66,31 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // the heat term in eval(): on, per-atom conductivities, relax_rate
   enum { HEAT_ON = 1, HEAT_ATOM_K = 2, HEAT_RELAX = 4 };
 
+  // where the pair loops add their rates: the atom's arrays, or one
+  // thread's copies of them (the /omp style; thread: its ThrData)
+  struct Rates {
+    double **f;
+    double *drho, *desph, *relax_rate;
+    void *thread;
+  };
+  void begin_compute();
+  void eval_pairs(int ifrom, int ito, const Rates &rates);
+  void end_compute();
+  // ev_tally_xyz for pair i, j (the /omp style tallies per thread)
+  virtual void tally_pair(int i, int j, double fx, double fy, double fz, double delx, double dely,
+                          double delz, void *thread);
+
   void update_atom_state();
-  template <int KERNEL> void eval_kernel();
-  template <int KERNEL, int PRESSURE> void eval_pressure();
-  template <int KERNEL, int PRESSURE, int VISCOSITY> void eval_heat();
-  template <int KERNEL, int PRESSURE, int VISCOSITY, int HEAT> void eval_dimension();
-  template <int KERNEL, int PRESSURE, int VISCOSITY, int HEAT, int DIM> void eval();
-  template <int KERNEL, int NEWTON_PAIR, int HYDROSTATIC> void eval_diffusion();
+  template <int KERNEL> void eval_kernel(int ifrom, int ito, const Rates &rates);
+  template <int KERNEL, int PRESSURE> void eval_pressure(int ifrom, int ito, const Rates &rates);
+  template <int KERNEL, int PRESSURE, int VISCOSITY>
+  void eval_heat(int ifrom, int ito, const Rates &rates);
+  template <int KERNEL, int PRESSURE, int VISCOSITY, int HEAT>
+  void eval_dimension(int ifrom, int ito, const Rates &rates);
+  template <int KERNEL, int PRESSURE, int VISCOSITY, int HEAT, int DIM>
+  void eval(int ifrom, int ito, const Rates &rates);
+  template <int KERNEL, int NEWTON_PAIR, int HYDROSTATIC>
+  void eval_diffusion(int ifrom, int ito, double *drho);
 };
 
 }    // namespace LAMMPS_NS
