@@ -150,15 +150,6 @@ void PairSPHHarmonicVisc::eval_kernel(int ifrom, int ito, const Rates &rates)
     default:
       eval_pressure<KERNEL, SPHF_P_AVERAGED>(ifrom, ito, rates);
   }
-  if (delta > 0.0) {
-    const int flags = (force->newton_pair ? 1 : 0) | (hydrostatic ? 2 : 0);
-    switch (flags) {
-      case 0: eval_diffusion<KERNEL, 0, 0>(ifrom, ito, rates.drho); break;
-      case 1: eval_diffusion<KERNEL, 1, 0>(ifrom, ito, rates.drho); break;
-      case 2: eval_diffusion<KERNEL, 0, 1>(ifrom, ito, rates.drho); break;
-      case 3: eval_diffusion<KERNEL, 1, 1>(ifrom, ito, rates.drho); break;
-    }
-  }
 }
 
 template <int KERNEL, int PRESSURE>
@@ -179,35 +170,55 @@ void PairSPHHarmonicVisc::eval_pressure(int ifrom, int ito, const Rates &rates)
 template <int KERNEL, int PRESSURE, int VISCOSITY>
 void PairSPHHarmonicVisc::eval_heat(int ifrom, int ito, const Rates &rates)
 {
-  if (!heat || !heat->term_in_flow_loop()) {
-    eval_dimension<KERNEL, PRESSURE, VISCOSITY, 0>(ifrom, ito, rates);
-    return;
-  }
-  const int k_flag = heat_term.conductivity ? HEAT_ATOM_K : 0;
-  const int relax_flag = heat_term.relax_rate ? HEAT_RELAX : 0;
-  switch (k_flag | relax_flag) {
+  int terms = (delta > 0.0) ? DIFFUSION : 0;
+  if (heat && heat->term_in_flow_loop())
+    terms |= HEAT_ON | (heat_term.conductivity ? HEAT_ATOM_K : 0) |
+        (heat_term.relax_rate ? HEAT_RELAX : 0);
+  switch (terms) {
     case 0:
+      eval_dimension<KERNEL, PRESSURE, VISCOSITY, 0>(ifrom, ito, rates);
+      break;
+    case HEAT_ON:
       eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON>(ifrom, ito, rates);
       break;
-    case HEAT_ATOM_K:
+    case HEAT_ON | HEAT_ATOM_K:
       eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON | HEAT_ATOM_K>(ifrom, ito, rates);
       break;
-    case HEAT_RELAX:
+    case HEAT_ON | HEAT_RELAX:
       eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON | HEAT_RELAX>(ifrom, ito, rates);
       break;
+    case HEAT_ON | HEAT_ATOM_K | HEAT_RELAX:
+      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON | HEAT_ATOM_K | HEAT_RELAX>(ifrom, ito,
+                                                                                      rates);
+      break;
+    case DIFFUSION:
+      eval_dimension<KERNEL, PRESSURE, VISCOSITY, DIFFUSION>(ifrom, ito, rates);
+      break;
+    case DIFFUSION | HEAT_ON:
+      eval_dimension<KERNEL, PRESSURE, VISCOSITY, DIFFUSION | HEAT_ON>(ifrom, ito, rates);
+      break;
+    case DIFFUSION | HEAT_ON | HEAT_ATOM_K:
+      eval_dimension<KERNEL, PRESSURE, VISCOSITY, DIFFUSION | HEAT_ON | HEAT_ATOM_K>(ifrom, ito,
+                                                                                     rates);
+      break;
+    case DIFFUSION | HEAT_ON | HEAT_RELAX:
+      eval_dimension<KERNEL, PRESSURE, VISCOSITY, DIFFUSION | HEAT_ON | HEAT_RELAX>(ifrom, ito,
+                                                                                    rates);
+      break;
     default:
-      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON | HEAT_ATOM_K | HEAT_RELAX>(ifrom, ito, rates);
+      eval_dimension<KERNEL, PRESSURE, VISCOSITY, DIFFUSION | HEAT_ON | HEAT_ATOM_K | HEAT_RELAX>(
+          ifrom, ito, rates);
   }
 }
 
-template <int KERNEL, int PRESSURE, int VISCOSITY, int HEAT>
+template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS>
 void PairSPHHarmonicVisc::eval_dimension(int ifrom, int ito, const Rates &rates)
 {
   // 2-D: the z components are zero, and so are their terms
   if (domain->dimension == 2)
-    eval<KERNEL, PRESSURE, VISCOSITY, HEAT, 2>(ifrom, ito, rates);
+    eval<KERNEL, PRESSURE, VISCOSITY, TERMS, 2>(ifrom, ito, rates);
   else
-    eval<KERNEL, PRESSURE, VISCOSITY, HEAT, 3>(ifrom, ito, rates);
+    eval<KERNEL, PRESSURE, VISCOSITY, TERMS, 3>(ifrom, ito, rates);
 }
 
 /* ----------------------------------------------------------------------
@@ -273,7 +284,7 @@ void PairSPHHarmonicVisc::update_atom_state()
    continuity equation v
 ------------------------------------------------------------------------- */
 
-template <int KERNEL, int PRESSURE, int VISCOSITY, int HEAT, int DIM>
+template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS, int DIM>
 void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
 {
   const int newton_pair = force->newton_pair;
@@ -297,6 +308,11 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
   const double *const viscosity = this->viscosity;
   const double xi = this->xi;
   const double eta2 = this->eta2;
+  const double *const atom_rho = atom->rho;
+  const sphe_eos *const *const eos_of = this->eos_of.data();
+  const double delta_h_half = 0.5 * delta * kernel.h;
+  const int hydrostatic = this->hydrostatic;
+  const double gravity[3] = {this->gravity[0], this->gravity[1], this->gravity[2]};
   const PairSPHClearyHeat::FlowLoopTerm term = heat_term;
 
   const double cutsq_kernel = cut_global * cut_global;
@@ -315,26 +331,27 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
     const int jnum = numneigh[i];
     double fx_i = 0.0, fy_i = 0.0, fz_i = 0.0, drho_i = 0.0, desph_i = 0.0, relax_i = 0.0;
     // the heat term's state of i (sph/cleary/heat's eval())
-    const double temp_i = HEAT ? term.temperature[i] : 0.0;
-    const double hmass_i = HEAT ? term.mass[i] : 0.0;
-    const double rho_i = HEAT ? term.rho[i] : 0.0;
-    const double k_i = (HEAT & HEAT_ATOM_K) ? term.conductivity[i] : 0.0;
-    const double *const conductance_i = (HEAT & HEAT_ATOM_K) ? nullptr : term.conductance[type[i]];
+    const double temp_i = (TERMS & HEAT_ON) ? term.temperature[i] : 0.0;
+    const double hmass_i = (TERMS & HEAT_ON) ? term.mass[i] : 0.0;
+    const double rho_i = (TERMS & HEAT_ON) ? term.rho[i] : 0.0;
+    const double k_i = (TERMS & HEAT_ATOM_K) ? term.conductivity[i] : 0.0;
+    const double *const conductance_i = (TERMS & HEAT_ATOM_K) ? nullptr : term.conductance[type[i]];
     const int wall_i = mask[i] & wall_groupbit;
+    const sphe_eos *const eos_i = (TERMS & DIFFUSION) ? eos_of[type[i]] : nullptr;
 
     // the heat term of sph/cleary/heat's eval() for the pair, given 1 over
     // its denominator: F_ij per unit temperature difference, then F_ij
     auto add_heat = [&](int j, double r_dwdr, double inv_heat) {
-      const double conductance_ij = (HEAT & HEAT_ATOM_K)
+      const double conductance_ij = (TERMS & HEAT_ATOM_K)
           ? sphc_harmonic_conductance(k_i, term.conductivity[j])
           : conductance_i[type[j]];
       const double relax_ij = sphc_cleary_pair_inv(conductance_ij, 1.0, r_dwdr, inv_heat);
       const double heat_ij = relax_ij * (temp_i - term.temperature[j]);
       desph_i += term.mass[j] * heat_ij;
-      if (HEAT & HEAT_RELAX) relax_i -= term.mass[j] * relax_ij;
+      if (TERMS & HEAT_RELAX) relax_i -= term.mass[j] * relax_ij;
       if (newton_pair || j < nlocal) {
         desph[j] -= hmass_i * heat_ij;
-        if (HEAT & HEAT_RELAX) relax_rate[j] -= hmass_i * relax_ij;
+        if (TERMS & HEAT_RELAX) relax_rate[j] -= hmass_i * relax_ij;
       }
     };
 
@@ -352,7 +369,7 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
       // sets their density and velocity every step and they are not
       // integrated with fix sph; heat still flows
       if (wall_i && (mask[j] & wall_groupbit)) {
-        if (HEAT)
+        if (TERMS & HEAT_ON)
           add_heat(j, rsq * dwdr_r,
                    1.0 / sphc_cleary_denominator(rho_i, term.rho[j], rsq, term.eta2));
         continue;
@@ -365,7 +382,7 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
       double s_r, s_v, c_i, c_j, inv_heat;
       // the heat term's denominator shares the flow's one division
       const double heat_den =
-          HEAT ? sphc_cleary_denominator(rho_i, term.rho[j], rsq, term.eta2) : 1.0;
+          (TERMS & HEAT_ON) ? sphc_cleary_denominator(rho_i, term.rho[j], rsq, term.eta2) : 1.0;
       sphf_pair(PRESSURE, VISCOSITY, xi, &a, &b, rsq, dwdr_r, eta2, vr_est, heat_den, &s_r, &s_v,
                 &c_i, &c_j, &inv_heat);
       const double fx = s_r * delx + s_v * dvx;
@@ -377,12 +394,28 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
       fy_i += fy;
       fz_i += fz;
       drho_i += c_i * vr;
-      if (HEAT) add_heat(j, rsq * dwdr_r, inv_heat);
+      if (TERMS & HEAT_ON) add_heat(j, rsq * dwdr_r, inv_heat);
+      // density diffusion (Ng et al. 2020, eqs 5-6; Fourtakas's with
+      // hydrostatic), not across walls (the papers set rho_b = rho_a there)
+      double diffusion_j = 0.0;
+      if ((TERMS & DIFFUSION) && !wall_i && !(mask[j] & wall_groupbit)) {
+        const sphe_eos *const eos_j = eos_of[type[j]];
+        // one coefficient per pair: the mean speed of sound of the two
+        const double delta_h_c0 = delta_h_half * (eos_i->c0 + eos_j->c0);
+        double drho_ji = atom_rho[j] - atom_rho[i], drho_ij = -drho_ji;
+        if (hydrostatic) {
+          const double g_r = gravity[0] * delx + gravity[1] * dely + gravity[2] * delz;
+          drho_ji -= sphe_density(eos_i, eos_i->p_background - eos_i->rho0 * g_r) - eos_i->rho0;
+          drho_ij -= sphe_density(eos_j, eos_j->p_background + eos_j->rho0 * g_r) - eos_j->rho0;
+        }
+        drho_i += sphf_diffusion_pair(delta_h_c0, b.m, atom_rho[j], dwdr_r) * drho_ji;
+        diffusion_j = sphf_diffusion_pair(delta_h_c0, a.m, atom_rho[i], dwdr_r) * drho_ij;
+      }
       if (newton_pair || j < nlocal) {
         f[j][0] -= fx;
         f[j][1] -= fy;
         if (DIM == 3) f[j][2] -= fz;
-        drho[j] += c_j * vr;
+        drho[j] += c_j * vr + diffusion_j;
       }
       if (evflag) tally_pair(i, j, fx, fy, fz, delx, dely, delz, rates.thread);
     }
@@ -390,64 +423,11 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
     f[i][1] += fy_i;
     if (DIM == 3) f[i][2] += fz_i;
     drho[i] += drho_i;
-    if (HEAT) desph[i] += desph_i;
-    if (HEAT & HEAT_RELAX) relax_rate[i] += relax_i;
+    if (TERMS & HEAT_ON) desph[i] += desph_i;
+    if (TERMS & HEAT_RELAX) relax_rate[i] += relax_i;
   }
 }
 
-/* ----------------------------------------------------------------------
-   density diffusion of Molteni & Colagrossi (Ng et al. 2020, eqs 5-6), or
-   of Fourtakas et al. (Reece et al. 2024, eq 39), which diffuses only the
-   departure from the hydrostatic density difference rho^H_ba =
-   rho(P_b + rho0 g . r_ba) - rho0 (by the equation of state of a), so that
-   a column at rest under gravity stays at rest; not across walls (the
-   papers set rho_b = rho_a for wall particles)
-------------------------------------------------------------------------- */
-
-template <int KERNEL, int NEWTON_PAIR, int HYDROSTATIC>
-void PairSPHHarmonicVisc::eval_diffusion(int ifrom, int ito, double *drho)
-{
-  const double *const *const x = atom->x;
-  const double *const rho = atom->rho;
-  const int *const type = atom->type;
-  const int *const mask = atom->mask;
-  const int nlocal = atom->nlocal;
-  const double cutsq_kernel = cut_global * cut_global;
-  const double inv_h = kernel.inv_h;
-  const double dw_scale = kernel.dw_scale;
-
-  for (int ii = ifrom; ii < ito; ii++) {
-    const int i = list->ilist[ii];
-    if (mask[i] & wall_groupbit) continue;
-    const sphe_eos *const eos_i = materials->eos(type[i]);
-    const int *const jlist = list->firstneigh[i];
-    double drho_i = 0.0;
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      if (mask[j] & wall_groupbit) continue;
-      const double delx = x[i][0] - x[j][0];
-      const double dely = x[i][1] - x[j][1];
-      const double delz = x[i][2] - x[j][2];
-      const double rsq = delx * delx + dely * dely + delz * delz;
-      if (rsq >= cutsq_kernel) continue;
-      const double r = sqrt(rsq);
-      const double dwdr_r = dw_scale * sphk_df(KERNEL, r * inv_h) / r;
-      const sphe_eos *const eos_j = materials->eos(type[j]);
-      // one coefficient per pair: the mean speed of sound of the two
-      const double delta_h_c0 = delta * kernel.h * 0.5 * (eos_i->c0 + eos_j->c0);
-      double drho_ji = rho[j] - rho[i], drho_ij = -drho_ji;
-      if (HYDROSTATIC) {
-        const double g_r = gravity[0] * delx + gravity[1] * dely + gravity[2] * delz;
-        drho_ji -= sphe_density(eos_i, eos_i->p_background - eos_i->rho0 * g_r) - eos_i->rho0;
-        drho_ij -= sphe_density(eos_j, eos_j->p_background + eos_j->rho0 * g_r) - eos_j->rho0;
-      }
-      drho_i += sphf_diffusion_pair(delta_h_c0, mass_of[j], rho[j], dwdr_r) * drho_ji;
-      if (NEWTON_PAIR || j < nlocal)
-        drho[j] += sphf_diffusion_pair(delta_h_c0, mass_of[i], rho[i], dwdr_r) * drho_ij;
-    }
-    drho[i] += drho_i;
-  }
-}
 
 /* ----------------------------------------------------------------------
    pair_style sph/harmonic/visc kernel cutoff [pressure symmetric|sum|averaged]
@@ -605,6 +585,8 @@ void PairSPHHarmonicVisc::init_style()
 
 
   eta2 = init_kernel();
+  eos_of.assign(atom->ntypes + 1, nullptr);
+  for (int t = 1; t <= atom->ntypes; t++) eos_of[t] = materials->eos(t);
   // sph/cleary/heat decides at its init whether this loop evaluates its term
   heat = (PairSPHClearyHeat *) force->pair_match("sph/cleary/heat", 1);
 

@@ -14,6 +14,7 @@ PairStyle(sph/harmonic/visc,PairSPHHarmonicVisc);
 
 #include "pair_sph_cleary_heat.h"
 #include "pair_sph_kernel.h"
+#include "sph_eos.h"
 
 #include <vector>
 
@@ -64,7 +65,9 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   class PairSPHClearyHeat *heat;
   PairSPHClearyHeat::FlowLoopTerm heat_term;
   // the heat term in eval(): on, per-atom conductivities, relax_rate
-  enum { HEAT_ON = 1, HEAT_ATOM_K = 2, HEAT_RELAX = 4 };
+  // and the density diffusion
+  enum { HEAT_ON = 1, HEAT_ATOM_K = 2, HEAT_RELAX = 4, DIFFUSION = 8 };
+  std::vector<const sphe_eos *> eos_of;    // per type (nullptr: none), for the diffusion
 
   // where the pair loops add their rates: the atom's arrays, or one
   // thread's copies of them (the /omp style; thread: its ThrData)
@@ -85,12 +88,10 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   template <int KERNEL, int PRESSURE> void eval_pressure(int ifrom, int ito, const Rates &rates);
   template <int KERNEL, int PRESSURE, int VISCOSITY>
   void eval_heat(int ifrom, int ito, const Rates &rates);
-  template <int KERNEL, int PRESSURE, int VISCOSITY, int HEAT>
+  template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS>
   void eval_dimension(int ifrom, int ito, const Rates &rates);
-  template <int KERNEL, int PRESSURE, int VISCOSITY, int HEAT, int DIM>
+  template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS, int DIM>
   void eval(int ifrom, int ito, const Rates &rates);
-  template <int KERNEL, int NEWTON_PAIR, int HYDROSTATIC>
-  void eval_diffusion(int ifrom, int ito, double *drho);
 };
 
 }    // namespace LAMMPS_NS
