@@ -24,6 +24,14 @@ root = os.path.normpath(os.path.join(here, "..", ".."))
 NOTES_MARK = "<!-- notes written by hand from here on; run_bench.py keeps them -->"
 
 
+def kept_notes(path, mark):
+    """The notes written by hand below `mark` in the file's last version ("" if none)."""
+    if not os.path.exists(path):
+        return ""
+    text = open(path).read()
+    return text[text.index(mark):] if mark in text else ""
+
+
 def cpu_seconds(cmd, workdir):
     """CPU time of a child process: on a shared machine wall time counts the
     waiting too."""
@@ -97,13 +105,8 @@ def main():
                              own_k, flow_k, heat_k))
                 print(f"{label}, {kernel}: ours {1e6 * ours_k:.3f} us, loop own {1e6 * own_k:.3f} us")
 
-    # the notes below the table are written by hand: kept from the file's last version
     path = os.path.join(args.out, "results.md")
-    notes = ""
-    if os.path.exists(path):
-        text = open(path).read()
-        if NOTES_MARK in text:
-            notes = text[text.index(NOTES_MARK):]
+    notes = kept_notes(path, NOTES_MARK)
     with open(path, "w") as f:
         f.write("# Flow benchmark results\n\n")
         f.write("Pair CPU time per particle-step (microseconds), serial, the fastest of "

@@ -21,6 +21,8 @@ import re
 import subprocess
 import tempfile
 
+from run_bench import kept_notes
+
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.normpath(os.path.join(here, "..", ".."))
 
@@ -90,13 +92,8 @@ def main():
               f"{ghosts2:.0f} ghosts per rank, comm {comm2:.1f} % of the loop; "
               f"2 threads {tt:.3f} s, efficiency {eff_t:.2f}")
 
-    # the notes below the table are written by hand: kept from the file's last version
     path = os.path.join(args.out, "scaling.md")
-    notes = ""
-    if os.path.exists(path):
-        text = open(path).read()
-        if NOTES_MARK in text:
-            notes = text[text.index(NOTES_MARK):]
+    notes = kept_notes(path, NOTES_MARK)
     with open(path, "w") as f:
         f.write("# Thermal flow on 1 and 2 MPI ranks and on 2 OpenMP threads\n\n")
         f.write(f"`bench/flow/scaling.py`: `in.bench`, {args.n} x {args.n} particles "
