@@ -214,6 +214,13 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
   const double cutsq = cutoff * cutoff;
   const double dt = update->dt;
 
+  const double inv_h = kernel.inv_h;
+  const double dwdr_r_scale = kernel.dw_scale * kernel.inv_h;    // dW/dr / r = this f'(q) / q
+  // every owned and ghost atom's volume, once rather than once per pair
+  const int nall = nlocal + atom->nghost;
+  volume.resize(nall);
+  for (int i = 0; i < nall; i++) volume[i] = (rmass ? rmass[i] : mass[type[i]]) / rho[i];
+
   shift.assign(3 * (size_t) nlocal, 0.0);
   std::vector<double> dtemp(CORRECT ? nlocal : 0, 0.0);
   // CORRECT_ALL: the changes of rho, vx, vy, vz
@@ -244,15 +251,15 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
       if (rsq >= cutsq || rsq == 0.0) continue;
       const double r = sqrt(rsq);
       const int j_in_group = mask[j] & groupbit;
-      const double mass_j = rmass ? rmass[j] : mass[type[j]];
-      const double volume_j = mass_j / rho[j];
-      // grad_i W_ij = dW/dr (r_i - r_j) / r
-      const double f = sphk_dwdr(&kernel, r) / r;
+      const double volume_j = volume[j];
+      // grad_i W_ij = dW/dr (r_i - r_j) / r, without dividing by r
+      const double f = dwdr_r_scale * sphk_df_over_q(kernel.kind, r * inv_h);
       const double grad_w[3] = {f * del[0], f * del[1], f * del[2]};
       if (FORM == DELTAPLUS) {
         const double weight =
             sphs_deltaplus_weight(sphk_w(&kernel, r), w_spacing, r_coeff, r_power) *
-            (j_in_group ? 2.0 * mass_j / (rho[i] + rho[j]) : mass_i / rho[i]);
+            (j_in_group ? 2.0 * (rmass ? rmass[j] : mass[type[j]]) / (rho[i] + rho[j])
+                        : mass_i / rho[i]);
         for (int a = 0; a < 3; a++) grad_c[a] += weight * grad_w[a];
       } else
         for (int a = 0; a < 3; a++) grad_c[a] += volume_j * grad_w[a];

@@ -54,6 +54,7 @@ class FixSPHShift : public Fix {
   double cutoff;
   class NeighList *list;
   std::vector<double> shift;    // per owned atom, 3 each
+  std::vector<double> volume;   // per owned and ghost atom, m / rho
   double energy;                // energy the correction has added since the fix was defined
   double largest;               // largest shift / spacing of the last step
   int capped;                   // atoms shortened to the cap in the last step
