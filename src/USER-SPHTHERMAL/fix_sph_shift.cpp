@@ -231,8 +231,7 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
-    const double mass_i = rmass ? rmass[i] : mass[type[i]];
-    const double spacing = pow(mass_i / rho[i], 1.0 / dim);
+    const double spacing = pow(volume[i], 1.0 / dim);
     const double w_spacing = FORM == DELTAPLUS ? sphk_w(&kernel, spacing) : 0.0;
     const double t_i = CORRECT ? esph[i] / cv[i] : 0.0;
     double grad_c[3] = {0.0, 0.0, 0.0}, g[3] = {0.0, 0.0, 0.0};
@@ -259,7 +258,7 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
         const double weight =
             sphs_deltaplus_weight(sphk_w(&kernel, r), w_spacing, r_coeff, r_power) *
             (j_in_group ? 2.0 * (rmass ? rmass[j] : mass[type[j]]) / (rho[i] + rho[j])
-                        : mass_i / rho[i]);
+                        : volume[i]);
         for (int a = 0; a < 3; a++) grad_c[a] += weight * grad_w[a];
       } else
         for (int a = 0; a < 3; a++) grad_c[a] += volume_j * grad_w[a];

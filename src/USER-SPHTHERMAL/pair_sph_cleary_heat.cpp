@@ -82,14 +82,8 @@ PairSPHClearyHeat::~PairSPHClearyHeat()
 void PairSPHClearyHeat::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  if (in_flow_loop) {
-    // pair sph/harmonic/visc evaluates the term (begin_flow_loop_term)
-    if (!flows.empty()) {
-      if (conductivity_varies) update_conductivity();
-      tally_flows();
-    }
-    return;
-  }
+  // pair sph/harmonic/visc evaluates the term (begin_flow_loop_term)
+  if (in_flow_loop) return;
   begin_compute();
   eval_pairs(0, list->inum, atom->desph, relax_wanted ? relax_rate : nullptr);
   end_compute();
@@ -199,8 +193,9 @@ int PairSPHClearyHeat::flow_loop_possible()
 {
   if (loop_own || correct || mean == SPHC_INTERFACE) return 0;
   if (conductivity_varies && mean != SPHC_HARMONIC) return 0;
-  if (force->pair_match("sph/cleary/heat", 1) != this) return 0;
-  auto flow = (PairSPHKernel *) force->pair_match("sph/harmonic/visc", 1);
+  // (the /omp styles too, named as such in the hybrid)
+  if (force->pair_match("^sph/cleary/heat", 0) != this) return 0;
+  auto flow = (PairSPHKernel *) force->pair_match("^sph/harmonic/visc", 0);
   if (!flow || !same_kernel(flow)) return 0;
   // the flow's list holds every pair of this style's; on type pairs only
   // the flow covers, a zero conductance (per type pair) keeps the term out
@@ -224,12 +219,12 @@ PairSPHClearyHeat::FlowLoopTerm PairSPHClearyHeat::begin_flow_loop_term()
   if (update->setupflag) check_neighbours();
   update_temperature();
   if (relax_wanted) zero_relax_rate();
-  // per type pair, zero where this style has no pair_coeff (init_one has
-  // set the others by now)
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = 1; j <= atom->ntypes; j++)
-      loop_conductance[i][j] =
-          setflag[std::min(i, j)][std::max(i, j)] && !conductivity_varies ? conductance[i][j] : 0.0;
+  // the heat style's mass of every atom (the flow's differs for solids)
+  const int nall = atom->nlocal + atom->nghost;
+  if (atom->rmass_flag && atom->rmass)
+    memcpy(mass_of, atom->rmass, nall * sizeof(double));
+  else
+    for (int i = 0; i < nall; i++) mass_of[i] = atom->mass[atom->type[i]];
   FlowLoopTerm term;
   term.temperature = temperature;
   term.mass = mass_of;
@@ -242,8 +237,8 @@ PairSPHClearyHeat::FlowLoopTerm PairSPHClearyHeat::begin_flow_loop_term()
 }
 
 /* ----------------------------------------------------------------------
-   T = esph / cv and the mass of every owned and ghost atom, once per step
-   rather than once per pair
+   T = esph / cv of every owned and ghost atom, once per step rather than
+   once per pair (and room for the masses of the flow pair's loop)
 ------------------------------------------------------------------------- */
 
 void PairSPHClearyHeat::update_temperature()
@@ -259,15 +254,12 @@ void PairSPHClearyHeat::update_temperature()
   const double *const esph = atom->esph;
   const double *const cv = atom->cv;
   for (int i = 0; i < nall; i++) temperature[i] = esph[i] / cv[i];
-  if (atom->rmass_flag && atom->rmass)
-    memcpy(mass_of, atom->rmass, nall * sizeof(double));
-  else
-    for (int i = 0; i < nall; i++) mass_of[i] = atom->mass[atom->type[i]];
 }
 
 void PairSPHClearyHeat::end_flow_loop_term()
 {
   check_rates(atom->desph, "desph");
+  if (!flows.empty()) tally_flows();
   if (relax_wanted) finish_relax();
 }
 
@@ -1080,6 +1072,8 @@ void PairSPHClearyHeat::init_style()
   }
 
   eta2 = init_kernel();
+  for (int i = 0; i <= atom->ntypes; i++)
+    for (int j = 0; j <= atom->ntypes; j++) loop_conductance[i][j] = 0.0;
   const int was_in_flow_loop = in_flow_loop;
   in_flow_loop = flow_loop_possible();
   if (in_flow_loop && !was_in_flow_loop && comm->me == 0)
@@ -1094,10 +1088,13 @@ void PairSPHClearyHeat::init_style()
 
 double PairSPHClearyHeat::init_one(int i, int j)
 {
-  // with constant conductivities the conductance is a property of the type pair
+  // with constant conductivities the conductance is a property of the type
+  // pair; the flow pair's loop sees it on this style's type pairs only (the
+  // others keep the 0 of init_style)
   if (!conductivity_varies)
-    conductance[i][j] = conductance[j][i] = sphc_conductance(
-        mean, materials->conductivity(i)->c[0], materials->conductivity(j)->c[0]);
+    conductance[i][j] = conductance[j][i] = loop_conductance[i][j] = loop_conductance[j][i] =
+        sphc_conductance(mean, materials->conductivity(i)->c[0],
+                         materials->conductivity(j)->c[0]);
   return cut_global;
 }
 

@@ -157,18 +157,18 @@ void PairSPHHarmonicVisc::eval_pressure(int ifrom, int ito, const Rates &rates)
 {
   switch (viscosity_form) {
     case SPHF_V_CLEARY:
-      eval_heat<KERNEL, PRESSURE, SPHF_V_CLEARY>(ifrom, ito, rates);
+      eval_terms<KERNEL, PRESSURE, SPHF_V_CLEARY>(ifrom, ito, rates);
       break;
     case SPHF_V_MORRIS:
-      eval_heat<KERNEL, PRESSURE, SPHF_V_MORRIS>(ifrom, ito, rates);
+      eval_terms<KERNEL, PRESSURE, SPHF_V_MORRIS>(ifrom, ito, rates);
       break;
     default:
-      eval_heat<KERNEL, PRESSURE, SPHF_V_ADAMI>(ifrom, ito, rates);
+      eval_terms<KERNEL, PRESSURE, SPHF_V_ADAMI>(ifrom, ito, rates);
   }
 }
 
 template <int KERNEL, int PRESSURE, int VISCOSITY>
-void PairSPHHarmonicVisc::eval_heat(int ifrom, int ito, const Rates &rates)
+void PairSPHHarmonicVisc::eval_terms(int ifrom, int ito, const Rates &rates)
 {
   int terms = (delta > 0.0) ? DIFFUSION : 0;
   if (heat && heat->term_in_flow_loop())
@@ -588,7 +588,7 @@ void PairSPHHarmonicVisc::init_style()
   eos_of.assign(atom->ntypes + 1, nullptr);
   for (int t = 1; t <= atom->ntypes; t++) eos_of[t] = materials->eos(t);
   // sph/cleary/heat decides at its init whether this loop evaluates its term
-  heat = (PairSPHClearyHeat *) force->pair_match("sph/cleary/heat", 1);
+  heat = (PairSPHClearyHeat *) force->pair_match("^sph/cleary/heat", 0);
 
   SPHCompat::request_half_list(neighbor, this, instance_me);
 }

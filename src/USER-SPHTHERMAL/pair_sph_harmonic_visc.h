@@ -87,7 +87,7 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   template <int KERNEL> void eval_kernel(int ifrom, int ito, const Rates &rates);
   template <int KERNEL, int PRESSURE> void eval_pressure(int ifrom, int ito, const Rates &rates);
   template <int KERNEL, int PRESSURE, int VISCOSITY>
-  void eval_heat(int ifrom, int ito, const Rates &rates);
+  void eval_terms(int ifrom, int ito, const Rates &rates);
   template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS>
   void eval_dimension(int ifrom, int ito, const Rates &rates);
   template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS, int DIM>

@@ -95,9 +95,9 @@ double PairSPHKernel::init_kernel()
                      "would be counted twice",
                      style, force->pair_style, i, j);
   }
-  PairSPHKernel *flow = (PairSPHKernel *) force->pair_match("sph/harmonic/visc", 1);
-  if (strcmp(style, "sph/cleary/heat") == 0 && flow &&
-      (flow->kernel_kind != kernel_kind || flow->cut_global != cut_global))
+  // (the /omp styles too, named as such in the hybrid)
+  PairSPHKernel *flow = (PairSPHKernel *) force->pair_match("^sph/harmonic/visc", 0);
+  if (strcmp(style, "sph/cleary/heat") == 0 && flow && !same_kernel(flow))
     error->warning(FLERR,
                    "Pair styles sph/cleary/heat ({} kernel, cutoff {}) and sph/harmonic/visc ({} "
                    "kernel, cutoff {}) differ: the flow and the heat see different neighbourhoods",
