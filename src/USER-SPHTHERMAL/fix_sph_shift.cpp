@@ -9,7 +9,9 @@
      dr_i = -C (U dt / h) (2h)^2 sum_j [1 + R (W_ij / W(dx_i))^n] grad_i W_ij V_j
    with V_j = 2 m_j / (rho_i + rho_j) for a neighbour of the group (the
    fluid) and V_j = dx_i^d for any other (walls, solids), over every
-   neighbour j (walls too, so that particles keep off them), shortened to
+   neighbour j (walls too, so that particles keep off them; each pair once,
+   from a half list, or for the skillen sum alone from the flow pair's own
+   loop, 'loop shared'), shortened to
    at most cap * dx_i (dx_i = V_i^(1/d)); then x_i += dr_i for the atoms of
    the group. With 'correct yes' the temperature follows (with 'correct
    all' the density and the velocity too, the same way):
@@ -45,6 +47,7 @@
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "pair.h"
+#include "pair_sph_harmonic_visc.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
 #include "sph_gradient.h"
@@ -60,12 +63,18 @@ using namespace FixConst;
 
 static const char cmd[] = "fix sph/shift";
 
+// the spacing of a particle of this volume (sqrt and cbrt are cheaper than pow)
+static inline double spacing_of(double volume, int dim)
+{
+  return dim == 2 ? sqrt(volume) : cbrt(volume);
+}
+
 /* ---------------------------------------------------------------------- */
 
 FixSPHShift::FixSPHShift(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), form(SKILLEN), coefficient(0.0), speed(0.0), r_coeff(0.2), r_power(4),
-    cap(0.1), correct(0), continuity(0), kernel_kind(0), cutoff(0.0), list(nullptr), energy(0.0),
-    largest(0.0), capped(0)
+    cap(0.1), correct(0), continuity(0), kernel_kind(0), cutoff(0.0), loop_own(0), from_pair(0),
+    flow(nullptr), list(nullptr), energy(0.0), largest(0.0), capped(0), sums_per_atom(3)
 {
   if (narg < 5) error->all(FLERR, "Illegal {} command: expected <form> <coefficient>", cmd);
   if (strcmp(arg[3], "skillen") == 0)
@@ -84,7 +93,8 @@ FixSPHShift::FixSPHShift(LAMMPS *lmp, int narg, char **arg) :
   int iarg = 5;
   if (form == DELTAPLUS) {
     if (narg < 6)
-      error->all(FLERR, "Illegal {} command: delta-plus expects <C> <U> (U: the flow's largest speed)",
+      error->all(FLERR,
+                 "Illegal {} command: delta-plus expects <C> <U> (U: the flow's largest speed)",
                  cmd);
     speed = utils::numeric(FLERR, arg[5], false, lmp);
     if (!(speed > 0.0) || !std::isfinite(speed))
@@ -108,8 +118,8 @@ FixSPHShift::FixSPHShift(LAMMPS *lmp, int narg, char **arg) :
       if (iarg + 1 >= narg) error->all(FLERR, "Illegal {} command: missing value after 'cap'", cmd);
       cap = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (!(cap > 0.0) || !(cap <= 0.5))
-        error->all(FLERR, "Illegal {} command: cap {} must be > 0 and <= 0.5 (of the spacing)",
-                   cmd, arg[iarg + 1]);
+        error->all(FLERR, "Illegal {} command: cap {} must be > 0 and <= 0.5 (of the spacing)", cmd,
+                   arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "correct") == 0) {
       if (iarg + 1 >= narg)
@@ -119,6 +129,17 @@ FixSPHShift::FixSPHShift(LAMMPS *lmp, int narg, char **arg) :
         correct = CORRECT_ALL;
       else
         correct = SPHCompat::yes_no(error, FLERR, cmd, "correct", arg[iarg + 1]) ? CORRECT_T : 0;
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "loop") == 0) {
+      if (iarg + 1 >= narg)
+        error->all(FLERR, "Illegal {} command: missing value after 'loop'", cmd);
+      if (strcmp(arg[iarg + 1], "shared") == 0)
+        loop_own = 0;
+      else if (strcmp(arg[iarg + 1], "own") == 0)
+        loop_own = 1;
+      else
+        error->all(FLERR, "Illegal {} command: unknown loop '{}' (shared or own)", cmd,
+                   arg[iarg + 1]);
       iarg += 2;
     } else if (strcmp(arg[iarg], "continuity") == 0) {
       if (iarg + 1 >= narg)
@@ -139,6 +160,9 @@ FixSPHShift::FixSPHShift(LAMMPS *lmp, int narg, char **arg) :
   nevery = 1;
   restart_global = 1;
   comm_forward = (correct == CORRECT_ALL) ? 5 : correct ? 2 : 1;
+  // the neighbour sums of shift_group()
+  sums_per_atom = 3 + 3 * continuity + (correct ? 12 : 0) + (correct == CORRECT_ALL ? 21 : 0);
+  comm_reverse = sums_per_atom;
 }
 
 int FixSPHShift::setmask()
@@ -151,13 +175,53 @@ int FixSPHShift::setmask()
 void FixSPHShift::init()
 {
   // the kernel of the flow
-  Pair *pair = force->pair_match("^sph/harmonic/visc", 0);
-  if (!pair) error->all(FLERR, "Fix sph/shift requires pair style sph/harmonic/visc");
+  flow = (PairSPHHarmonicVisc *) force->pair_match("^sph/harmonic/visc", 0);
+  if (!flow) error->all(FLERR, "Fix sph/shift requires pair style sph/harmonic/visc");
   int dim;
-  kernel_kind = *(int *) pair->extract("kernel_kind", dim);
-  cutoff = *(double *) pair->extract("cutoff", dim);
+  kernel_kind = *(int *) flow->extract("kernel_kind", dim);
+  cutoff = *(double *) flow->extract("cutoff", dim);
   SPHCheck::atom_state(lmp, cmd, 0, SPHCheck::RHO | (correct ? SPHCheck::CV : 0));
-  SPHCompat::request_full_list(neighbor, this, instance_me);
+  const int was_from_pair = from_pair;
+  from_pair = sums_from_pair_possible() && flow->provide_shift_sums();
+  if (from_pair && !was_from_pair && comm->me == 0)
+    utils::logmesg(lmp,
+                   "Fix sph/shift: the sums are made in the pair loop of sph/harmonic/visc (loop "
+                   "shared)\n");
+  if (!from_pair) SPHCompat::request_half_list(neighbor, this, instance_me);
+}
+
+/* ----------------------------------------------------------------------
+   the flow pair's loop can make the sums when they are those of the skillen
+   form alone and that loop sees every pair an atom of the group has: its
+   type pairs are the flow style's, and no atom of the group is a wall of
+   fix sph/wall/adami (the loop skips wall-wall pairs). Its volumes are those
+   of the force step (a density half a step earlier than here).
+------------------------------------------------------------------------- */
+
+bool FixSPHShift::sums_from_pair_possible()
+{
+  if (loop_own || form != SKILLEN || correct || continuity) return false;
+  int adami_walls = 0;
+  for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/adami"))
+    adami_walls |= wall->groupbit;
+  const int ntypes = atom->ntypes;
+  std::vector<int> group_type(ntypes + 1, 0);
+  int in_wall = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) {
+      group_type[atom->type[i]] = 1;
+      if (atom->mask[i] & adami_walls) in_wall = 1;
+    }
+  std::vector<int> group_type_all(ntypes + 1, 0);
+  MPI_Allreduce(group_type.data(), group_type_all.data(), ntypes + 1, MPI_INT, MPI_MAX, world);
+  int in_wall_any = 0;
+  MPI_Allreduce(&in_wall, &in_wall_any, 1, MPI_INT, MPI_MAX, world);
+  if (in_wall_any) return false;
+  for (int t = 1; t <= ntypes; t++)
+    if (group_type_all[t])
+      for (int u = 1; u <= ntypes; u++)
+        if (!flow->setflag[MIN(t, u)][MAX(t, u)]) return false;
+  return true;
 }
 
 void FixSPHShift::init_list(int /*id*/, NeighList *ptr)
@@ -169,9 +233,48 @@ void FixSPHShift::init_list(int /*id*/, NeighList *ptr)
 
 void FixSPHShift::end_of_step()
 {
-  // the ghosts' rho (esph, v when correcting) as the step ended on their owners' ranks
-  SPHCompat::forward_comm(comm, this);
-  form == DELTAPLUS ? shift_corrected<DELTAPLUS>() : shift_corrected<SKILLEN>();
+  // the ghosts' rho (esph, v when correcting) as the step ended on their
+  // owners' ranks; the pair loop's sums need none
+  if (!from_pair) SPHCompat::forward_comm(comm, this);
+  if (from_pair)
+    shift_from_pair_sums();
+  else
+    form == DELTAPLUS ? shift_corrected<DELTAPLUS>() : shift_corrected<SKILLEN>();
+}
+
+/* ----------------------------------------------------------------------
+   the skillen form from the sums of the flow pair's loop of this step
+------------------------------------------------------------------------- */
+
+void FixSPHShift::shift_from_pair_sums()
+{
+  double *const *const x = atom->x;
+  const double *const *const v = atom->v;
+  const double *const rho = atom->rho;
+  const double *const rmass = atom->rmass;
+  const double *const mass = atom->mass;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  const int dim = domain->dimension;
+  const double h = cutoff / sphk_support(kernel_kind);
+  const double dt = update->dt;
+  const double *const sums_of = flow->shift_sums();
+  double largest_local = 0.0;
+  int capped_local = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double spacing = spacing_of((rmass ? rmass[i] : mass[type[i]]) / rho[i], dim);
+    double dr[3];
+    sphs_skillen(coefficient, h, sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]),
+                 dt, &sums_of[3 * (size_t) i], dr);
+    if (dim == 2) dr[2] = 0.0;
+    capped_local += sphs_cap(dr, cap * spacing);
+    largest_local =
+        MAX(largest_local, sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]) / spacing);
+    for (int a = 0; a < 3; a++) x[i][a] += dr[a];
+  }
+  largest = largest_local;
+  capped = capped_local;
 }
 
 template <int FORM> void FixSPHShift::shift_corrected()
@@ -208,6 +311,7 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
   const int *const type = atom->type;
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
+  const int newton = force->newton_pair;
   const int dim = domain->dimension;
   const sphk_kernel kernel = sphk_make(kernel_kind, dim, cutoff);
   const double h = cutoff / sphk_support(kernel_kind);
@@ -216,91 +320,131 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
 
   const double inv_h = kernel.inv_h;
   const double dwdr_r_scale = kernel.dw_scale * kernel.inv_h;    // dW/dr / r = this f'(q) / q
-  // every owned and ghost atom's volume, once rather than once per pair
+  // every owned and ghost atom's volume (and W(dx), T), once rather than once per pair
   const int nall = nlocal + atom->nghost;
   volume.resize(nall);
   for (int i = 0; i < nall; i++) volume[i] = (rmass ? rmass[i] : mass[type[i]]) / rho[i];
+  if (FORM == DELTAPLUS) {
+    w_spacing.resize(nall);
+    for (int i = 0; i < nall; i++)
+      w_spacing[i] = (mask[i] & groupbit) ? sphk_w(&kernel, spacing_of(volume[i], dim)) : 0.0;
+  }
+  if (CORRECT) {
+    temperature.resize(nall);
+    for (int i = 0; i < nall; i++) temperature[i] = esph[i] / cv[i];
+  }
+
+  // the neighbour sums of an atom of the group, at these offsets:
+  //   grad_c: sum_j V_j grad_i W_ij (delta-plus: with its pair weight);
+  //   continuity yes: grad_volume = sum_j s_j V_j grad_i W_ij;
+  //   correcting: g and L of T's corrected gradient (sph_gradient.h);
+  //   CORRECT_ALL: those of rho, vx, vy, vz over the group's neighbours only
+  //   (a wall's rho and v are not the fluid's), with their own L
+  constexpr int at_volume = 3, at_g = 3 + 3 * CONTINUITY, at_l = at_g + 3, at_g_flow = at_l + 9,
+                at_l_flow = at_g_flow + 12;
+  constexpr int per_atom =
+      3 + 3 * CONTINUITY + (CORRECT ? 12 : 0) + (CORRECT == CORRECT_ALL ? 21 : 0);
+  sums.assign((size_t) per_atom * nall, 0.0);
+
+  // one side of a pair: the sums s of atom 'self' gain neighbour 'other', with
+  // del = r_self - r_other and grad_w = grad_self W
+  auto add_neighbour = [&](double *s, int self, int other, const double *del, const double *grad_w,
+                           double w_pair) {
+    const int other_in_group = mask[other] & groupbit;
+    const double volume_other = volume[other];
+    if (FORM == DELTAPLUS) {
+      const double weight = sphs_deltaplus_weight(w_pair, w_spacing[self], r_coeff, r_power) *
+          (other_in_group
+               ? 2.0 * (rmass ? rmass[other] : mass[type[other]]) / (rho[self] + rho[other])
+               : volume[self]);
+      for (int a = 0; a < 3; a++) s[a] += weight * grad_w[a];
+    } else
+      for (int a = 0; a < 3; a++) s[a] += volume_other * grad_w[a];
+    if (CONTINUITY) {
+      const double share = other_in_group ? 2.0 * volume_other : volume_other;
+      for (int a = 0; a < 3; a++) s[at_volume + a] += share * grad_w[a];
+    }
+    if (CORRECT) {
+      sphg_add(s + at_g, s + at_l, del, grad_w, volume_other,
+               temperature[other] - temperature[self]);
+      if (CORRECT == CORRECT_ALL && other_in_group) {
+        const double diff[4] = {rho[other] - rho[self], v[other][0] - v[self][0],
+                                v[other][1] - v[self][1], v[other][2] - v[self][2]};
+        for (int q = 0; q < 4; q++)
+          for (int a = 0; a < 3; a++)
+            s[at_g_flow + 3 * q + a] += volume_other * diff[q] * grad_w[a];
+        for (int a = 0; a < 3; a++)
+          for (int b = 0; b < 3; b++) s[at_l_flow + 3 * a + b] -= volume_other * del[a] * grad_w[b];
+      }
+    }
+  };
+
+  // each pair once (half list): both atoms' sums, a ghost's sent to its owner after
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int i_in_group = mask[i] & groupbit;
+    // i's sums in locals: no store to reload in every pair
+    double sums_i[per_atom];
+    for (int q = 0; q < per_atom; q++) sums_i[q] = 0.0;
+    const int *const jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const int j_sums = (mask[j] & groupbit) && (newton || j < nlocal);
+      if (!i_in_group && !j_sums) continue;
+      const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+      if (rsq >= cutsq || rsq == 0.0) continue;
+      const double r = sqrt(rsq);
+      // grad_i W_ij = dW/dr (r_i - r_j) / r, without dividing by r
+      const double f = dwdr_r_scale * sphk_df_over_q(kernel.kind, r * inv_h);
+      const double grad_w[3] = {f * del[0], f * del[1], f * del[2]};
+      const double w_pair = FORM == DELTAPLUS ? sphk_w(&kernel, r) : 0.0;
+      if (i_in_group) add_neighbour(sums_i, i, j, del, grad_w, w_pair);
+      if (j_sums) {
+        const double del_j[3] = {-del[0], -del[1], -del[2]};
+        const double grad_w_j[3] = {-grad_w[0], -grad_w[1], -grad_w[2]};
+        add_neighbour(&sums[(size_t) per_atom * j], j, i, del_j, grad_w_j, w_pair);
+      }
+    }
+    double *const s_i = &sums[(size_t) per_atom * i];
+    for (int q = 0; q < per_atom; q++) s_i[q] += sums_i[q];
+  }
+  if (newton) SPHCompat::reverse_comm(comm, this);
 
   shift.assign(3 * (size_t) nlocal, 0.0);
   std::vector<double> dtemp(CORRECT ? nlocal : 0, 0.0);
   // CORRECT_ALL: the changes of rho, vx, vy, vz
   std::vector<double> dflow(CORRECT == CORRECT_ALL ? 4 * (size_t) nlocal : 0, 0.0);
-  double largest_local = 0.0, rho_change_local = 0.0, rho_sum_local = 0.0,
-         rho_follow_local = 0.0;
+  double largest_local = 0.0, rho_change_local = 0.0, rho_sum_local = 0.0, rho_follow_local = 0.0;
   int capped_local = 0;
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
+  for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    const double spacing = pow(volume[i], 1.0 / dim);
-    const double w_spacing = FORM == DELTAPLUS ? sphk_w(&kernel, spacing) : 0.0;
-    const double t_i = CORRECT ? esph[i] / cv[i] : 0.0;
-    double grad_c[3] = {0.0, 0.0, 0.0}, g[3] = {0.0, 0.0, 0.0};
-    // continuity yes: sum_j s_j V_j grad_i W_ij
-    double grad_volume[3] = {0.0, 0.0, 0.0};
-    // CORRECT_ALL: the sums of rho, vx, vy, vz as g is of T, over the group's
-    // neighbours only (a wall's rho and v are not the fluid's), with their own L
-    double g_flow[4][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
-    double L[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    double L_flow[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    const int *const jlist = list->firstneigh[i];
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
-      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
-      if (rsq >= cutsq || rsq == 0.0) continue;
-      const double r = sqrt(rsq);
-      const int j_in_group = mask[j] & groupbit;
-      const double volume_j = volume[j];
-      // grad_i W_ij = dW/dr (r_i - r_j) / r, without dividing by r
-      const double f = dwdr_r_scale * sphk_df_over_q(kernel.kind, r * inv_h);
-      const double grad_w[3] = {f * del[0], f * del[1], f * del[2]};
-      if (FORM == DELTAPLUS) {
-        const double weight =
-            sphs_deltaplus_weight(sphk_w(&kernel, r), w_spacing, r_coeff, r_power) *
-            (j_in_group ? 2.0 * (rmass ? rmass[j] : mass[type[j]]) / (rho[i] + rho[j])
-                        : volume[i]);
-        for (int a = 0; a < 3; a++) grad_c[a] += weight * grad_w[a];
-      } else
-        for (int a = 0; a < 3; a++) grad_c[a] += volume_j * grad_w[a];
-      if (CONTINUITY) {
-        const double share = j_in_group ? 2.0 * volume_j : volume_j;
-        for (int a = 0; a < 3; a++) grad_volume[a] += share * grad_w[a];
-      }
-      if (CORRECT) {
-        sphg_add(g, L, del, grad_w, volume_j, esph[j] / cv[j] - t_i);
-        if (CORRECT == CORRECT_ALL && j_in_group) {
-          const double diff[4] = {rho[j] - rho[i], v[j][0] - v[i][0], v[j][1] - v[i][1],
-                                  v[j][2] - v[i][2]};
-          for (int q = 0; q < 4; q++)
-            for (int a = 0; a < 3; a++) g_flow[q][a] += volume_j * diff[q] * grad_w[a];
-          for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++) L_flow[3 * a + b] -= volume_j * del[a] * grad_w[b];
-        }
-      }
-    }
+    const double *const s = &sums[(size_t) per_atom * i];
+    const double spacing = spacing_of(volume[i], dim);
     double *dr = &shift[3 * (size_t) i];
     if (FORM == DELTAPLUS)
-      sphs_deltaplus(coefficient, h, speed, dt, grad_c, dr);
+      sphs_deltaplus(coefficient, h, speed, dt, s, dr);
     else
       sphs_skillen(coefficient, h, sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]),
-                   dt, grad_c, dr);
+                   dt, s, dr);
     if (dim == 2) dr[2] = 0.0;
     capped_local += sphs_cap(dr, cap * spacing);
     if (CONTINUITY) {
+      const double *const grad_volume = s + at_volume;
       rho_change_local +=
           rho[i] * (dr[0] * grad_volume[0] + dr[1] * grad_volume[1] + dr[2] * grad_volume[2]);
       rho_sum_local += rho[i];
     }
-    largest_local = MAX(largest_local,
-                        sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]) / spacing);
+    largest_local =
+        MAX(largest_local, sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]) / spacing);
     if (CORRECT) {
-      double grad_t[3] = {g[0], g[1], g[2]};
-      sphg_solve_transposed(L, g, grad_t, dim);
+      double grad_t[3];
+      sphg_solve_transposed(s + at_l, s + at_g, grad_t, dim);
       dtemp[i] = dr[0] * grad_t[0] + dr[1] * grad_t[1] + dr[2] * grad_t[2];
       if (CORRECT == CORRECT_ALL) {
         for (int q = 0; q < 4; q++) {
           double grad_q[3];
-          sphg_solve_transposed(L_flow, g_flow[q], grad_q, dim);
+          sphg_solve_transposed(s + at_l_flow, s + at_g_flow + 3 * q, grad_q, dim);
           dflow[4 * (size_t) i + q] = dr[0] * grad_q[0] + dr[1] * grad_q[1] + dr[2] * grad_q[2];
         }
         if (CONTINUITY) rho_follow_local += dflow[4 * (size_t) i];
@@ -315,7 +459,8 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
   double rho_totals[3] = {0.0, 0.0, 0.0};
   if (CONTINUITY) MPI_Allreduce(rho_sums, rho_totals, 3, MPI_DOUBLE, MPI_SUM, world);
   const double rho_followed = rho_totals[1] + rho_totals[2];
-  const double rho_scale = rho_followed > 0.0 ? (rho_totals[1] + rho_totals[0]) / rho_followed : 1.0;
+  const double rho_scale = rho_followed > 0.0 ? (rho_totals[1] + rho_totals[0]) / rho_followed
+                                              : 1.0;
 
   // move only after every shift is known: each used the positions of the step
   double energy_local = 0.0;
@@ -333,11 +478,13 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
     // after following its atom: the factor is of the followed densities' sum
     if (CONTINUITY) rho[i] *= rho_scale;
   }
-  double sums[2] = {energy_local, (double) capped_local}, totals[2];
-  MPI_Allreduce(sums, totals, 2, MPI_DOUBLE, MPI_SUM, world);
-  energy += totals[0];
-  capped = (int) totals[1];
-  MPI_Allreduce(&largest_local, &largest, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (CORRECT) {
+    double energy_all = 0.0;
+    MPI_Allreduce(&energy_local, &energy_all, 1, MPI_DOUBLE, MPI_SUM, world);
+    energy += energy_all;
+  }
+  largest = largest_local;
+  capped = capped_local;
 }
 
 int FixSPHShift::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/, int * /*pbc*/)
@@ -363,6 +510,23 @@ void FixSPHShift::unpack_forward_comm(int n, int first, double *buf)
   }
 }
 
+// a ghost's neighbour sums go to its owner
+int FixSPHShift::pack_reverse_comm(int n, int first, double *buf)
+{
+  const size_t count = (size_t) n * sums_per_atom;
+  memcpy(buf, &sums[(size_t) sums_per_atom * first], count * sizeof(double));
+  return (int) count;
+}
+
+void FixSPHShift::unpack_reverse_comm(int n, int *list_send, double *buf)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    double *const s = &sums[(size_t) sums_per_atom * list_send[k]];
+    for (int q = 0; q < sums_per_atom; q++) s[q] += buf[m++];
+  }
+}
+
 /* ----------------------------------------------------------------------
    scalar: energy the temperature correction has added; vector: that
    energy, the largest shift of the last step over the atom's spacing, the
@@ -377,8 +541,15 @@ double FixSPHShift::compute_scalar()
 double FixSPHShift::compute_vector(int n)
 {
   if (n == 0) return energy;
-  if (n == 1) return largest;
-  return capped;
+  // this rank's values of the last step, summed here rather than every step
+  if (n == 1) {
+    double largest_all = 0.0;
+    MPI_Allreduce(&largest, &largest_all, 1, MPI_DOUBLE, MPI_MAX, world);
+    return largest_all;
+  }
+  int capped_all = 0;
+  MPI_Allreduce(&capped, &capped_all, 1, MPI_INT, MPI_SUM, world);
+  return capped_all;
 }
 
 /* ----------------------------------------------------------------------

@@ -36,6 +36,8 @@ class FixSPHShift : public Fix {
   void write_restart(FILE *) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
   void restart(char *) override;
   void *extract(const char *, int &) override;
 
@@ -52,13 +54,23 @@ class FixSPHShift : public Fix {
   int continuity;        // the group's mean rho follows the shift's change of the kernel sums
   int kernel_kind;
   double cutoff;
+  int loop_own;      // 1: always the fix's own neighbour pass ('loop own')
+  int from_pair;     // 1: this run takes the sums from the flow pair's loop
+  class PairSPHHarmonicVisc *flow;
   class NeighList *list;
   std::vector<double> shift;    // per owned atom, 3 each
   std::vector<double> volume;   // per owned and ghost atom, m / rho
+  // per owned and ghost atom: the spacing's kernel value W(dx) (delta-plus), T (correcting)
+  std::vector<double> w_spacing, temperature;
+  // per owned and ghost atom, sums_per_atom each: the neighbour sums, ghosts' sent home
+  std::vector<double> sums;
   double energy;                // energy the correction has added since the fix was defined
-  double largest;               // largest shift / spacing of the last step
-  int capped;                   // atoms shortened to the cap in the last step
+  double largest;               // largest shift / spacing of the last step, on this rank
+  int capped;                   // atoms shortened to the cap in the last step, on this rank
+  int sums_per_atom;            // length of an atom's neighbour sums
 
+  bool sums_from_pair_possible();
+  void shift_from_pair_sums();
   template <int FORM> void shift_corrected();
   template <int FORM, int CORRECT> void shift_continuity();
   template <int FORM, int CORRECT, int CONTINUITY> void shift_group();

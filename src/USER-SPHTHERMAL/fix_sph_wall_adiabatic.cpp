@@ -81,7 +81,18 @@ FixSPHWallAdiabatic::~FixSPHWallAdiabatic()
 
 int FixSPHWallAdiabatic::setmask()
 {
-  return PRE_FORCE | POST_FORCE;
+  return PRE_NEIGHBOR | PRE_FORCE | POST_FORCE;
+}
+
+// atoms were exchanged and sorted: the mirror's neighbour candidates are stale
+void FixSPHWallAdiabatic::setup_pre_neighbor()
+{
+  pre_neighbor();
+}
+
+void FixSPHWallAdiabatic::pre_neighbor()
+{
+  if (mirror) mirror->neighbours_changed();
 }
 
 /* ---------------------------------------------------------------------- */

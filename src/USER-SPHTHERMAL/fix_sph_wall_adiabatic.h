@@ -26,6 +26,8 @@ class FixSPHWallAdiabatic : public Fix {
   FixSPHWallAdiabatic(class LAMMPS *, int, char **);
   ~FixSPHWallAdiabatic() override;
   int setmask() override;
+  void setup_pre_neighbor() override;
+  void pre_neighbor() override;
   void init() override;
   void setup_pre_force(int) override;
   void pre_force(int) override;

@@ -75,7 +75,18 @@ FixSPHWallDirichlet::~FixSPHWallDirichlet()
 
 int FixSPHWallDirichlet::setmask()
 {
-  return PRE_FORCE | POST_FORCE;
+  return PRE_NEIGHBOR | PRE_FORCE | POST_FORCE;
+}
+
+// atoms were exchanged and sorted: the mirror's neighbour candidates are stale
+void FixSPHWallDirichlet::setup_pre_neighbor()
+{
+  pre_neighbor();
+}
+
+void FixSPHWallDirichlet::pre_neighbor()
+{
+  if (mirror) mirror->neighbours_changed();
 }
 
 /* ---------------------------------------------------------------------- */

@@ -23,6 +23,8 @@ class FixSPHWallDirichlet : public FixSPHWallTally {
   FixSPHWallDirichlet(class LAMMPS *, int, char **);
   ~FixSPHWallDirichlet() override;
   int setmask() override;
+  void setup_pre_neighbor() override;
+  void pre_neighbor() override;
   void init() override;
   void init_list(int, class NeighList *) override;
   void setup_pre_force(int) override;

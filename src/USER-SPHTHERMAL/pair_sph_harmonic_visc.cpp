@@ -48,12 +48,13 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI), xi(SPHF_XI_CLEARY), delta(0.1),
     diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr), eta2(0.0), materials(nullptr), viscosity_varies(0), wall_groupbit(0),
     pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr), density(nullptr),
-    nmax(0), heat(nullptr)
+    nmax(0), heat(nullptr), shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0)
 {
   // the continuity equation and the viscous term need the velocities of
   // ghost atoms: turned on here, as comm_modify vel yes would
   comm->ghost_velocity = 1;
   comm_forward = 3;
+  comm_reverse = 3;    // the shift sums of ghosts
   gravity[0] = gravity[1] = gravity[2] = 0.0;
 }
 
@@ -64,6 +65,7 @@ PairSPHHarmonicVisc::~PairSPHHarmonicVisc()
   memory->destroy(mass_of);
   memory->destroy(volume);
   memory->destroy(density);
+  memory->destroy(shift_sum);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -96,6 +98,14 @@ void PairSPHHarmonicVisc::begin_compute()
   }
   heat_term = PairSPHClearyHeat::FlowLoopTerm();
   if (heat && heat->term_in_flow_loop()) heat_term = heat->begin_flow_loop_term();
+  if (shift_sums_wanted) {
+    if (atom->nmax > nmax_shift) {
+      nmax_shift = atom->nmax;
+      memory->destroy(shift_sum);
+      memory->create(shift_sum, 3 * nmax_shift, "pair:shift_sum");
+    }
+    memset(shift_sum, 0, 3 * sizeof(double) * (atom->nlocal + atom->nghost));
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -129,6 +139,28 @@ void PairSPHHarmonicVisc::end_compute()
   check_rates3(atom->f, "force");
   check_rates(atom->drho, "drho");
   if (heat && heat->term_in_flow_loop()) heat->end_flow_loop_term();
+  if (shift_sums_wanted && force->newton_pair) SPHCompat::reverse_comm(comm, this);
+}
+
+/* ---------------------------------------------------------------------- */
+
+bool PairSPHHarmonicVisc::provide_shift_sums()
+{
+  if (pressure_form != SPHF_P_AVERAGED) return false;
+  shift_sums_wanted = 1;
+  return true;
+}
+
+int PairSPHHarmonicVisc::pack_reverse_comm(int n, int first, double *buf)
+{
+  memcpy(buf, &shift_sum[3 * (size_t) first], 3 * sizeof(double) * n);
+  return 3 * n;
+}
+
+void PairSPHHarmonicVisc::unpack_reverse_comm(int n, int *list_send, double *buf)
+{
+  for (int k = 0; k < n; k++)
+    for (int a = 0; a < 3; a++) shift_sum[3 * (size_t) list_send[k] + a] += buf[3 * k + a];
 }
 
 void PairSPHHarmonicVisc::tally_pair(int i, int j, double fx, double fy, double fz, double delx,
@@ -214,8 +246,16 @@ void PairSPHHarmonicVisc::eval_terms(int ifrom, int ito, const Rates &rates)
 template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS>
 void PairSPHHarmonicVisc::eval_dimension(int ifrom, int ito, const Rates &rates)
 {
+  // the shift sums only with the default pressure form (else SHIFT is 0 and
+  // both branches are the same instantiation)
+  constexpr int SHIFT = (PRESSURE == SPHF_P_AVERAGED) ? SHIFT_SUMS : 0;
   // 2-D: the z components are zero, and so are their terms
-  if (domain->dimension == 2)
+  if (SHIFT && shift_sums_wanted) {
+    if (domain->dimension == 2)
+      eval<KERNEL, PRESSURE, VISCOSITY, TERMS | SHIFT, 2>(ifrom, ito, rates);
+    else
+      eval<KERNEL, PRESSURE, VISCOSITY, TERMS | SHIFT, 3>(ifrom, ito, rates);
+  } else if (domain->dimension == 2)
     eval<KERNEL, PRESSURE, VISCOSITY, TERMS, 2>(ifrom, ito, rates);
   else
     eval<KERNEL, PRESSURE, VISCOSITY, TERMS, 3>(ifrom, ito, rates);
@@ -314,6 +354,7 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
   const int hydrostatic = this->hydrostatic;
   const double gravity[3] = {this->gravity[0], this->gravity[1], this->gravity[2]};
   const PairSPHClearyHeat::FlowLoopTerm term = heat_term;
+  double *const shift_sum = this->shift_sum;
 
   const double cutsq_kernel = cut_global * cut_global;
   const double inv_h = kernel.inv_h;
@@ -330,6 +371,7 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
     const int *const jlist = firstneigh[i];
     const int jnum = numneigh[i];
     double fx_i = 0.0, fy_i = 0.0, fz_i = 0.0, drho_i = 0.0, desph_i = 0.0, relax_i = 0.0;
+    double shift_i[3] = {0.0, 0.0, 0.0};
     // the heat term's state of i (sph/cleary/heat's eval())
     const double temp_i = (TERMS & HEAT_ON) ? term.temperature[i] : 0.0;
     const double hmass_i = (TERMS & HEAT_ON) ? term.mass[i] : 0.0;
@@ -388,6 +430,14 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
       const double fx = s_r * delx + s_v * dvx;
       const double fy = s_r * dely + s_v * dvy;
       const double fz = s_r * delz + s_v * dvz;
+      // fix sph/shift's sums: grad_i W_ij = dW/dr / r (r_i - r_j)
+      const double shift_ij = (TERMS & SHIFT_SUMS) ? dwdr_r * b.vol : 0.0;
+      const double shift_ji = (TERMS & SHIFT_SUMS) ? dwdr_r * a.vol : 0.0;
+      if (TERMS & SHIFT_SUMS) {
+        shift_i[0] += shift_ij * delx;
+        shift_i[1] += shift_ij * dely;
+        if (DIM == 3) shift_i[2] += shift_ij * delz;
+      }
       const double vr = (v[i][0] - v[j][0]) * delx + (v[i][1] - v[j][1]) * dely +
           ((DIM == 3) ? (v[i][2] - v[j][2]) * delz : 0.0);
       fx_i += fx;
@@ -408,14 +458,20 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
           drho_ji -= sphe_density(eos_i, eos_i->p_background - eos_i->rho0 * g_r) - eos_i->rho0;
           drho_ij -= sphe_density(eos_j, eos_j->p_background + eos_j->rho0 * g_r) - eos_j->rho0;
         }
-        drho_i += sphf_diffusion_pair(delta_h_c0, b.m, atom_rho[j], dwdr_r) * drho_ji;
-        diffusion_j = sphf_diffusion_pair(delta_h_c0, a.m, atom_rho[i], dwdr_r) * drho_ij;
+        // neither is a wall: their volumes are m / rho
+        drho_i += sphf_diffusion_pair(delta_h_c0, b.vol, dwdr_r) * drho_ji;
+        diffusion_j = sphf_diffusion_pair(delta_h_c0, a.vol, dwdr_r) * drho_ij;
       }
       if (newton_pair || j < nlocal) {
         f[j][0] -= fx;
         f[j][1] -= fy;
         if (DIM == 3) f[j][2] -= fz;
         drho[j] += c_j * vr + diffusion_j;
+        if (TERMS & SHIFT_SUMS) {
+          shift_sum[3 * j] -= shift_ji * delx;
+          shift_sum[3 * j + 1] -= shift_ji * dely;
+          if (DIM == 3) shift_sum[3 * j + 2] -= shift_ji * delz;
+        }
       }
       if (evflag) tally_pair(i, j, fx, fy, fz, delx, dely, delz, rates.thread);
     }
@@ -425,6 +481,8 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
     drho[i] += drho_i;
     if (TERMS & HEAT_ON) desph[i] += desph_i;
     if (TERMS & HEAT_RELAX) relax_rate[i] += relax_i;
+    if (TERMS & SHIFT_SUMS)
+      for (int a = 0; a < DIM; a++) shift_sum[3 * i + a] += shift_i[a];
   }
 }
 
@@ -589,6 +647,8 @@ void PairSPHHarmonicVisc::init_style()
   for (int t = 1; t <= atom->ntypes; t++) eos_of[t] = materials->eos(t);
   // sph/cleary/heat decides at its init whether this loop evaluates its term
   heat = (PairSPHClearyHeat *) force->pair_match("^sph/cleary/heat", 0);
+  // fix sph/shift asks again at its init
+  shift_sums_wanted = 0;
 
   SPHCompat::request_half_list(neighbor, this, instance_me);
 }
@@ -636,7 +696,7 @@ void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
 
 double PairSPHHarmonicVisc::memory_usage()
 {
-  return Pair::memory_usage() + 4.0 * nmax * sizeof(double);
+  return Pair::memory_usage() + (5.0 * nmax + 3.0 * nmax_shift) * sizeof(double);
 }
 
 /* ----------------------------------------------------------------------

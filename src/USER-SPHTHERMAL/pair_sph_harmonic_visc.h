@@ -34,6 +34,15 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   void *extract(const char *, int &) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+
+  // fix sph/shift's sum_j V_j grad_i W_ij, made in this style's pair loop
+  // from the next compute() on (asked at every init, after this style's);
+  // false when this style cannot: another pressure form than the default
+  // (the sums are instantiated only with it), or the /omp style
+  virtual bool provide_shift_sums();
+  const double *shift_sums() const { return shift_sum; }
 
  protected:
   int pressure_form;      // SPHF_P_* of sph_flow.h (also selects the continuity form)
@@ -66,7 +75,11 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   PairSPHClearyHeat::FlowLoopTerm heat_term;
   // the heat term in eval(): on, per-atom conductivities, relax_rate
   // and the density diffusion
-  enum { HEAT_ON = 1, HEAT_ATOM_K = 2, HEAT_RELAX = 4, DIFFUSION = 8 };
+  // and fix sph/shift's sums
+  enum { HEAT_ON = 1, HEAT_ATOM_K = 2, HEAT_RELAX = 4, DIFFUSION = 8, SHIFT_SUMS = 16 };
+  int shift_sums_wanted;
+  double *shift_sum;    // per owned and ghost atom, 3 each
+  int nmax_shift;
   std::vector<const sphe_eos *> eos_of;    // per type (nullptr: none), for the diffusion
 
   // where the pair loops add their rates: the atom's arrays, or one

@@ -69,6 +69,19 @@ namespace SPHCompat {
 #endif
   }
 
+  // a half list (newton as the pair styles have it), built every step, for a fix
+  inline void request_half_list(Neighbor *neighbor, Fix *fix, int instance)
+  {
+#if SPHTHERMAL_LAMMPS_NEW_API
+    (void) instance;
+    neighbor->add_request(fix);
+#else
+    const int irequest = neighbor->request(fix, instance);
+    neighbor->requests[irequest]->pair = 0;
+    neighbor->requests[irequest]->fix = 1;
+#endif
+  }
+
   // a full list, built when the compute asks (occasional), for a compute
   inline void request_occasional_full_list(Neighbor *neighbor, Compute *compute, int instance)
   {

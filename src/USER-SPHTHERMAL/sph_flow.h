@@ -109,10 +109,9 @@ static inline double sphf_continuity_pair(int form, double m_b, double rho_a, do
 /* density diffusion of Molteni & Colagrossi (Ng et al. 2020, eqs 5-6):
    drho_a/dt += 2 delta h c0 sum (rho_b - rho_a) V_b (r_ba . grad_a W) / r^2
              =  s (rho_b - rho_a) with s = -2 delta h c0 V_b dW/dr / r */
-static inline double sphf_diffusion_pair(double delta_h_c0, double m_b, double rho_b,
-                                         double dwdr_r)
+static inline double sphf_diffusion_pair(double delta_h_c0, double volume_b, double dwdr_r)
 {
-  return -2.0 * delta_h_c0 * m_b / rho_b * dwdr_r;
+  return -2.0 * delta_h_c0 * volume_b * dwdr_r;
 }
 
 /* The pair loop's form of the terms above, with one division per pair

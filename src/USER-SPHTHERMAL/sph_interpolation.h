@@ -42,16 +42,15 @@ static inline void sphi_begin(sphi_point *p, int dim)
   }
 }
 
-/* one neighbour j: d = r_j - r_p, r = |d|, w = W(r), dwdr = dW/dr at r,
+/* one neighbour j: d = r_j - r_p, w = W(|d|), g = -(dW/dr) / r (so that
+   G_pj = g d; finite at r = 0 for the package's kernels, sphk_df_over_q),
    volume V_j = m_j / rho_j, value f_j */
-static inline void sphi_add(sphi_point *p, const double d[3], double r, double w, double dwdr,
-                            double volume, double f)
+static inline void sphi_add_g(sphi_point *p, const double d[3], double w, double g,
+                              double volume, double f)
 {
   const int n = p->dim;
   double row[4], col[4];
   int k, c;
-  /* G = dW/dr (r_p - r_j) / r = -dW/dr d / r; zero at r = 0 */
-  const double g = (r > 0.0) ? -dwdr / r : 0.0;
   row[0] = w * volume;
   col[0] = 1.0;
   for (k = 0; k < n; k++) {
@@ -62,6 +61,14 @@ static inline void sphi_add(sphi_point *p, const double d[3], double r, double w
     p->b[k] += row[k] * f;
     for (c = 0; c <= n; c++) p->a[k][c] += row[k] * col[c];
   }
+}
+
+/* the same given r = |d| and dwdr = dW/dr at r */
+static inline void sphi_add(sphi_point *p, const double d[3], double r, double w, double dwdr,
+                            double volume, double f)
+{
+  /* G = dW/dr (r_p - r_j) / r = -dW/dr d / r; zero at r = 0 */
+  sphi_add_g(p, d, w, (r > 0.0) ? -dwdr / r : 0.0, volume, f);
 }
 
 /* Solve for the value (and the gradient, when grad is not NULL). h scales

@@ -34,7 +34,8 @@ static const char *const thermal_walls[] = {"sph/wall/adiabatic", "sph/wall/diri
 
 SPHMirror::SPHMirror(LAMMPS *lmp, const std::string &cmd, bool returns) :
     Pointers(lmp), command(cmd), returns_heat(returns), region(nullptr), groupbit(0),
-    medium_exclude(0), held_walls(0), kernel_kind(0), cutoff(0.0), inlet_axis(-1)
+    medium_exclude(0), held_walls(0), kernel_kind(0), cutoff(0.0), inlet_axis(-1),
+    bins_fresh(false), candidates_valid(false)
 {
   for (int k = 0; k < 3; k++) {
     cell_lo[k] = 0.0;
@@ -61,10 +62,10 @@ void SPHMirror::init(int groupbit_in, int kind, double cut)
   kernel_kind = kind;
   cutoff = cut;
   region = SPHCompat::find_region(domain, region_name);
-  if (!region)
-    error->all(FLERR, "{}: surface region {} does not exist", command, region_name);
+  if (!region) error->all(FLERR, "{}: surface region {} does not exist", command, region_name);
   if (region->dynamic || region->varshape)
-    error->all(FLERR, "{}: surface region {} moves or changes shape; the wall surface must be fixed",
+    error->all(FLERR,
+               "{}: surface region {} moves or changes shape; the wall surface must be fixed",
                command, region_name);
 
   // the interpolation reads the volume and temperature of the medium
@@ -98,9 +99,9 @@ void SPHMirror::init(int groupbit_in, int kind, double cut)
       inside_tag = atom->tag[i];
     }
     if (found > 0) {
-      const double d = 0.5 * sqrt((g[0] - x[i][0]) * (g[0] - x[i][0]) +
-                                  (g[1] - x[i][1]) * (g[1] - x[i][1]) +
-                                  (g[2] - x[i][2]) * (g[2] - x[i][2]));
+      const double d = 0.5 *
+          sqrt((g[0] - x[i][0]) * (g[0] - x[i][0]) + (g[1] - x[i][1]) * (g[1] - x[i][1]) +
+               (g[2] - x[i][2]) * (g[2] - x[i][2]));
       dmax_local = MAX(dmax_local, d);
     }
   }
@@ -189,6 +190,53 @@ void SPHMirror::bin_atoms()
   }
 }
 
+/* ----------------------------------------------------------------------
+   the medium atoms within cutoff + skin of each ghost point of this step
+------------------------------------------------------------------------- */
+
+void SPHMirror::find_candidates()
+{
+  double *const *const x = atom->x;
+  const int *const mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const double reach = cutoff + neighbor->skin;
+  const double reachsq = reach * reach;
+  bin_atoms();
+  first_candidate.assign(nlocal + 1, 0);
+  candidates.clear();
+  medium_atoms.clear();
+  candidates_at = ghost_at;
+  // an atom's place in medium_atoms, -1 while it is none's candidate
+  std::vector<int> medium_index(atom->nlocal + atom->nghost, -1);
+  for (int i = 0; i < nlocal; i++) {
+    first_candidate[i] = candidates.size();
+    if (!has_ghost[i]) continue;
+    const double *const g = &ghost_at[3 * (size_t) i];
+    // cells of side cutoff: the skin may reach a second cell out
+    int c_lo[3], c_hi[3];
+    for (int k = 0; k < 3; k++) {
+      c_lo[k] = MAX(static_cast<int>(floor((g[k] - reach - cell_lo[k]) / cutoff)), 0);
+      c_hi[k] = MIN(static_cast<int>(floor((g[k] + reach - cell_lo[k]) / cutoff)), ncell[k] - 1);
+    }
+    for (int cz = c_lo[2]; cz <= c_hi[2]; cz++)
+      for (int cy = c_lo[1]; cy <= c_hi[1]; cy++)
+        for (int cx = c_lo[0]; cx <= c_hi[0]; cx++)
+          for (int j = cell_head[(static_cast<long>(cz) * ncell[1] + cy) * ncell[0] + cx]; j >= 0;
+               j = cell_next[j]) {
+            if (mask[j] & medium_exclude) continue;
+            const double d[3] = {x[j][0] - g[0], x[j][1] - g[1], x[j][2] - g[2]};
+            if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] >= reachsq) continue;
+            if (medium_index[j] < 0) {
+              medium_index[j] = medium_atoms.size();
+              medium_atoms.push_back(j);
+            }
+            candidates.push_back(medium_index[j]);
+          }
+  }
+  first_candidate[nlocal] = candidates.size();
+  candidates_valid = true;
+}
+
 // the cells around point p: lo and hi cell indices per dimension
 void SPHMirror::cells_around(const double *p, int *c_lo, int *c_hi) const
 {
@@ -215,8 +263,6 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
   const int nlocal = atom->nlocal;
   const int dim = domain->dimension;
   const sphk_kernel kernel = sphk_make(kernel_kind, dim, cutoff);
-  const double h = cutoff / sphk_support(kernel_kind);
-  const double cutsq = cutoff * cutoff;
 
   ghost.assign(nlocal, 0.0);
   how.assign(nlocal, SPHI_NONE);
@@ -224,43 +270,87 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
   first_neighbour.assign(nlocal + 1, 0);
   neighbours.clear();
   weights.clear();
-  bin_atoms();
+
+  // this step's ghost points; the candidates of the last neighbour build
+  // serve while no ghost point has moved by half the skin since
+  ghost_at.assign(3 * (size_t) nlocal, 0.0);
+  has_ghost.assign(nlocal, 0);
+  bool stale = !candidates_valid || (int) first_candidate.size() != nlocal + 1;
+  const double half_skin_sq = 0.25 * neighbor->skin * neighbor->skin;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    double *const g = &ghost_at[3 * (size_t) i];
+    has_ghost[i] = ghost_point(x[i], g, depth ? &(*depth)[i] : nullptr) > 0;
+    if (stale || !has_ghost[i]) continue;
+    const double *const g_then = &candidates_at[3 * (size_t) i];
+    const double d[3] = {g[0] - g_then[0], g[1] - g_then[1], g[2] - g_then[2]};
+    if (first_candidate[i] == first_candidate[i + 1] ||
+        d[0] * d[0] + d[1] * d[1] + d[2] * d[2] > half_skin_sq)
+      stale = true;
+  }
+  if (stale) find_candidates();
+  bins_fresh = stale;
+  const int nmedium = medium_atoms.size();
+  medium_volume.resize(nmedium);
+  medium_temperature.resize(nmedium);
+  for (int m = 0; m < nmedium; m++) {
+    const int j = medium_atoms[m];
+    medium_volume[m] = (rmass ? rmass[j] : mass[type[j]]) / rho[j];
+    medium_temperature[m] = esph[j] / cv[j];
+  }
+  if (dim == 2)
+    interpolate_points<2>(ghost, how, kernel);
+  else
+    interpolate_points<3>(ghost, how, kernel);
+}
+
+/* ----------------------------------------------------------------------
+   the corrected interpolation at every ghost point of this step; DIM: the
+   moment sums' size known to the compiler, so that they stay in registers
+------------------------------------------------------------------------- */
+
+template <int DIM>
+void SPHMirror::interpolate_points(std::vector<double> &ghost, std::vector<int> &how,
+                                   const sphk_kernel &kernel)
+{
+  double *const *const x = atom->x;
+  const int nlocal = atom->nlocal;
+  const double h = kernel.h;
+  const double cutsq = cutoff * cutoff;
+  // -(dW/dr) / r = this f'(q) / q, without a division
+  const double minus_dwdr_r_scale = -kernel.dw_scale * kernel.inv_h;
 
   for (int i = 0; i < nlocal; i++) {
     first_neighbour[i] = neighbours.size();
-    if (!(mask[i] & groupbit)) continue;
-    double g[3];
-    if (ghost_point(x[i], g, depth ? &(*depth)[i] : nullptr) <= 0) continue;
-    int c_lo[3], c_hi[3];
-    cells_around(g, c_lo, c_hi);
+    if (!has_ghost[i]) continue;
+    const double *const g = &ghost_at[3 * (size_t) i];
     sphi_point point;
-    sphi_begin(&point, dim);
+    sphi_begin(&point, DIM);
     double shepard = 0.0;
-    const double side =
-        (inlet_axis < 0) ? 0.0 : FixSPHInletTemperature::periodic_cell(domain, g[inlet_axis], inlet_axis);
+    const double side = (inlet_axis < 0)
+        ? 0.0
+        : FixSPHInletTemperature::periodic_cell(domain, g[inlet_axis], inlet_axis);
     const size_t start = neighbours.size();
-    for (int cz = c_lo[2]; cz <= c_hi[2]; cz++)
-      for (int cy = c_lo[1]; cy <= c_hi[1]; cy++)
-        for (int cx = c_lo[0]; cx <= c_hi[0]; cx++)
-          for (int j = cell_head[(static_cast<long>(cz) * ncell[1] + cy) * ncell[0] + cx]; j >= 0;
-               j = cell_next[j]) {
-            if (mask[j] & medium_exclude) continue;
-            if (inlet_axis >= 0 &&
-                FixSPHInletTemperature::periodic_cell(domain, x[j][inlet_axis], inlet_axis) != side)
-              continue;
-            const double d[3] = {x[j][0] - g[0], x[j][1] - g[1], x[j][2] - g[2]};
-            const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if (rsq >= cutsq) continue;
-            const double r = sqrt(rsq);
-            const double w = sphk_w(&kernel, r);
-            const double volume = (rmass ? rmass[j] : mass[type[j]]) / rho[j];
-            sphi_add(&point, d, r, w, sphk_dwdr(&kernel, r), volume, esph[j] / cv[j]);
-            if (returns_heat) {
-              neighbours.push_back(j);
-              weights.push_back(w * volume);
-              shepard += w * volume;
-            }
-          }
+    for (int n = first_candidate[i]; n < first_candidate[i + 1]; n++) {
+      const int m = candidates[n];
+      const int j = medium_atoms[m];
+      if (inlet_axis >= 0 &&
+          FixSPHInletTemperature::periodic_cell(domain, x[j][inlet_axis], inlet_axis) != side)
+        continue;
+      const double d[3] = {x[j][0] - g[0], x[j][1] - g[1], x[j][2] - g[2]};
+      const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      if (rsq >= cutsq) continue;
+      const double q = sqrt(rsq) * kernel.inv_h;
+      const double w = kernel.w_scale * sphk_f(kernel.kind, q);
+      const double volume = medium_volume[m];
+      sphi_add_g(&point, d, w, minus_dwdr_r_scale * sphk_df_over_q(kernel.kind, q), volume,
+                 medium_temperature[m]);
+      if (returns_heat) {
+        neighbours.push_back(j);
+        weights.push_back(w * volume);
+        shepard += w * volume;
+      }
+    }
     for (size_t n = start; n < weights.size(); n++) weights[n] /= shepard;
     how[i] = sphi_solve(&point, h, &ghost[i], nullptr);
   }
@@ -268,8 +358,7 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
 }
 
 /* ----------------------------------------------------------------------
-   the owned wall atoms next to a wall that holds a temperature, with the
-   cells of the last interpolate() (the atoms have not moved since)
+   the owned wall atoms next to a wall that holds a temperature
 ------------------------------------------------------------------------- */
 
 void SPHMirror::find_junctions()
@@ -279,6 +368,9 @@ void SPHMirror::find_junctions()
   const double cutsq = cutoff * cutoff;
   junction.assign(atom->nlocal, 0);
   if (!held_walls) return;
+  // the bins of interpolate() in this step, else this step's
+  if (!bins_fresh) bin_atoms();
+  bins_fresh = true;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     int c_lo[3], c_hi[3];
@@ -308,7 +400,7 @@ void SPHMirror::return_heat(const std::vector<double> &rate, Fix *owner)
   for (int i = 0; i < nlocal; i++)
     if (!junction[i])
       for (int n = first_neighbour[i]; n < first_neighbour[i + 1]; n++)
-      returned[neighbours[n]] += weights[n] * rate[i];
+        returned[neighbours[n]] += weights[n] * rate[i];
   SPHCompat::reverse_comm(comm, owner);
   const double *const rmass = atom->rmass;
   const double *const mass = atom->mass;

@@ -7,6 +7,7 @@
 #define LMP_SPH_MIRROR_H
 
 #include "pointers.h"
+#include "sph_kernels.h"
 
 #include <string>
 #include <vector>
@@ -46,6 +47,10 @@ class SPHMirror : protected Pointers {
   void interpolate(std::vector<double> &ghost, std::vector<int> &how,
                    std::vector<double> *depth = nullptr);
 
+  // after atoms were exchanged or sorted (the owner's pre_neighbor): the
+  // candidates kept from the last neighbour build are stale
+  void neighbours_changed() { candidates_valid = false; }
+
   // mark the owned wall atoms within the kernel's reach of a particle of a
   // wall that holds a temperature (a corner with a Dirichlet or isothermal
   // wall), after interpolate() in the same step; then at_junction(i)
@@ -77,13 +82,31 @@ class SPHMirror : protected Pointers {
   std::vector<double> weights;
   std::vector<double> returned;    // per atom (owned and ghost), energy rate
   std::vector<int> junction;       // per owned atom: next to another kind of wall
-  // cells of side 'cutoff' over the atoms not in the group (owned and ghost)
+  // cells of side 'cutoff' over the atoms not in the group (owned and ghost);
+  // bins_fresh: binned in the last interpolate()
   std::vector<int> cell_head, cell_next;
   double cell_lo[3];
   int ncell[3];
+  bool bins_fresh;
+  // per owned wall atom, kept from one neighbour build to the next: the
+  // medium atoms within cutoff + skin of its ghost point as it was then
+  // (candidates_at); the medium moves less than half the skin in that time
+  // candidates[n] indexes medium_atoms, the atoms near some ghost point,
+  // whose volume and temperature are found once per step
+  std::vector<int> first_candidate, candidates, medium_atoms;
+  std::vector<double> candidates_at;    // 3 per owned atom
+  bool candidates_valid;
+  std::vector<double> medium_volume, medium_temperature;
+  // this step's ghost points: 3 per owned atom, and whether there is one
+  std::vector<double> ghost_at;
+  std::vector<int> has_ghost;
 
   int ghost_point(const double *x, double *ghost, double *depth = nullptr);
   void bin_atoms();
+  void find_candidates();
+  template <int DIM>
+  void interpolate_points(std::vector<double> &ghost, std::vector<int> &how,
+                          const sphk_kernel &kernel);
   void cells_around(const double *p, int *c_lo, int *c_hi) const;
 };
 

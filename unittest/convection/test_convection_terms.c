@@ -47,6 +47,10 @@ static void test_buoyancy(void)
   }
 }
 
+/* 0: neighbours added with sphi_add (r, dW/dr); 1: with sphi_add_g (the
+   fix's form, -dW/dr / r from sphk_df_over_q) */
+static int add_form = 0;
+
 /* Sum the neighbours of point p on a unit square lattice (spacing 1,
    particles at i + 1/2) restricted to x > xwall, y > ywall, with a field
    f = c0 + cx x + cy y; returns the sphi_solve result. */
@@ -64,7 +68,11 @@ static int interpolate_lattice(int kind, double hdx, const double p[2], double x
       const double d[3] = {x - p[0], y - p[1], 0.0};
       const double r = sqrt(d[0] * d[0] + d[1] * d[1]);
       if (x < xwall || y < ywall || r >= cutoff) continue;
-      sphi_add(&point, d, r, sphk_w(&k, r), sphk_dwdr(&k, r), 1.0, c[0] + c[1] * x + c[2] * y);
+      if (add_form)
+        sphi_add_g(&point, d, sphk_w(&k, r), -k.dw_scale * k.inv_h * sphk_df_over_q(kind, r * k.inv_h),
+                   1.0, c[0] + c[1] * x + c[2] * y);
+      else
+        sphi_add(&point, d, r, sphk_w(&k, r), sphk_dwdr(&k, r), 1.0, c[0] + c[1] * x + c[2] * y);
     }
   return sphi_solve(&point, hdx, value, grad);
 }
@@ -77,19 +85,24 @@ static void test_linear(void)
   const double points[4][2] = {{0.25, 0.1}, {0.5, 3.0}, {0.5, 0.5}, {2.5, 1.5}};
   const char *where[4] = {"corner (ghost near the vertex)", "straight wall", "corner (on a particle)",
                           "corner, deeper ghost"};
+  const char *forms[2] = {"sphi_add", "sphi_add_g"};
   int kind, n;
-  for (kind = 0; kind < SPHK_NKINDS; kind++)
-    for (n = 0; n < 4; n++) {
-      double value = 0.0, grad[3];
-      char what[160];
-      const double want = c[0] + c[1] * points[n][0] + c[2] * points[n][1];
-      const double hdx = (kind == SPHK_LUCY) ? 3.0 : 1.3;
-      const int how = interpolate_lattice(kind, hdx, points[n], 0.0, 0.0, c, &value, grad);
-      snprintf(what, sizeof what, "%s kernel, %s: corrected value", sphk_name(kind), where[n]);
-      check(how == SPHI_CORRECTED && fabs(value - want) < 1e-12, what, value, want);
-      snprintf(what, sizeof what, "%s kernel, %s: gradient", sphk_name(kind), where[n]);
-      check(fabs(grad[0] - c[1]) < 1e-11 && fabs(grad[1] - c[2]) < 1e-11, what, grad[0], c[1]);
-    }
+  for (add_form = 0; add_form < 2; add_form++)
+    for (kind = 0; kind < SPHK_NKINDS; kind++)
+      for (n = 0; n < 4; n++) {
+        double value = 0.0, grad[3];
+        char what[200];
+        const double want = c[0] + c[1] * points[n][0] + c[2] * points[n][1];
+        const double hdx = (kind == SPHK_LUCY) ? 3.0 : 1.3;
+        const int how = interpolate_lattice(kind, hdx, points[n], 0.0, 0.0, c, &value, grad);
+        snprintf(what, sizeof what, "%s, %s kernel, %s: corrected value", forms[add_form],
+                 sphk_name(kind), where[n]);
+        check(how == SPHI_CORRECTED && fabs(value - want) < 1e-12, what, value, want);
+        snprintf(what, sizeof what, "%s, %s kernel, %s: gradient", forms[add_form],
+                 sphk_name(kind), where[n]);
+        check(fabs(grad[0] - c[1]) < 1e-11 && fabs(grad[1] - c[2]) < 1e-11, what, grad[0], c[1]);
+      }
+  add_form = 0;
   {
     /* the test can fail: a Shepard average at a wall is off for a linear field */
     const double p[2] = {0.5, 3.0};

@@ -22,6 +22,10 @@
             factor (to 1e-10), so that their sum changes by the first-order
             change of the kernel sums, recomputed here from the shifts (to
             1e-10 of the change)
+  shared    the skillen sums made in the pair loop of sph/harmonic/visc
+            (loop shared) give the positions of the fix's own pass (loop
+            own) to round-off; with another pressure form it makes them
+            itself (on --np ranks)
   linear    with 'correct yes' the temperature of a linear field follows the
             shifted particles exactly (to 1e-10), next to walls too, and the
             fix's energy equals the change of sum m cv T of the group
@@ -160,6 +164,48 @@ write_dump      all custom after.dump id x y modify sort id format float %.17g
     print(f"{'ok' if ok else 'FAIL'}: {a.form}: spread of the kernel sums of the shifted particles "
           f"{spread0:.4e} -> {spread1:.4e} (must halve); largest shift {step[moved].max():.3e}; "
           f"largest move of walls and the group left out {still:.1e} (must be 0)")
+    return ok
+
+
+SHARED_LINE = "Fix sph/shift: the sums are made in the pair loop of sph/harmonic/visc"
+
+
+def check_shared(a, work):
+    """The skillen sums made in the flow pair's loop (loop shared, the
+    default) against the fix's own pass (loop own), on jittered particles
+    that only the shift moves (rho stays put, so the pair's volumes are
+    those at the end of the step): the same positions to round-off, on
+    --np ranks; with another pressure form the fix makes them itself."""
+    def run(name, loop, pair_options=""):
+        script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + JITTER + f"""
+velocity        all set 1.0 0.5 0.0 units box
+write_dump      all custom {name}_before.dump id x y modify sort id format float %.17g
+fix             hold all sph/stationary
+fix             shift fluid sph/shift {shift_args(a, 1.12)} loop {loop}
+timestep        1.0e-3
+run             100
+write_dump      all custom {name}.dump id x y modify sort id format float %.17g
+"""
+        if pair_options:
+            script = script.replace("sph/harmonic/visc wendland 0.4 ",
+                                    f"sph/harmonic/visc wendland 0.4 {pair_options} ")
+        out = run_lammps(a.lmp, script, work, a.np, a.mpirun)
+        d = read_dump(os.path.join(work, f"{name}.dump"))
+        return d, SHARED_LINE in out
+    own, own_line = run("own", "own")
+    shared, shared_line = run("shared", "shared")
+    other, other_line = run("other", "shared", "pressure sum")
+    start = read_dump(os.path.join(work, "own_before.dump"))
+    moved = np.hypot(own["x"] - start["x"], own["y"] - start["y"]).max()
+    diff = max(np.abs(shared["x"] - own["x"]).max(), np.abs(shared["y"] - own["y"]).max())
+    diff_other = max(np.abs(other["x"] - own["x"]).max(), np.abs(other["y"] - own["y"]).max())
+    ok = (moved > 1e-3 and diff < 1e-13 and diff_other < 1e-13 and shared_line and not own_line
+          and not other_line)
+    print(f"{'ok' if ok else 'FAIL'}: {a.form} on {a.np} rank(s): largest shift {moved:.2e} in 100 steps; "
+          f"positions after them, "
+          f"sums from the pair loop against the fix's own pass: {diff:.2e}, with pressure sum "
+          f"(own pass taken) {diff_other:.2e} (limit 1e-13); log line: shared {shared_line}, own "
+          f"{own_line}, pressure sum {other_line}")
     return ok
 
 
@@ -333,14 +379,14 @@ def check_volume(a, work):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    p.add_argument("check", choices=["lattice", "spread", "linear", "follow", "volume"])
+    p.add_argument("check", choices=["lattice", "spread", "linear", "follow", "volume", "shared"])
     p.add_argument("--form", choices=sorted(FORMS), default="skillen")
     lammps_arguments(p)  # --np: MPI ranks ('follow' only)
     a = p.parse_args()
     a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
     with tempfile.TemporaryDirectory() as work:
         ok = {"lattice": check_lattice, "spread": check_spread, "linear": check_linear,
-              "follow": check_follow, "volume": check_volume}[a.check](
+              "follow": check_follow, "volume": check_volume, "shared": check_shared}[a.check](
             a, work)
     return 0 if ok else 1
 
