@@ -6,7 +6,9 @@
 #   ./run.sh quick        the same at 20 x 20 (about 10 s)
 #   ./run.sh conduction   Ra = 0: Nu must be 1 (20 x 20, to t = 0.6)
 #   ./run.sh air          Reece et al. 2024 section 3.2 in SI units (in.air),
-#                         N = 40 across to t* = 0.5 (TSTAR), about 5 minutes
+#                         N = 40 across to t* = 0.5 (TSTAR), about 5 minutes;
+#                         DELTA=0 for their Table 2 (no density diffusion),
+#                         END_SECONDS=60 for the run time of their Table 3
 #   RA=1e5 N=60 ./run.sh  another Rayleigh number or resolution
 # Environment: LMP (LAMMPS binary), PLUGIN (sphthermalplugin.so), NP (MPI
 # ranks), OUT (output directory, default ./out), RA, N, TEND, KERNEL, HDX, BG
@@ -21,7 +23,8 @@ here=$(cd "$(dirname "$0")" && pwd)
 if [ "${1:-}" = air ]; then
   # Reece et al. 2024, section 3.2, in SI units (in.air): Ra = 1.203e5, Pr = 0.705
   $run "$LMP" -in "$here/in.air" -var plugin "$PLUGIN" -var n "${N:-40}" \
-    -var tstar "${TSTAR:-0.5}" -var out air.dump -log log.air | grep -E "^Reece|final"
+    -var tstar "${TSTAR:-0.5}" -var seconds "${END_SECONDS:-0}" \
+    -var delta "${DELTA:-0.1}" -var out air.dump -log log.air | grep -E "^Reece|^at t|final"
   "$PYTHON" "$here/analyse.py" air.dump --log log.air --ra 1.2033e5 --pr 0.7051 \
     --si 0.0386 2.13594e-5 283 20 --png air.png
   exit 0
