@@ -182,7 +182,9 @@ void FixSPHShift::init()
   cutoff = *(double *) flow->extract("cutoff", dim);
   SPHCheck::atom_state(lmp, cmd, 0, SPHCheck::RHO | (correct ? SPHCheck::CV : 0));
   const int was_from_pair = from_pair;
-  from_pair = sums_from_pair_possible() && flow->provide_shift_sums();
+  // the pair loop makes the skillen sum alone, when it sees every pair of the group
+  from_pair = !loop_own && form == SKILLEN && !correct && !continuity &&
+      flow->provide_shift_sums(groupbit);
   if (from_pair && !was_from_pair && comm->me == 0)
     utils::logmesg(lmp,
                    "Fix sph/shift: the sums are made in the pair loop of sph/harmonic/visc (loop "
@@ -190,39 +192,6 @@ void FixSPHShift::init()
   if (!from_pair) SPHCompat::request_half_list(neighbor, this, instance_me);
 }
 
-/* ----------------------------------------------------------------------
-   the flow pair's loop can make the sums when they are those of the skillen
-   form alone and that loop sees every pair an atom of the group has: its
-   type pairs are the flow style's, and no atom of the group is a wall of
-   fix sph/wall/adami (the loop skips wall-wall pairs). Its volumes are those
-   of the force step (a density half a step earlier than here).
-------------------------------------------------------------------------- */
-
-bool FixSPHShift::sums_from_pair_possible()
-{
-  if (loop_own || form != SKILLEN || correct || continuity) return false;
-  int adami_walls = 0;
-  for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/adami"))
-    adami_walls |= wall->groupbit;
-  const int ntypes = atom->ntypes;
-  std::vector<int> group_type(ntypes + 1, 0);
-  int in_wall = 0;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) {
-      group_type[atom->type[i]] = 1;
-      if (atom->mask[i] & adami_walls) in_wall = 1;
-    }
-  std::vector<int> group_type_all(ntypes + 1, 0);
-  MPI_Allreduce(group_type.data(), group_type_all.data(), ntypes + 1, MPI_INT, MPI_MAX, world);
-  int in_wall_any = 0;
-  MPI_Allreduce(&in_wall, &in_wall_any, 1, MPI_INT, MPI_MAX, world);
-  if (in_wall_any) return false;
-  for (int t = 1; t <= ntypes; t++)
-    if (group_type_all[t])
-      for (int u = 1; u <= ntypes; u++)
-        if (!flow->setflag[MIN(t, u)][MAX(t, u)]) return false;
-  return true;
-}
 
 void FixSPHShift::init_list(int /*id*/, NeighList *ptr)
 {
@@ -249,7 +218,6 @@ void FixSPHShift::end_of_step()
 void FixSPHShift::shift_from_pair_sums()
 {
   double *const *const x = atom->x;
-  const double *const *const v = atom->v;
   const double *const rho = atom->rho;
   const double *const rmass = atom->rmass;
   const double *const mass = atom->mass;
@@ -257,24 +225,39 @@ void FixSPHShift::shift_from_pair_sums()
   const int *const mask = atom->mask;
   const int dim = domain->dimension;
   const double h = cutoff / sphk_support(kernel_kind);
-  const double dt = update->dt;
   const double *const sums_of = flow->shift_sums();
   double largest_local = 0.0;
   int capped_local = 0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    const double spacing = spacing_of((rmass ? rmass[i] : mass[type[i]]) / rho[i], dim);
     double dr[3];
-    sphs_skillen(coefficient, h, sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]),
-                 dt, &sums_of[3 * (size_t) i], dr);
-    if (dim == 2) dr[2] = 0.0;
-    capped_local += sphs_cap(dr, cap * spacing);
-    largest_local =
-        MAX(largest_local, sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]) / spacing);
+    displacement(i, &sums_of[3 * (size_t) i],
+                 spacing_of((rmass ? rmass[i] : mass[type[i]]) / rho[i], dim), h, dim, dr,
+                 largest_local, capped_local);
     for (int a = 0; a < 3; a++) x[i][a] += dr[a];
   }
   largest = largest_local;
   capped = capped_local;
+}
+
+/* ----------------------------------------------------------------------
+   atom i's shift dr from its neighbour sum (of its form), shortened to the
+   cap; the largest shift / spacing and the count of capped atoms follow
+------------------------------------------------------------------------- */
+
+void FixSPHShift::displacement(int i, const double *sum, double spacing, double h, int dim,
+                               double *dr, double &largest_local, int &capped_local)
+{
+  const double *const v = atom->v[i];
+  if (form == DELTAPLUS)
+    sphs_deltaplus(coefficient, h, speed, update->dt, sum, dr);
+  else
+    sphs_skillen(coefficient, h, sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), update->dt, sum,
+                 dr);
+  if (dim == 2) dr[2] = 0.0;
+  capped_local += sphs_cap(dr, cap * spacing);
+  largest_local =
+      MAX(largest_local, sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]) / spacing);
 }
 
 template <int FORM> void FixSPHShift::shift_corrected()
@@ -316,7 +299,6 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
   const sphk_kernel kernel = sphk_make(kernel_kind, dim, cutoff);
   const double h = cutoff / sphk_support(kernel_kind);
   const double cutsq = cutoff * cutoff;
-  const double dt = update->dt;
 
   const double inv_h = kernel.inv_h;
   const double dwdr_r_scale = kernel.dw_scale * kernel.inv_h;    // dW/dr / r = this f'(q) / q
@@ -422,21 +404,13 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
     const double *const s = &sums[(size_t) per_atom * i];
     const double spacing = spacing_of(volume[i], dim);
     double *dr = &shift[3 * (size_t) i];
-    if (FORM == DELTAPLUS)
-      sphs_deltaplus(coefficient, h, speed, dt, s, dr);
-    else
-      sphs_skillen(coefficient, h, sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]),
-                   dt, s, dr);
-    if (dim == 2) dr[2] = 0.0;
-    capped_local += sphs_cap(dr, cap * spacing);
+    displacement(i, s, spacing, h, dim, dr, largest_local, capped_local);
     if (CONTINUITY) {
       const double *const grad_volume = s + at_volume;
       rho_change_local +=
           rho[i] * (dr[0] * grad_volume[0] + dr[1] * grad_volume[1] + dr[2] * grad_volume[2]);
       rho_sum_local += rho[i];
     }
-    largest_local =
-        MAX(largest_local, sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]) / spacing);
     if (CORRECT) {
       double grad_t[3];
       sphg_solve_transposed(s + at_l, s + at_g, grad_t, dim);

@@ -69,8 +69,9 @@ class FixSPHShift : public Fix {
   int capped;                   // atoms shortened to the cap in the last step, on this rank
   int sums_per_atom;            // length of an atom's neighbour sums
 
-  bool sums_from_pair_possible();
   void shift_from_pair_sums();
+  void displacement(int i, const double *sum, double spacing, double h, int dim, double *dr,
+                    double &largest_local, int &capped_local);
   template <int FORM> void shift_corrected();
   template <int FORM, int CORRECT> void shift_continuity();
   template <int FORM, int CORRECT, int CONTINUITY> void shift_group();

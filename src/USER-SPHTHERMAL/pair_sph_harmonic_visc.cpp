@@ -144,9 +144,24 @@ void PairSPHHarmonicVisc::end_compute()
 
 /* ---------------------------------------------------------------------- */
 
-bool PairSPHHarmonicVisc::provide_shift_sums()
+bool PairSPHHarmonicVisc::provide_shift_sums(int groupbit)
 {
   if (pressure_form != SPHF_P_AVERAGED) return false;
+  const int ntypes = atom->ntypes;
+  std::vector<int> group_type(ntypes + 1, 0), group_type_all(ntypes + 1, 0);
+  int in_wall = 0, in_wall_any = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) {
+      group_type[atom->type[i]] = 1;
+      if (atom->mask[i] & wall_groupbit) in_wall = 1;
+    }
+  MPI_Allreduce(group_type.data(), group_type_all.data(), ntypes + 1, MPI_INT, MPI_MAX, world);
+  MPI_Allreduce(&in_wall, &in_wall_any, 1, MPI_INT, MPI_MAX, world);
+  if (in_wall_any) return false;
+  for (int t = 1; t <= ntypes; t++)
+    if (group_type_all[t])
+      for (int u = 1; u <= ntypes; u++)
+        if (!setflag[MIN(t, u)][MAX(t, u)]) return false;
   shift_sums_wanted = 1;
   return true;
 }

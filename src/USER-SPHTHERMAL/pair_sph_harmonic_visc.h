@@ -37,11 +37,13 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
 
-  // fix sph/shift's sum_j V_j grad_i W_ij, made in this style's pair loop
-  // from the next compute() on (asked at every init, after this style's);
-  // false when this style cannot: another pressure form than the default
-  // (the sums are instantiated only with it), or the /omp style
-  virtual bool provide_shift_sums();
+  // fix sph/shift's sum_j V_j grad_i W_ij for the atoms of 'groupbit', made
+  // in this style's pair loop from the next compute() on (asked at every
+  // init, after this style's); false when this loop cannot: another
+  // pressure form than the default (the sums are instantiated only with
+  // it), the /omp style, a type pair of the group's types that is not this
+  // style's, or an atom of the group that is a wall (wall-wall pairs skipped)
+  virtual bool provide_shift_sums(int groupbit);
   const double *shift_sums() const { return shift_sum; }
 
  protected:
