@@ -22,7 +22,6 @@
 #include "fix_sph_materials.h"
 #include "force.h"
 #include "modify.h"
-#include "neigh_list.h"
 #include "neighbor.h"
 #include "pair.h"
 #include "memory.h"
@@ -44,7 +43,7 @@ static const char cmd[] = "fix sph/wall/adami";
 
 FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), body_given(0), body_force(nullptr), buoyancy(nullptr), wall_groupbit(0), kernel_kind(0),
-    cutoff(0.0), materials(nullptr), list(nullptr), solid_type(nullptr), fluid_weight(nullptr), any_solid(0),
+    cutoff(0.0), materials(nullptr), fluid_near_valid(false), solid_type(nullptr), fluid_weight(nullptr), any_solid(0),
     solid_state(nullptr), nmax(0)
 {
   if (!atom->rho_flag || !atom->vest_flag)
@@ -75,7 +74,7 @@ FixSPHWallAdami::~FixSPHWallAdami()
 
 int FixSPHWallAdami::setmask()
 {
-  return PRE_FORCE | POST_FORCE;
+  return PRE_NEIGHBOR | PRE_FORCE | POST_FORCE;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -115,13 +114,40 @@ void FixSPHWallAdami::init()
   wall_groupbit = 0;
   for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/adami"))
     wall_groupbit |= wall->groupbit;
-
-  SPHCompat::request_full_list(neighbor, this, instance_me);
+  fluid_near_valid = false;
 }
 
-void FixSPHWallAdami::init_list(int /*id*/, NeighList *ptr)
+// atoms were exchanged or sorted: the fluid found near each wall particle is stale
+void FixSPHWallAdami::setup_pre_neighbor()
 {
-  list = ptr;
+  pre_neighbor();
+}
+
+void FixSPHWallAdami::pre_neighbor()
+{
+  fluid_near_valid = false;
+}
+
+/* ----------------------------------------------------------------------
+   the fluid (owned and ghost) within cutoff + skin of each owned wall
+   particle: until the next neighbour build no atom moves by half the skin
+------------------------------------------------------------------------- */
+
+void FixSPHWallAdami::find_fluid_near()
+{
+  double *const *const x = atom->x;
+  const int *const mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  cells.bin(x, mask, nlocal + atom->nghost, wall_groupbit, cutoff);
+  first_fluid.assign(nlocal + 1, 0);
+  fluid_near.clear();
+  for (int i = 0; i < nlocal; i++) {
+    first_fluid[i] = fluid_near.size();
+    if (!(mask[i] & groupbit)) continue;
+    cells.within(x, x[i], cutoff + neighbor->skin, [&](int j) { fluid_near.push_back(j); });
+  }
+  first_fluid[nlocal] = fluid_near.size();
+  fluid_near_valid = true;
 }
 
 void FixSPHWallAdami::setup_pre_force(int vflag)
@@ -158,8 +184,8 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
   const double *const cv = atom->cv;
   const int ntypes = atom->ntypes;
 
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
+  if (!fluid_near_valid || (int) first_fluid.size() != atom->nlocal + 1) find_fluid_near();
+  for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const int is_solid = solid_type[type[i]];
     double weight = 0.0, weighted_p = 0.0, hydrostatic = 0.0;
@@ -167,10 +193,8 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
     if (is_solid)
       for (int t = 1; t <= ntypes; t++) fluid_weight[t] = 0.0;
     double weighted_v[3] = {0.0, 0.0, 0.0};
-    const int *const jlist = list->firstneigh[i];
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      if (mask[j] & wall_groupbit) continue;
+    for (int n = first_fluid[i]; n < first_fluid[i + 1]; n++) {
+      const int j = fluid_near[n];
       const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
       const double rsq = dx * dx + dy * dy + dz * dz;
       if (rsq >= cutsq) continue;

@@ -15,6 +15,9 @@ FixStyle(sph/wall/adami,FixSPHWallAdami);
 #include "atom.h"
 #include "fix.h"
 #include "sph_body_force.h"
+#include "sph_cells.h"
+
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -23,7 +26,8 @@ class FixSPHWallAdami : public Fix {
   FixSPHWallAdami(class LAMMPS *, int, char **);
   int setmask() override;
   void init() override;
-  void init_list(int, class NeighList *) override;
+  void setup_pre_neighbor() override;
+  void pre_neighbor() override;
   void setup_pre_force(int) override;
   void pre_force(int) override;
   void setup(int) override;
@@ -52,7 +56,12 @@ class FixSPHWallAdami : public Fix {
   int kernel_kind;
   double cutoff;
   class FixSPHMaterials *materials;
-  class NeighList *list;
+  // the fluid within cutoff + skin of each owned wall particle, found at
+  // each neighbour-list build and kept until the next (first_fluid: CSR)
+  SPHCells cells;
+  std::vector<int> first_fluid, fluid_near;
+  bool fluid_near_valid;
+  void find_fluid_near();
   int *solid_type;          // per type: 1 when the type has no equation of state
   double *fluid_weight;     // per type: kernel weight of its fluid around one solid particle
   int any_solid;            // 1 when some wall particle of this fix is solid

@@ -35,12 +35,8 @@ static const char *const thermal_walls[] = {"sph/wall/adiabatic", "sph/wall/diri
 SPHMirror::SPHMirror(LAMMPS *lmp, const std::string &cmd, bool returns) :
     Pointers(lmp), command(cmd), returns_heat(returns), region(nullptr), groupbit(0),
     medium_exclude(0), held_walls(0), kernel_kind(0), cutoff(0.0), inlet_axis(-1),
-    bins_fresh(false), candidates_valid(false)
+    candidates_valid(false)
 {
-  for (int k = 0; k < 3; k++) {
-    cell_lo[k] = 0.0;
-    ncell[k] = 1;
-  }
 }
 
 SPHMirror::~SPHMirror() = default;
@@ -157,39 +153,6 @@ int SPHMirror::ghost_point(const double *x, double *ghost, double *depth)
    thermal walls, owned and ghost
 ------------------------------------------------------------------------- */
 
-void SPHMirror::bin_atoms()
-{
-  double *const *const x = atom->x;
-  const int *const mask = atom->mask;
-  const int nall = atom->nlocal + atom->nghost;
-  double lo[3] = {0.0, 0.0, 0.0}, hi[3] = {0.0, 0.0, 0.0};
-  int any = 0;
-  for (int j = 0; j < nall; j++) {
-    if (mask[j] & groupbit) continue;
-    for (int k = 0; k < 3; k++) {
-      if (!any || x[j][k] < lo[k]) lo[k] = x[j][k];
-      if (!any || x[j][k] > hi[k]) hi[k] = x[j][k];
-    }
-    any = 1;
-  }
-  long total = 1;
-  for (int k = 0; k < 3; k++) {
-    cell_lo[k] = lo[k];
-    ncell[k] = 1 + static_cast<int>((hi[k] - lo[k]) / cutoff);
-    total *= ncell[k];
-  }
-  cell_head.assign(total, -1);
-  cell_next.assign(nall, -1);
-  for (int j = 0; j < nall; j++) {
-    if (mask[j] & groupbit) continue;
-    int c[3];
-    for (int k = 0; k < 3; k++) c[k] = static_cast<int>((x[j][k] - cell_lo[k]) / cutoff);
-    const long cell = (static_cast<long>(c[2]) * ncell[1] + c[1]) * ncell[0] + c[0];
-    cell_next[j] = cell_head[cell];
-    cell_head[cell] = j;
-  }
-}
-
 /* ----------------------------------------------------------------------
    the medium atoms within cutoff + skin of each ghost point of this step
 ------------------------------------------------------------------------- */
@@ -200,8 +163,7 @@ void SPHMirror::find_candidates()
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
   const double reach = cutoff + neighbor->skin;
-  const double reachsq = reach * reach;
-  bin_atoms();
+  cells.bin(x, mask, nlocal + atom->nghost, groupbit, cutoff);
   first_candidate.assign(nlocal + 1, 0);
   candidates.clear();
   medium_atoms.clear();
@@ -211,40 +173,28 @@ void SPHMirror::find_candidates()
   for (int i = 0; i < nlocal; i++) {
     first_candidate[i] = candidates.size();
     if (!has_ghost[i]) continue;
-    const double *const g = &ghost_at[3 * (size_t) i];
-    // cells of side cutoff: the skin may reach a second cell out
-    int c_lo[3], c_hi[3];
-    for (int k = 0; k < 3; k++) {
-      c_lo[k] = MAX(static_cast<int>(floor((g[k] - reach - cell_lo[k]) / cutoff)), 0);
-      c_hi[k] = MIN(static_cast<int>(floor((g[k] + reach - cell_lo[k]) / cutoff)), ncell[k] - 1);
-    }
-    for (int cz = c_lo[2]; cz <= c_hi[2]; cz++)
-      for (int cy = c_lo[1]; cy <= c_hi[1]; cy++)
-        for (int cx = c_lo[0]; cx <= c_hi[0]; cx++)
-          for (int j = cell_head[(static_cast<long>(cz) * ncell[1] + cy) * ncell[0] + cx]; j >= 0;
-               j = cell_next[j]) {
-            if (mask[j] & medium_exclude) continue;
-            const double d[3] = {x[j][0] - g[0], x[j][1] - g[1], x[j][2] - g[2]};
-            if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] >= reachsq) continue;
-            if (medium_index[j] < 0) {
-              medium_index[j] = medium_atoms.size();
-              medium_atoms.push_back(j);
-            }
-            candidates.push_back(medium_index[j]);
-          }
+    cells.within(x, &ghost_at[3 * (size_t) i], reach, [&](int j) {
+      if (mask[j] & medium_exclude) return;
+      if (medium_index[j] < 0) {
+        medium_index[j] = medium_atoms.size();
+        medium_atoms.push_back(j);
+      }
+      candidates.push_back(medium_index[j]);
+    });
   }
   first_candidate[nlocal] = candidates.size();
-  candidates_valid = true;
-}
-
-// the cells around point p: lo and hi cell indices per dimension
-void SPHMirror::cells_around(const double *p, int *c_lo, int *c_hi) const
-{
-  for (int k = 0; k < 3; k++) {
-    const int c = static_cast<int>(floor((p[k] - cell_lo[k]) / cutoff));
-    c_lo[k] = MAX(c - 1, 0);
-    c_hi[k] = MIN(c + 1, ncell[k] - 1);
+  // the particles of walls that hold a temperature near each wall particle
+  first_held.assign(nlocal + 1, 0);
+  held_candidates.clear();
+  for (int i = 0; i < nlocal; i++) {
+    first_held[i] = held_candidates.size();
+    if (!held_walls || !(mask[i] & groupbit)) continue;
+    cells.within(x, x[i], reach, [&](int j) {
+      if (mask[j] & held_walls) held_candidates.push_back(j);
+    });
   }
+  first_held[nlocal] = held_candidates.size();
+  candidates_valid = true;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -289,7 +239,6 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
       stale = true;
   }
   if (stale) find_candidates();
-  bins_fresh = stale;
   const int nmedium = medium_atoms.size();
   medium_volume.resize(nmedium);
   medium_temperature.resize(nmedium);
@@ -364,30 +313,18 @@ void SPHMirror::interpolate_points(std::vector<double> &ghost, std::vector<int> 
 void SPHMirror::find_junctions()
 {
   double *const *const x = atom->x;
-  const int *const mask = atom->mask;
   const double cutsq = cutoff * cutoff;
   junction.assign(atom->nlocal, 0);
   if (!held_walls) return;
-  // the bins of interpolate() in this step, else this step's
-  if (!bins_fresh) bin_atoms();
-  bins_fresh = true;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    int c_lo[3], c_hi[3];
-    cells_around(x[i], c_lo, c_hi);
-    for (int cz = c_lo[2]; cz <= c_hi[2] && !junction[i]; cz++)
-      for (int cy = c_lo[1]; cy <= c_hi[1] && !junction[i]; cy++)
-        for (int cx = c_lo[0]; cx <= c_hi[0] && !junction[i]; cx++)
-          for (int j = cell_head[(static_cast<long>(cz) * ncell[1] + cy) * ncell[0] + cx]; j >= 0;
-               j = cell_next[j]) {
-            if (!(mask[j] & held_walls)) continue;
-            const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-            if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cutsq) {
-              junction[i] = 1;
-              break;
-            }
-          }
-  }
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int n = first_held[i]; n < first_held[i + 1]; n++) {
+      const int j = held_candidates[n];
+      const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cutsq) {
+        junction[i] = 1;
+        break;
+      }
+    }
 }
 
 /* ---------------------------------------------------------------------- */

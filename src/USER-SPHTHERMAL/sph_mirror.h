@@ -7,6 +7,7 @@
 #define LMP_SPH_MIRROR_H
 
 #include "pointers.h"
+#include "sph_cells.h"
 #include "sph_kernels.h"
 
 #include <string>
@@ -82,18 +83,17 @@ class SPHMirror : protected Pointers {
   std::vector<double> weights;
   std::vector<double> returned;    // per atom (owned and ghost), energy rate
   std::vector<int> junction;       // per owned atom: next to another kind of wall
-  // cells of side 'cutoff' over the atoms not in the group (owned and ghost);
-  // bins_fresh: binned in the last interpolate()
-  std::vector<int> cell_head, cell_next;
-  double cell_lo[3];
-  int ncell[3];
-  bool bins_fresh;
+  // the atoms not in the group (owned and ghost) in cells of side cutoff,
+  // binned at each neighbour build
+  SPHCells cells;
   // per owned wall atom, kept from one neighbour build to the next: the
   // medium atoms within cutoff + skin of its ghost point as it was then
   // (candidates_at); the medium moves less than half the skin in that time
   // candidates[n] indexes medium_atoms, the atoms near some ghost point,
   // whose volume and temperature are found once per step
   std::vector<int> first_candidate, candidates, medium_atoms;
+  // per owned wall atom: the atoms of held walls within cutoff + skin of it
+  std::vector<int> first_held, held_candidates;
   std::vector<double> candidates_at;    // 3 per owned atom
   bool candidates_valid;
   std::vector<double> medium_volume, medium_temperature;
@@ -102,12 +102,10 @@ class SPHMirror : protected Pointers {
   std::vector<int> has_ghost;
 
   int ghost_point(const double *x, double *ghost, double *depth = nullptr);
-  void bin_atoms();
   void find_candidates();
   template <int DIM>
   void interpolate_points(std::vector<double> &ghost, std::vector<int> &how,
                           const sphk_kernel &kernel);
-  void cells_around(const double *p, int *c_lo, int *c_hi) const;
 };
 
 }    // namespace LAMMPS_NS
