@@ -37,6 +37,7 @@
 #include "sph_material_laws.h"
 #include "update.h"
 
+#include <cfloat>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -276,41 +277,41 @@ void FixSPHDtReset::choose_dt()
       local[k] = dt;
   };
 
+  // the acoustic, force and thermal limits fall as one per-atom quantity
+  // rises: its largest gives their smallest dt with one division
+  double fastest = 0.0, largest_accel = 0.0, largest_relax = 0.0;
+  auto rises = [&](int k, double value, double &largest) {
+    if (!(value >= 0.0 && value <= DBL_MAX))    // not a number, infinite or negative: dt <= 0
+      bad[k] = 1;
+    else if (value > largest)
+      largest = value;
+  };
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const int itype = type[i];
     const double vsq = v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2];
     const double fsq = f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2];
-    const double temperature = esph[i] / cv[i];
 
     // a limit whose property the type lacks does not apply to the particle
     if (coeff[ACOUSTIC] > 0.0) {
       const sphe_eos *eos = materials->eos(itype);
-      if (eos) {
-        const double dt = coeff[ACOUSTIC] * h / (sphe_sound_speed(eos, rho[i]) + sqrt(vsq));
-        take(ACOUSTIC, dt);
-      }
+      if (eos) rises(ACOUSTIC, sphe_sound_speed(eos, rho[i]) + sqrt(vsq), fastest);
     }
     if (coeff[FORCE] > 0.0 && fsq != 0.0) {    // a non-finite force counts
       const double m = rmass ? rmass[i] : mass[itype];
-      const double accel = ftm2v * sqrt(fsq) / m;
-      const double dt = coeff[FORCE] * sqrt(h / accel);
-      take(FORCE, dt);
+      rises(FORCE, ftm2v * sqrt(fsq) / m, largest_accel);
     }
     if (coeff[VISCOUS] > 0.0) {
       const double mu = materials->viscosity(itype)
-          ? materials->viscosity_at(itype, temperature, "Fix sph/dt/reset")
+          ? materials->viscosity_at(itype, esph[i] / cv[i], "Fix sph/dt/reset")
           : 0.0;
-      if (mu > 0.0) {
-        const double dt = coeff[VISCOUS] * hsq * rho[i] / mu;
-        take(VISCOUS, dt);
-      }
+      if (mu > 0.0) take(VISCOUS, coeff[VISCOUS] * hsq * rho[i] / mu);
     }
-    if (relax_rate && (*relax_rate)[i] > 0.0) {
-      const double dt = coeff[THERMAL] / (*relax_rate)[i];
-      take(THERMAL, dt);
-    }
+    if (relax_rate && (*relax_rate)[i] > 0.0) rises(THERMAL, (*relax_rate)[i], largest_relax);
   }
+  if (fastest > 0.0) take(ACOUSTIC, coeff[ACOUSTIC] * h / fastest);
+  if (largest_accel > 0.0) take(FORCE, coeff[FORCE] * sqrt(h / largest_accel));
+  if (largest_relax > 0.0) take(THERMAL, coeff[THERMAL] / largest_relax);
   // the body force alone, as read from its fix: it counts from the first
   // step even when that fix adds it after this one has looked at the forces
   if (coeff[FORCE] > 0.0 && body_force) {

@@ -138,13 +138,22 @@ void FixSPHWallAdami::find_fluid_near()
   double *const *const x = atom->x;
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
-  cells.bin(x, mask, nlocal + atom->nghost, wall_groupbit, cutoff);
+  cells.bin(x, mask, nlocal + atom->nghost, wall_groupbit, cutoff + neighbor->skin);
   first_fluid.assign(nlocal + 1, 0);
   fluid_near.clear();
+  fluid_atoms.clear();
+  // an atom's place in fluid_atoms, -1 while it is near no wall particle
+  std::vector<int> fluid_index(nlocal + atom->nghost, -1);
   for (int i = 0; i < nlocal; i++) {
     first_fluid[i] = fluid_near.size();
     if (!(mask[i] & groupbit)) continue;
-    cells.within(x, x[i], cutoff + neighbor->skin, [&](int j) { fluid_near.push_back(j); });
+    cells.within(x, x[i], cutoff + neighbor->skin, [&](int j) {
+      if (fluid_index[j] < 0) {
+        fluid_index[j] = fluid_atoms.size();
+        fluid_atoms.push_back(j);
+      }
+      fluid_near.push_back(fluid_index[j]);
+    });
   }
   first_fluid[nlocal] = fluid_near.size();
   fluid_near_valid = true;
@@ -185,6 +194,22 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
   const int ntypes = atom->ntypes;
 
   if (!fluid_near_valid || (int) first_fluid.size() != atom->nlocal + 1) find_fluid_near();
+  // each fluid particle's pressure and rho times its body acceleration, once
+  const int nfluid = fluid_atoms.size();
+  fluid_pressure.resize(nfluid);
+  fluid_rho_accel.resize(3 * (size_t) nfluid);
+  for (int m = 0; m < nfluid; m++) {
+    const int j = fluid_atoms[m];
+    fluid_pressure[m] = sphe_pressure(materials->eos(type[j]), rho[j]);
+    double accel[3] = {body[0], body[1], body[2]};
+    if (buoyancy && (mask[j] & buoyancy->groupbit)) {
+      double a[3];
+      sphb_acceleration(buoyancy->gravity, buoyancy->beta[type[j]], esph[j] / cv[j], buoyancy->t0,
+                        a);
+      for (int k = 0; k < 3; k++) accel[k] += a[k];
+    }
+    for (int k = 0; k < 3; k++) fluid_rho_accel[3 * (size_t) m + k] = rho[j] * accel[k];
+  }
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const int is_solid = solid_type[type[i]];
@@ -194,21 +219,16 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
       for (int t = 1; t <= ntypes; t++) fluid_weight[t] = 0.0;
     double weighted_v[3] = {0.0, 0.0, 0.0};
     for (int n = first_fluid[i]; n < first_fluid[i + 1]; n++) {
-      const int j = fluid_near[n];
+      const int m = fluid_near[n];
+      const int j = fluid_atoms[m];
       const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
       const double rsq = dx * dx + dy * dy + dz * dz;
       if (rsq >= cutsq) continue;
       const double w = sphk_w(&kernel, sqrt(rsq));
       weight += w;
-      weighted_p += w * sphe_pressure(materials->eos(type[j]), rho[j]);
-      double accel[3] = {body[0], body[1], body[2]};
-      if (buoyancy && (mask[j] & buoyancy->groupbit)) {
-        double a[3];
-        sphb_acceleration(buoyancy->gravity, buoyancy->beta[type[j]], esph[j] / cv[j],
-                          buoyancy->t0, a);
-        for (int k = 0; k < 3; k++) accel[k] += a[k];
-      }
-      hydrostatic += w * rho[j] * (accel[0] * dx + accel[1] * dy + accel[2] * dz);
+      weighted_p += w * fluid_pressure[m];
+      const double *const rho_accel = &fluid_rho_accel[3 * (size_t) m];
+      hydrostatic += w * (rho_accel[0] * dx + rho_accel[1] * dy + rho_accel[2] * dz);
       for (int k = 0; k < 3; k++) weighted_v[k] += w * v[j][k];
       if (is_solid) {
         fluid_weight[type[j]] += w;

@@ -57,9 +57,12 @@ class FixSPHWallAdami : public Fix {
   double cutoff;
   class FixSPHMaterials *materials;
   // the fluid within cutoff + skin of each owned wall particle, found at
-  // each neighbour-list build and kept until the next (first_fluid: CSR)
+  // each neighbour-list build and kept until the next: fluid_near[n] for n
+  // in [first_fluid[i], first_fluid[i + 1]) indexes fluid_atoms, whose
+  // pressure and rho times body acceleration are found once per step
   SPHCells cells;
-  std::vector<int> first_fluid, fluid_near;
+  std::vector<int> first_fluid, fluid_near, fluid_atoms;
+  std::vector<double> fluid_pressure, fluid_rho_accel;
   bool fluid_near_valid;
   void find_fluid_near();
   int *solid_type;          // per type: 1 when the type has no equation of state

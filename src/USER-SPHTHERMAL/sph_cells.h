@@ -18,10 +18,12 @@ namespace LAMMPS_NS {
 // them until the next build, as LAMMPS's own lists do.
 class SPHCells {
  public:
-  // bins the atoms j < nall with (mask[j] & skip) == 0
-  void bin(const double *const *x, const int *mask, int nall, int skip, double side_in)
+  // bins the atoms j < nall with (mask[j] & skip) == 0 for searches within
+  // 'reach': in cells of half of it, 25 cells around a point in 2-D hold
+  // 2.0 times the atoms within reach (cells of the reach: 2.9 times)
+  void bin(const double *const *x, const int *mask, int nall, int skip, double reach)
   {
-    side = side_in;
+    side = 0.5 * reach;
     double lo[3] = {0.0, 0.0, 0.0}, hi[3] = {0.0, 0.0, 0.0};
     bool any = false;
     for (int j = 0; j < nall; j++) {

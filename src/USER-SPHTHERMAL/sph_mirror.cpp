@@ -163,7 +163,7 @@ void SPHMirror::find_candidates()
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
   const double reach = cutoff + neighbor->skin;
-  cells.bin(x, mask, nlocal + atom->nghost, groupbit, cutoff);
+  cells.bin(x, mask, nlocal + atom->nghost, groupbit, reach);
   first_candidate.assign(nlocal + 1, 0);
   candidates.clear();
   medium_atoms.clear();
