@@ -63,7 +63,8 @@ static const char *const sph_pairs[] = {"sph/harmonic/visc", "sph/cleary/heat"};
 
 FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), dtmin(0.0), dtmax(BIG), h_user(0.0), h(0.0), active(0), respa_flag(0),
-    warned(0), bound_warned(0), materials(nullptr), relax_rate(nullptr), body_force(nullptr)
+    warned(0), bound_warned(0), materials(nullptr), relax_rate(nullptr), relax_rate_wanted(nullptr),
+    body_force(nullptr)
 {
   if (!atom->rho_flag || !atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Fix sph/dt/reset requires atom style sph (rho, esph, cv)");
@@ -150,7 +151,18 @@ double FixSPHDtReset::parse_value(int iarg, int narg, char **arg, bool zero_ok)
 
 int FixSPHDtReset::setmask()
 {
-  return END_OF_STEP;
+  return PRE_FORCE | END_OF_STEP;
+}
+
+// the relaxation rates in the force computations before choose_dt() only
+void FixSPHDtReset::setup_pre_force(int /*vflag*/)
+{
+  if (relax_rate_wanted) *relax_rate_wanted = 1;
+}
+
+void FixSPHDtReset::pre_force(int /*vflag*/)
+{
+  if (relax_rate_wanted) *relax_rate_wanted = (update->ntimestep % nevery == 0);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -194,10 +206,11 @@ void FixSPHDtReset::init()
 
   // the thermal limit is the conduction pair's own relaxation rate
   relax_rate = nullptr;
+  relax_rate_wanted = nullptr;
   Pair *heat = force->pair_match("^sph/cleary/heat", 0);
   if (coeff[THERMAL] > 0.0 && heat) {
     int dim;
-    *(int *) heat->extract("relax_rate_wanted", dim) = 1;
+    relax_rate_wanted = (int *) heat->extract("relax_rate_wanted", dim);
     relax_rate = (double **) heat->extract("relax_rate", dim);
   }
   bound_warned = 0;

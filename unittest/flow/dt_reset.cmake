@@ -8,8 +8,11 @@ set(dt_reset_test ${PYTHON_NUMPY} ${CMAKE_CURRENT_SOURCE_DIR}/flow/test_dt_reset
 add_test(NAME flow.dt_reset.thermal.uniform COMMAND ${dt_reset_test} conduction --case uniform)
 add_test(NAME flow.dt_reset.thermal.uniform_h COMMAND ${dt_reset_test} conduction --case uniform --h 0.011)
 add_test(NAME flow.dt_reset.thermal.varying COMMAND ${dt_reset_test} conduction --case varying)
+add_test(NAME flow.dt_reset.thermal.every5
+  COMMAND ${dt_reset_test} conduction --case varying --every 5)
 set_tests_properties(flow.dt_reset.thermal.uniform flow.dt_reset.thermal.uniform_h
-                     flow.dt_reset.thermal.varying PROPERTIES LABELS unit)
+                     flow.dt_reset.thermal.varying flow.dt_reset.thermal.every5
+                     PROPERTIES LABELS unit)
 
 # channel flow: the four limits, the active one and dt against a Python
 # computation from the dumped v, f, mass, rho; each case makes another limit
