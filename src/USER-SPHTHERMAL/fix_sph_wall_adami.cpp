@@ -137,25 +137,12 @@ void FixSPHWallAdami::find_fluid_near()
 {
   double *const *const x = atom->x;
   const int *const mask = atom->mask;
-  const int nlocal = atom->nlocal;
-  cells.bin(x, mask, nlocal + atom->nghost, wall_groupbit, cutoff + neighbor->skin);
-  first_fluid.assign(nlocal + 1, 0);
-  fluid_near.clear();
-  fluid_atoms.clear();
-  // an atom's place in fluid_atoms, -1 while it is near no wall particle
-  std::vector<int> fluid_index(nlocal + atom->nghost, -1);
-  for (int i = 0; i < nlocal; i++) {
-    first_fluid[i] = fluid_near.size();
-    if (!(mask[i] & groupbit)) continue;
-    cells.within(x, x[i], cutoff + neighbor->skin, [&](int j) {
-      if (fluid_index[j] < 0) {
-        fluid_index[j] = fluid_atoms.size();
-        fluid_atoms.push_back(j);
-      }
-      fluid_near.push_back(fluid_index[j]);
-    });
-  }
-  first_fluid[nlocal] = fluid_near.size();
+  const int nall = atom->nlocal + atom->nghost;
+  const double reach = cutoff + neighbor->skin;
+  cells.bin(x, mask, nall, wall_groupbit, reach);
+  cells.near_points(
+      x, atom->nlocal, nall, reach, [&](int i) { return (mask[i] & groupbit) ? x[i] : nullptr; },
+      [](int) { return true; }, first_fluid, fluid_near, fluid_atoms);
   fluid_near_valid = true;
 }
 

@@ -52,6 +52,34 @@ class SPHCells {
     }
   }
 
+  // the binned atoms within 'reach' of each point i < npoints (point(i):
+  // its coordinates, nullptr for none) that accept(j), each atom once in
+  // 'atoms': near[n] for n in [first[i], first[i + 1]) indexes it
+  template <class Point, class Accept>
+  void near_points(const double *const *x, int npoints, int nall, double reach, Point point,
+                   Accept accept, std::vector<int> &first, std::vector<int> &near,
+                   std::vector<int> &atoms) const
+  {
+    first.assign(npoints + 1, 0);
+    near.clear();
+    atoms.clear();
+    std::vector<int> index(nall, -1);    // an atom's place in atoms, -1: not yet there
+    for (int i = 0; i < npoints; i++) {
+      first[i] = near.size();
+      const double *p = point(i);
+      if (!p) continue;
+      within(x, p, reach, [&](int j) {
+        if (!accept(j)) return;
+        if (index[j] < 0) {
+          index[j] = atoms.size();
+          atoms.push_back(j);
+        }
+        near.push_back(index[j]);
+      });
+    }
+    first[npoints] = near.size();
+  }
+
   // visit(j) for each binned atom within 'reach' of p
   template <class Visit> void within(const double *const *x, const double *p, double reach,
                                      Visit visit) const

@@ -149,12 +149,8 @@ int SPHMirror::ghost_point(const double *x, double *ghost, double *depth)
 }
 
 /* ----------------------------------------------------------------------
-   cells of side 'cutoff' over the atoms of the medium and of the other
-   thermal walls, owned and ghost
-------------------------------------------------------------------------- */
-
-/* ----------------------------------------------------------------------
-   the medium atoms within cutoff + skin of each ghost point of this step
+   the medium atoms within cutoff + skin of each ghost point of this step,
+   and the particles of held walls within it of each wall particle
 ------------------------------------------------------------------------- */
 
 void SPHMirror::find_candidates()
@@ -162,38 +158,20 @@ void SPHMirror::find_candidates()
   double *const *const x = atom->x;
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
   const double reach = cutoff + neighbor->skin;
-  cells.bin(x, mask, nlocal + atom->nghost, groupbit, reach);
-  first_candidate.assign(nlocal + 1, 0);
-  candidates.clear();
-  medium_atoms.clear();
+  cells.bin(x, mask, nall, groupbit, reach);
   candidates_at = ghost_at;
-  // an atom's place in medium_atoms, -1 while it is none's candidate
-  std::vector<int> medium_index(atom->nlocal + atom->nghost, -1);
-  for (int i = 0; i < nlocal; i++) {
-    first_candidate[i] = candidates.size();
-    if (!has_ghost[i]) continue;
-    cells.within(x, &ghost_at[3 * (size_t) i], reach, [&](int j) {
-      if (mask[j] & medium_exclude) return;
-      if (medium_index[j] < 0) {
-        medium_index[j] = medium_atoms.size();
-        medium_atoms.push_back(j);
-      }
-      candidates.push_back(medium_index[j]);
-    });
-  }
-  first_candidate[nlocal] = candidates.size();
+  cells.near_points(
+      x, nlocal, nall, reach,
+      [&](int i) { return has_ghost[i] ? &ghost_at[3 * (size_t) i] : nullptr; },
+      [&](int j) { return !(mask[j] & medium_exclude); }, first_candidate, candidates,
+      medium_atoms);
   // the particles of walls that hold a temperature near each wall particle
-  first_held.assign(nlocal + 1, 0);
-  held_candidates.clear();
-  for (int i = 0; i < nlocal; i++) {
-    first_held[i] = held_candidates.size();
-    if (!held_walls || !(mask[i] & groupbit)) continue;
-    cells.within(x, x[i], reach, [&](int j) {
-      if (mask[j] & held_walls) held_candidates.push_back(j);
-    });
-  }
-  first_held[nlocal] = held_candidates.size();
+  cells.near_points(
+      x, nlocal, nall, reach,
+      [&](int i) { return (held_walls && (mask[i] & groupbit)) ? x[i] : nullptr; },
+      [&](int j) { return (mask[j] & held_walls) != 0; }, first_held, held_near, held_atoms);
   candidates_valid = true;
 }
 
@@ -318,7 +296,7 @@ void SPHMirror::find_junctions()
   if (!held_walls) return;
   for (int i = 0; i < atom->nlocal; i++)
     for (int n = first_held[i]; n < first_held[i + 1]; n++) {
-      const int j = held_candidates[n];
+      const int j = held_atoms[held_near[n]];
       const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
       if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cutsq) {
         junction[i] = 1;

@@ -92,8 +92,9 @@ class SPHMirror : protected Pointers {
   // candidates[n] indexes medium_atoms, the atoms near some ghost point,
   // whose volume and temperature are found once per step
   std::vector<int> first_candidate, candidates, medium_atoms;
-  // per owned wall atom: the atoms of held walls within cutoff + skin of it
-  std::vector<int> first_held, held_candidates;
+  // per owned wall atom: the atoms of held walls within cutoff + skin of
+  // it (held_near indexes held_atoms)
+  std::vector<int> first_held, held_near, held_atoms;
   std::vector<double> candidates_at;    // 3 per owned atom
   bool candidates_valid;
   std::vector<double> medium_volume, medium_temperature;

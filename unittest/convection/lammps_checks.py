@@ -15,6 +15,19 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from sphtest import lammps_arguments, mpi_env, mpi_prefix  # noqa: E402,F401
 
 
+def run_input(lmp, input_file, variables, cwd, np_=1, mpirun="mpirun", log="none"):
+    """Run an input file with LAMMPS in cwd (on np_ ranks) with the given
+    -var values; stop the check on an error."""
+    command = mpi_prefix(np_, mpirun) + [os.path.abspath(lmp), "-log", log, "-in", input_file]
+    for name, value in variables.items():
+        command += ["-var", name, str(value)]
+    proc = subprocess.run(command, cwd=cwd, text=True, capture_output=True, env=mpi_env())
+    if proc.returncode != 0 or "ERROR" in proc.stdout:
+        sys.stdout.write(proc.stdout + proc.stderr)
+        sys.exit("FAIL: LAMMPS run failed")
+    return proc.stdout
+
+
 def run_lammps(lmp, script, cwd, np_=1, mpirun="mpirun"):
     """Run script (text) with LAMMPS in cwd (on np_ ranks); stop the check on
     an error."""
@@ -22,14 +35,9 @@ def run_lammps(lmp, script, cwd, np_=1, mpirun="mpirun"):
         f.write(script)
         path = f.name
     try:
-        proc = subprocess.run(mpi_prefix(np_, mpirun) + [lmp, "-log", "none", "-in", path],
-                              cwd=cwd, text=True, capture_output=True, env=mpi_env())
+        return run_input(lmp, path, {}, cwd, np_, mpirun)
     finally:
         os.unlink(path)
-    if proc.returncode != 0 or "ERROR" in proc.stdout:
-        sys.stdout.write(proc.stdout + proc.stderr)
-        sys.exit("FAIL: LAMMPS run failed")
-    return proc.stdout
 
 
 def read_dump(path):

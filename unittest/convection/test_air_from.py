@@ -15,13 +15,12 @@ Usage: test_air_from.py --lmp LMP --plugin PLUGIN
 """
 import argparse
 import os
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
 
-from lammps_checks import lammps_arguments, mpi_env, read_dump
+from lammps_checks import lammps_arguments, read_dump, run_input
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 IN_AIR = os.path.join(HERE, "..", "..", "examples", "convection-cavity", "in.air")
@@ -30,14 +29,7 @@ DX = 0.0386 / N
 
 
 def run(a, cwd, variables):
-    args = [os.path.abspath(a.lmp), "-log", "none", "-in", IN_AIR, "-var", "plugin",
-            os.path.abspath(a.plugin), "-var", "n", str(N)]
-    for name, value in variables.items():
-        args += ["-var", name, str(value)]
-    proc = subprocess.run(args, cwd=cwd, text=True, capture_output=True, env=mpi_env())
-    if proc.returncode != 0 or "ERROR" in proc.stdout:
-        sys.stdout.write(proc.stdout[-3000:] + proc.stderr[-3000:])
-        sys.exit("FAIL: LAMMPS run failed")
+    run_input(a.lmp, IN_AIR, {"plugin": os.path.abspath(a.plugin), "n": N, **variables}, cwd)
 
 
 def main():

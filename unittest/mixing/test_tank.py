@@ -15,7 +15,6 @@
 import argparse
 import os
 import shutil
-import subprocess
 import sys
 import tempfile
 
@@ -26,21 +25,15 @@ ROOT = os.path.join(HERE, "..", "..")
 sys.path.insert(0, os.path.join(HERE, "..", "convection"))
 sys.path.insert(0, os.path.join(HERE, "..", "tools"))
 sys.path.insert(0, os.path.join(ROOT, "examples"))
-from lammps_checks import lammps_arguments, mpi_env, mpi_prefix, read_frames  # noqa: E402
+from lammps_checks import lammps_arguments, read_frames, run_input  # noqa: E402
 from checks import below, finish, that  # noqa: E402
 import mixing_tank  # noqa: E402
 
 
 def run(args, example, variables, workdir):
-    command = mpi_prefix(args.np, args.mpirun) + [args.lmp, "-in", os.path.join(ROOT, "examples", example),
-                                                  "-var", "plugin", args.plugin, "-log", "log.lammps"]
-    for name, value in variables.items():
-        command += ["-var", name, str(value)]
-    proc = subprocess.run(command, cwd=workdir, text=True, capture_output=True, env=mpi_env())
-    if proc.returncode != 0 or "ERROR" in proc.stdout:
-        sys.stdout.write(proc.stdout[-3000:] + proc.stderr[-2000:])
-        sys.exit("FAIL: LAMMPS run failed")
-    return proc.stdout
+    return run_input(args.lmp, os.path.join(ROOT, "examples", example),
+                     {"plugin": args.plugin, **variables}, workdir, args.np, args.mpirun,
+                     log="log.lammps")
 
 
 def check_growth(m, names, least, what, fallback=1e-3):
