@@ -46,9 +46,10 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     PairSPHKernel(lmp, "sph/harmonic/visc",
                   "viscosities and equations of state come from fix sph/materials"),
     pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI), xi(SPHF_XI_CLEARY), delta(0.1),
-    diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr), eta2(0.0), materials(nullptr), viscosity_varies(0), wall_groupbit(0),
-    pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr), density(nullptr),
-    nmax(0), heat(nullptr), shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0)
+    heating(0.0), diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr),
+    eta2(0.0), materials(nullptr), viscosity_varies(0), wall_groupbit(0), pressure(nullptr),
+    viscosity(nullptr), mass_of(nullptr), volume(nullptr), density(nullptr), nmax(0), heat(nullptr),
+    shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0)
 {
   // the continuity equation and the viscous term need the velocities of
   // ghost atoms: turned on here, as comm_modify vel yes would
@@ -128,6 +129,20 @@ void PairSPHHarmonicVisc::eval_pairs(int ifrom, int ito, const Rates &rates)
       eval_kernel<SPHK_WENDLAND>(ifrom, ito, rates);
       break;
   }
+  if (heating > 0.0) switch (kernel_kind) {
+      case SPHK_LUCY:
+        eval_heating_kernel<SPHK_LUCY>(ifrom, ito, rates);
+        break;
+      case SPHK_CUBIC:
+        eval_heating_kernel<SPHK_CUBIC>(ifrom, ito, rates);
+        break;
+      case SPHK_QUINTIC:
+        eval_heating_kernel<SPHK_QUINTIC>(ifrom, ito, rates);
+        break;
+      case SPHK_WENDLAND:
+        eval_heating_kernel<SPHK_WENDLAND>(ifrom, ito, rates);
+        break;
+    }
 }
 
 /* ----------------------------------------------------------------------
@@ -436,12 +451,12 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
       const double dvy = vest[i][1] - vest[j][1];
       const double dvz = (DIM == 3) ? vest[i][2] - vest[j][2] : 0.0;
       const double vr_est = (VISCOSITY == SPHF_V_CLEARY) ? dvx * delx + dvy * dely + dvz * delz : 0.0;
-      double s_r, s_v, c_i, c_j, inv_heat;
+      double s_r, s_rv, s_v, c_i, c_j, inv_heat;
       // the heat term's denominator shares the flow's one division
       const double heat_den =
           (TERMS & HEAT_ON) ? sphc_cleary_denominator(rho_i, term.rho[j], rsq, term.eta2) : 1.0;
-      sphf_pair(PRESSURE, VISCOSITY, xi, &a, &b, rsq, dwdr_r, eta2, vr_est, heat_den, &s_r, &s_v,
-                &c_i, &c_j, &inv_heat);
+      sphf_pair(PRESSURE, VISCOSITY, xi, &a, &b, rsq, dwdr_r, eta2, vr_est, heat_den, &s_r, &s_rv,
+                &s_v, &c_i, &c_j, &inv_heat);
       const double fx = s_r * delx + s_v * dvx;
       const double fy = s_r * dely + s_v * dvy;
       const double fz = s_r * delz + s_v * dvz;
@@ -501,11 +516,107 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
   }
 }
 
+/* ----------------------------------------------------------------------
+   viscous heating (sph_flow.h, sphf_viscous_power): the kinetic energy the
+   viscous force of each pair removes, times 'heating', as heat. A fluid
+   pair shares it equally; with a wall particle the fluid particle takes it
+   all, and the energy is counted with the wall's own velocity v (its vest
+   is the no-slip mirror velocity, not a motion), so the work done on a
+   moving wall or body is not heat. The same force as the main loop's, to
+   round-off.
+------------------------------------------------------------------------- */
+
+template <int KERNEL>
+void PairSPHHarmonicVisc::eval_heating_kernel(int ifrom, int ito, const Rates &rates)
+{
+  const int dim3 = domain->dimension == 3;
+  switch (viscosity_form) {
+    case SPHF_V_CLEARY:
+      if (dim3)
+        eval_heating<KERNEL, SPHF_V_CLEARY, 3>(ifrom, ito, rates);
+      else
+        eval_heating<KERNEL, SPHF_V_CLEARY, 2>(ifrom, ito, rates);
+      break;
+    case SPHF_V_MORRIS:
+      if (dim3)
+        eval_heating<KERNEL, SPHF_V_MORRIS, 3>(ifrom, ito, rates);
+      else
+        eval_heating<KERNEL, SPHF_V_MORRIS, 2>(ifrom, ito, rates);
+      break;
+    default:
+      if (dim3)
+        eval_heating<KERNEL, SPHF_V_ADAMI, 3>(ifrom, ito, rates);
+      else
+        eval_heating<KERNEL, SPHF_V_ADAMI, 2>(ifrom, ito, rates);
+  }
+}
+
+template <int KERNEL, int VISCOSITY, int DIM>
+void PairSPHHarmonicVisc::eval_heating(int ifrom, int ito, const Rates &rates)
+{
+  const int newton_pair = force->newton_pair;
+  const double *const *const x = atom->x;
+  const double *const *const v = atom->v;
+  const double *const *const vest = atom->vest;
+  double *const desph = rates.desph;
+  const int *const mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const int wall_groupbit = this->wall_groupbit;
+  const double *const mass_of = this->mass_of;
+  const double *const density = this->density;
+  const double *const volume = this->volume;
+  const double *const viscosity = this->viscosity;
+  const double xi = this->xi, eta2 = this->eta2, heating = this->heating;
+  const double cutsq_kernel = cut_global * cut_global;
+  const double inv_h = kernel.inv_h;
+  const double dwdr_r_scale = kernel.dw_scale * kernel.inv_h;
+  const int *const ilist = list->ilist;
+  const int *const numneigh = list->numneigh;
+  int **const firstneigh = list->firstneigh;
+
+  for (int ii = ifrom; ii < ito; ii++) {
+    const int i = ilist[ii];
+    const int wall_i = mask[i] & wall_groupbit;
+    // the flow's particle state (pressure plays no part)
+    const sphf_particle a = {mass_of[i], density[i], volume[i], 0.0, viscosity[i]};
+    const double *const u_i = wall_i ? v[i] : vest[i];
+    const int *const jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+    double desph_i = 0.0;
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const int wall_j = mask[j] & wall_groupbit;
+      if (wall_i && wall_j) continue;
+      const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1],
+                             (DIM == 3) ? x[i][2] - x[j][2] : 0.0};
+      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+      if (rsq >= cutsq_kernel) continue;
+      const double dwdr_r = dwdr_r_scale * sphk_df_over_q(KERNEL, sqrt(rsq) * inv_h);
+      const sphf_particle b = {mass_of[j], density[j], volume[j], 0.0, viscosity[j]};
+      const double *const u_j = wall_j ? v[j] : vest[j];
+      const double dv[3] = {vest[i][0] - vest[j][0], vest[i][1] - vest[j][1],
+                            (DIM == 3) ? vest[i][2] - vest[j][2] : 0.0};
+      const double du[3] = {u_i[0] - u_j[0], u_i[1] - u_j[1], (DIM == 3) ? u_i[2] - u_j[2] : 0.0};
+      const double vr =
+          (VISCOSITY == SPHF_V_CLEARY) ? dv[0] * del[0] + dv[1] * del[1] + dv[2] * del[2] : 0.0;
+      double s_r, s_rv, s_v, c_i, c_j, inv_other;
+      sphf_pair(SPHF_P_SUM, VISCOSITY, xi, &a, &b, rsq, dwdr_r, eta2, vr, 1.0, &s_r, &s_rv, &s_v,
+                &c_i, &c_j, &inv_other);
+      const double heat = heating * sphf_viscous_power(s_rv, s_v, del, dv, du);
+      // a fluid pair halves it; with a wall the fluid particle takes it all
+      const double share_i = wall_i ? 0.0 : (wall_j ? 1.0 : 0.5);
+      desph_i += share_i * heat;
+      if (!wall_j && (newton_pair || j < nlocal))
+        desph[j] += (wall_i ? 1.0 : 0.5) * heat / mass_of[j];
+    }
+    if (!wall_i) desph[i] += desph_i / mass_of[i];
+  }
+}
 
 /* ----------------------------------------------------------------------
    pair_style sph/harmonic/visc kernel cutoff [pressure symmetric|sum|averaged]
      [viscosity cleary|adami|morris] [xi value] [eta f] [delta value]
-     [diffusion fourtakas|molteni] [fourtakas gx gy gz]
+     [diffusion fourtakas|molteni] [fourtakas gx gy gz] [heating fraction]
 ------------------------------------------------------------------------- */
 
 void PairSPHHarmonicVisc::settings(int narg, char **arg)
@@ -517,6 +628,7 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
   xi_given = 0;
   eta_factor = -1.0;    // the default depends on the viscosity form
   delta = 0.1;    // Ng et al. 2020: "not a tunable parameter", 0.1 for all flows
+  heating = 0.0;    // Reece et al. 2024 and Ng et al. 2020 neglect it
   // Fourtakas's form equals Molteni's without gravity and keeps a column at
   // rest with it (examples/flow-hydrostatic): the default
   diffusion_form = DIFFUSION_BODY_FORCE;
@@ -565,6 +677,13 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
       for (int k = 0; k < 3; k++) gravity[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
       iarg += 4;
       continue;
+    } else if (strcmp(arg[iarg], "heating") == 0) {
+      heating = utils::numeric(FLERR, value, false, lmp);
+      if (heating < 0.0 || heating > 1.0)
+        error->all(FLERR,
+                   "Illegal {} command: heating {} must be in [0, 1] (the fraction of the "
+                   "viscous work turned into heat)",
+                   cmd, value);
     } else if (strcmp(arg[iarg], "delta") == 0) {
       delta = utils::numeric(FLERR, value, false, lmp);
       if (delta < 0.0) error->all(FLERR, "Illegal {} command: delta {} must be >= 0", cmd, value);
@@ -679,21 +798,22 @@ void PairSPHHarmonicVisc::write_restart_settings(FILE *fp)
 {
   const int ints[4] = {kernel_kind, pressure_form, viscosity_form, diffusion_form};
   // xi_given only checks the command line
-  const double doubles[7] = {cut_global, xi, eta_factor, delta, gravity[0], gravity[1], gravity[2]};
+  const double doubles[8] = {cut_global, xi,         eta_factor, delta,
+                             gravity[0], gravity[1], gravity[2], heating};
   fwrite(ints, sizeof(int), 4, fp);
-  fwrite(doubles, sizeof(double), 7, fp);
+  fwrite(doubles, sizeof(double), 8, fp);
 }
 
 void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
 {
   int ints[4];
-  double doubles[7];
+  double doubles[8];
   if (comm->me == 0) {
     utils::sfread(FLERR, ints, sizeof(int), 4, fp, nullptr, error);
-    utils::sfread(FLERR, doubles, sizeof(double), 7, fp, nullptr, error);
+    utils::sfread(FLERR, doubles, sizeof(double), 8, fp, nullptr, error);
   }
   MPI_Bcast(ints, 4, MPI_INT, 0, world);
-  MPI_Bcast(doubles, 7, MPI_DOUBLE, 0, world);
+  MPI_Bcast(doubles, 8, MPI_DOUBLE, 0, world);
   // the body force is read again from fix gravity at init
   diffusion_form = ints[3];
   hydrostatic = (diffusion_form == DIFFUSION_GIVEN);
@@ -705,6 +825,7 @@ void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
   xi = doubles[1];
   eta_factor = doubles[2];
   delta = doubles[3];
+  heating = doubles[7];
 }
 
 /* ---------------------------------------------------------------------- */

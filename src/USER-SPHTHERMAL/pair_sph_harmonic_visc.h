@@ -52,6 +52,7 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   double xi;              // factor of the cleary viscosity
   int xi_given;           // xi was given (only the cleary form reads it)
   double delta;           // density diffusion (Ng et al. 2020, eq 5), 0: none
+  double heating;         // fraction of the viscous work turned into heat, 0: none
   // the density diffusion: Fourtakas's (Reece et al. 2024, eq 39) with the
   // run's body force (the default), Molteni's (Ng et al. 2020, eq 5: no
   // gravity), or Fourtakas's with a vector given in the command
@@ -107,6 +108,11 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   void eval_dimension(int ifrom, int ito, const Rates &rates);
   template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS, int DIM>
   void eval(int ifrom, int ito, const Rates &rates);
+  // viscous heating, a pass of its own (only when on: the main loop's
+  // instantiations stay as they are)
+  template <int KERNEL> void eval_heating_kernel(int ifrom, int ito, const Rates &rates);
+  template <int KERNEL, int VISCOSITY, int DIM>
+  void eval_heating(int ifrom, int ito, const Rates &rates);
 };
 
 }    // namespace LAMMPS_NS

@@ -106,6 +106,21 @@ static inline double sphf_continuity_pair(int form, double m_b, double rho_a, do
   return rho_a * m_b / rho_b * dwdr_r;
 }
 
+/* viscous heating (the viscous term of Reece et al. 2024, eq 4, which they
+   neglect; Xu's fraction of the mechanical work converted to heat scales
+   it): the pair's viscous force on a, F = s_rv r_ab + s_v v_ab (s_rv, s_v of
+   sphf_pair; v_ab the velocities it was evaluated with), removes kinetic
+   energy at the rate P = -F . u_ab, u_ab the difference of the velocities
+   the particles actually move with; the caller gives P to a and b as heat,
+   so kinetic plus thermal energy is conserved pairwise. P >= 0 when u = v. */
+static inline double sphf_viscous_power(double s_rv, double s_v, const double r_ab[3],
+                                        const double v_ab[3], const double u_ab[3])
+{
+  const double r_u = r_ab[0] * u_ab[0] + r_ab[1] * u_ab[1] + r_ab[2] * u_ab[2];
+  const double v_u = v_ab[0] * u_ab[0] + v_ab[1] * u_ab[1] + v_ab[2] * u_ab[2];
+  return -(s_rv * r_u + s_v * v_u);
+}
+
 /* density diffusion of Molteni & Colagrossi (Ng et al. 2020, eqs 5-6):
    drho_a/dt += 2 delta h c0 sum (rho_b - rho_a) V_b (r_ba . grad_a W) / r^2
              =  s (rho_b - rho_a) with s = -2 delta h c0 V_b dW/dr / r */
@@ -121,7 +136,8 @@ static inline double sphf_diffusion_pair(double delta_h_c0, double volume_b, dou
    of the pair's distance (it takes r^2 and dW/dr / r, which sph_kernels.h
    gives without dividing by r). Particle state: m, rho, V = m / rho, P, mu.
    Returns through the pointers: s_r (force on a along r_ab: pressure and
-   the cleary viscosity), s_v (force on a along v_ab: adami and morris
+   the cleary viscosity), s_rv (the cleary viscosity's share of s_r, 0 for
+   the other forms), s_v (force on a along v_ab: adami and morris
    viscosity), c_a and c_b (drho_a += c_a (v_ab . r_ab), drho_b += c_b
    (v_ab . r_ab)), and inv_other = 1 / other_den from the same division,
    for a caller that evaluates another pair term in the same loop (the
@@ -133,8 +149,8 @@ typedef struct {
 
 static inline void sphf_pair(int pform, int vform, double xi, const sphf_particle *a,
                              const sphf_particle *b, double rsq, double dwdr_r, double eta2,
-                             double vr, double other_den, double *s_r, double *s_v, double *c_a,
-                             double *c_b, double *inv_other)
+                             double vr, double other_den, double *s_r, double *s_rv, double *s_v,
+                             double *c_a, double *c_b, double *inv_other)
 {
   const double rho_ab = a->rho * b->rho;
   double num_p, den_p;
@@ -166,10 +182,12 @@ static inline void sphf_pair(int pform, int vform, double xi, const sphf_particl
   const double inv_v = den_p * other_den * inv_all;             /* 1 / (den_v (r^2 + eta^2)) */
   *inv_other = den_p * den_v * r2eta2 * inv_all;
   *s_r = -num_p * dwdr_r * inv_p;
+  *s_rv = 0.0;
   *s_v = 0.0;
-  if (vform == SPHF_V_CLEARY)
-    *s_r += num_v * vr * dwdr_r * inv_v;
-  else
+  if (vform == SPHF_V_CLEARY) {
+    *s_rv = num_v * vr * dwdr_r * inv_v;
+    *s_r += *s_rv;
+  } else
     *s_v = num_v * rsq * dwdr_r * inv_v;
   if (pform == SPHF_P_SYMMETRIC) {
     *c_a = b->m * dwdr_r;

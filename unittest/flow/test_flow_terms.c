@@ -1,5 +1,5 @@
 /* Unit tests of sph_eos.h and sph_flow.h with sph_kernels.h, in C99.
-   usage: test_flow_terms eos | symmetry | dissipation | laplacian | fused */
+   usage: test_flow_terms eos | symmetry | dissipation | laplacian | fused | heating */
 
 #include "sph_eos.h"
 #include "sph_flow.h"
@@ -227,18 +227,20 @@ static void check_fused(void)
     const double other_den = (n % 2) ? uniform(1e-6, 1e6) : 1.0;
     for (int pf = 0; pf < SPHF_P_NFORMS; pf++)
       for (int vf = 0; vf < SPHF_V_NFORMS; vf++) {
-        double s_r, s_v, c_a, c_b, inv_other;
+        double s_r, s_rv, s_v, c_a, c_b, inv_other;
         sphf_pair(pf, vf, SPHF_XI_CLEARY, &pa, &pb, r * r, dwdr / r, eta2, vr, other_den, &s_r,
-                  &s_v, &c_a, &c_b, &inv_other);
+                  &s_rv, &s_v, &c_a, &c_b, &inv_other);
         const double dwdr_r = dwdr / r, inv = 1.0 / (r * r + eta2), dwdr_rr = dwdr * r * inv;
         double want_r = sphf_pressure_pair(pf, pa.m, pb.m, pa.rho, pb.rho, pa.p, pb.p, dwdr_r);
         const double visc = sphf_viscosity_pair(vf, SPHF_XI_CLEARY, pa.m, pb.m, pa.rho, pb.rho,
                                                 pa.mu, pb.mu, vr, dwdr_r, inv, dwdr_rr);
-        double want_v = 0.0;
-        if (vf == SPHF_V_CLEARY)
+        double want_v = 0.0, want_rv = 0.0;
+        if (vf == SPHF_V_CLEARY) {
           want_r += visc;
-        else
+          want_rv = visc;
+        } else
           want_v = visc;
+        expect(near(s_rv, want_rv, 1e-12), "fused s_rv", s_rv, want_rv);
         const double want_ca = sphf_continuity_pair(pf, pb.m, pa.rho, pb.rho, dwdr_r);
         const double want_cb = sphf_continuity_pair(pf, pa.m, pb.rho, pa.rho, dwdr_r);
         expect(near(s_r, want_r, 1e-12), "fused s_r", s_r, want_r);
@@ -248,6 +250,55 @@ static void check_fused(void)
         expect(near(inv_other, 1.0 / other_den, 1e-12), "fused inv_other", inv_other,
                1.0 / other_den);
       }
+  }
+}
+
+/* viscous heating: the pair's heat P = -F_visc . u_ab (sphf_viscous_power)
+   is the kinetic energy its viscous force removes, so a pair of particles
+   moving with u keeps d/dt (kinetic + thermal) = F_a . u_a + F_b . u_b + P
+   = 0 to round-off for every form and velocity; P >= 0 when u = v (the
+   velocities the force saw), and P changes with u (a sign or argument error
+   would not) */
+static void check_heating(void)
+{
+  for (int n = 0; n < 3000; n++) {
+    sphf_particle a = {uniform(0.1, 10.0), uniform(1.0, 1000.0), 0.0, uniform(-100.0, 100.0),
+                       uniform(0.0, 2.0)};
+    sphf_particle b = {uniform(0.1, 10.0), uniform(1.0, 1000.0), 0.0, uniform(-100.0, 100.0),
+                       uniform(0.0, 2.0)};
+    a.vol = a.m / a.rho;
+    b.vol = b.m / b.rho;
+    const double r_ab[3] = {uniform(-0.5, 0.5), uniform(-0.5, 0.5), uniform(-0.5, 0.5)};
+    const double rsq = r_ab[0] * r_ab[0] + r_ab[1] * r_ab[1] + r_ab[2] * r_ab[2];
+    if (rsq < 1e-6) continue;
+    const double dwdr_r = -uniform(0.1, 10.0), eta2 = uniform(0.0, 0.01);
+    double v_a[3], v_b[3], u_a[3], u_b[3], v_ab[3], u_ab[3];
+    for (int d = 0; d < 3; d++) {
+      v_a[d] = uniform(-1.0, 1.0);
+      v_b[d] = uniform(-1.0, 1.0);
+      /* the velocities the particles move with: those the force saw, or others */
+      u_a[d] = (n % 2) ? v_a[d] : uniform(-1.0, 1.0);
+      u_b[d] = (n % 2) ? v_b[d] : uniform(-1.0, 1.0);
+      v_ab[d] = v_a[d] - v_b[d];
+      u_ab[d] = u_a[d] - u_b[d];
+    }
+    const double vr = v_ab[0] * r_ab[0] + v_ab[1] * r_ab[1] + v_ab[2] * r_ab[2];
+    for (int vf = 0; vf < SPHF_V_NFORMS; vf++) {
+      double s_r, s_rv, s_v, c_a, c_b, inv_other;
+      sphf_pair(SPHF_P_AVERAGED, vf, SPHF_XI_CLEARY, &a, &b, rsq, dwdr_r, eta2, vr, 1.0, &s_r,
+                &s_rv, &s_v, &c_a, &c_b, &inv_other);
+      const double power = sphf_viscous_power(s_rv, s_v, r_ab, v_ab, u_ab);
+      /* the viscous force alone: on a, F; on b, -F */
+      double work = 0.0, scale = fabs(power);
+      for (int d = 0; d < 3; d++) {
+        const double force = s_rv * r_ab[d] + s_v * v_ab[d];
+        work += force * u_a[d] - force * u_b[d];
+        scale += fabs(force * u_a[d]) + fabs(force * u_b[d]);
+      }
+      const double balance = work + power;
+      expect(fabs(balance) <= 1e-14 * scale, "kinetic + thermal energy of the pair", balance, 0.0);
+      if (n % 2) expect(power >= -1e-14 * scale, "heating >= 0 with u = v", power, 0.0);
+    }
   }
 }
 
@@ -264,8 +315,10 @@ int main(int argc, char **argv)
     check_laplacian();
   else if (strcmp(check, "fused") == 0)
     check_fused();
+  else if (strcmp(check, "heating") == 0)
+    check_heating();
   else {
-    printf("usage: test_flow_terms eos | symmetry | dissipation | laplacian | fused\n");
+    printf("usage: test_flow_terms eos | symmetry | dissipation | laplacian | fused | heating\n");
     return 2;
   }
   if (failures == 0) printf("PASS %s\n", check);
