@@ -115,6 +115,14 @@ void FixSPHBoussinesq::init()
   int buoyant = 0;
   for (int t = 1; t <= atom->ntypes; t++) {
     if (!present[t]) continue;
+    // its equation of state already makes it buoyant under gravity
+    const sphe_eos *eos = materials->eos(t);
+    if (eos && eos->thermal)
+      error->all(FLERR,
+                 "Fix sph/boussinesq: atom type {} of group {} has thermal expansion in its "
+                 "equation of state (eos ... thermal), which makes it buoyant under fix gravity "
+                 "already: use one or the other",
+                 t, group->names[igroup]);
     if (beta[t] != 0.0)
       buoyant = 1;
     else

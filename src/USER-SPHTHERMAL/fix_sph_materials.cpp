@@ -111,6 +111,15 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, "Illegal {} command: type {} has an equation of state but no rho0", cmd,
                  i);
     eos_type[i].rho0 = rho0_type[i];
+    // thermal expansion of the reference density: the type's expansion coefficient
+    if (eos_type[i].thermal) {
+      if (expansion_type[i] == 0.0)
+        error->all(FLERR,
+                   "Illegal {} command: type {}: eos ... thermal {} needs the type's expansion "
+                   "coefficient (expansion beta)",
+                   cmd, i, eos_type[i].t0);
+      eos_type[i].beta = expansion_type[i];
+    }
   }
 }
 
@@ -353,10 +362,20 @@ int FixSPHMaterials::parse_eos(int ilo, int ihi, const std::vector<std::string> 
   eos.c0 = positive(words[iword + 2], "speed of sound", where, false);
   if (kind == SPHE_TAIT) eos.gamma = positive(words[iword + 3], "gamma", where, false);
   int taken = 2 + ncoeffs;
-  if (left >= (size_t) taken && words[iword + taken] == "background") {
+  // options, in any order: background P, thermal T0
+  while (left >= (size_t) taken &&
+         (words[iword + taken] == "background" || words[iword + taken] == "thermal")) {
+    const std::string &option = words[iword + taken];
     if (left < (size_t) taken + 1)
-      error->all(FLERR, "Illegal {}: missing value after 'background'", where);
-    eos.p_background = utils::numeric(FLERR, words[iword + taken + 1].c_str(), false, lmp);
+      error->all(FLERR, "Illegal {}: missing value after '{}'", where, option);
+    const double value = utils::numeric(FLERR, words[iword + taken + 1].c_str(), false, lmp);
+    if (option == "background") {
+      eos.p_background = value;
+    } else {
+      // beta is the type's expansion, checked once every property is known
+      eos.thermal = 1;
+      eos.t0 = value;
+    }
     taken += 2;
   }
   for (int i = ilo; i <= ihi; i++) {

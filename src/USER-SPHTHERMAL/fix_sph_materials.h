@@ -56,6 +56,14 @@ class FixSPHMaterials : public Fix {
 
   // equation of state of a type (rho0 filled in), nullptr when none was given
   const sphe_eos *eos(int type) const { return eos_set[type] ? &eos_type[type] : nullptr; }
+  // 1 when some type's equation of state has thermal expansion (its
+  // pressure depends on T)
+  int thermal_expansion() const
+  {
+    for (int t = 1; t <= ntypes; t++)
+      if (eos_set[t] && eos_type[t].thermal) return 1;
+    return 0;
+  }
   // specific heat, reference density (-1 when not given), expansion
   // coefficient (0 when not given: no buoyancy)
   double cv(int type) const { return cv_type[type]; }

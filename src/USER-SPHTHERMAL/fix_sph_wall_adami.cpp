@@ -42,9 +42,9 @@ static const char cmd[] = "fix sph/wall/adami";
 /* ---------------------------------------------------------------------- */
 
 FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), body_given(0), body_force(nullptr), buoyancy(nullptr), wall_groupbit(0), kernel_kind(0),
-    cutoff(0.0), materials(nullptr), fluid_near_valid(false), solid_type(nullptr), fluid_weight(nullptr), any_solid(0),
-    solid_state(nullptr), nmax(0)
+    Fix(lmp, narg, arg), body_given(0), body_force(nullptr), buoyancy(nullptr), wall_groupbit(0),
+    kernel_kind(0), cutoff(0.0), materials(nullptr), thermal_expansion(0), fluid_near_valid(false),
+    solid_type(nullptr), fluid_weight(nullptr), any_solid(0), solid_state(nullptr), nmax(0)
 {
   if (!atom->rho_flag || !atom->vest_flag)
     error->all(FLERR, "Fix sph/wall/adami requires atom style sph (rho, vest)");
@@ -106,6 +106,9 @@ void FixSPHWallAdami::init()
   // rho and vest, and with solids their pressure, density and viscosity
   comm_forward = any_solid ? 8 : 4;
   if (any_solid) SPHCheck::atom_state(lmp, "Fix sph/wall/adami", groupbit, SPHCheck::RHO);
+  // with thermal expansion the wall's density follows its temperature (the
+  // pair, which this fix requires, checks every atom's cv and esph then)
+  thermal_expansion = materials->thermal_expansion();
   // without 'body', the fluid's body force is the run's (a resting wall)
   body_force = body_given ? nullptr : SPHBodyForce::find(lmp, "Fix sph/wall/adami");
   // each fluid particle's own buoyancy, which varies with its temperature
@@ -187,7 +190,9 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
   fluid_rho_accel.resize(3 * (size_t) nfluid);
   for (int m = 0; m < nfluid; m++) {
     const int j = fluid_atoms[m];
-    fluid_pressure[m] = sphe_pressure(materials->eos(type[j]), rho[j]);
+    // with thermal expansion the pair refuses a T without reference density
+    fluid_pressure[m] = sphe_pressure_at(materials->eos(type[j]), rho[j],
+                                         thermal_expansion ? esph[j] / cv[j] : 0.0);
     double accel[3] = {body[0], body[1], body[2]};
     if (buoyancy && (mask[j] & buoyancy->groupbit)) {
       double a[3];
@@ -226,11 +231,14 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
       // the density and viscosity of the fluid at the wall pressure: the
       // kernel-weighted mean over the fluid neighbours' materials
       const double p_wall = (weight > 0.0) ? (weighted_p + hydrostatic) / weight : 0.0;
+      // (at the wall's temperature, with thermal expansion)
+      const double t_wall = thermal_expansion ? esph[i] / cv[i] : 0.0;
       double weighted_rho = 0.0, weighted_rho0 = 0.0;
       for (int t = 1; t <= ntypes; t++)
         if (fluid_weight[t] > 0.0) {
-          weighted_rho += fluid_weight[t] * sphe_density(materials->eos(t), p_wall);
-          weighted_rho0 += fluid_weight[t] * materials->eos(t)->rho0;
+          const sphe_eos *eos = materials->eos(t);
+          weighted_rho += fluid_weight[t] * sphe_density_at(eos, p_wall, t_wall);
+          weighted_rho0 += fluid_weight[t] * sphe_reference_density(eos, t_wall);
         }
       // no fluid in reach: a wall at the background pressure of no fluid, whose
       // density and viscosity no fluid particle sees
@@ -242,8 +250,9 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
       if (weight > 0.0 && solid_state[i][1] <= 0.0) below_eos++;
     } else {
       const sphe_eos *eos = materials->eos(type[i]);
-      rho[i] = (weight > 0.0) ? sphe_density(eos, (weighted_p + hydrostatic) / weight)
-                              : sphe_density(eos, eos->p_background);
+      const double t_wall = eos->thermal ? esph[i] / cv[i] : 0.0;
+      rho[i] = (weight > 0.0) ? sphe_density_at(eos, (weighted_p + hydrostatic) / weight, t_wall)
+                              : sphe_density_at(eos, eos->p_background, t_wall);
       if (weight > 0.0 && rho[i] <= 0.0) below_eos++;
     }
     for (int k = 0; k < 3; k++)

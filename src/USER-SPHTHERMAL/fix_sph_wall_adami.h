@@ -56,6 +56,7 @@ class FixSPHWallAdami : public Fix {
   int kernel_kind;
   double cutoff;
   class FixSPHMaterials *materials;
+  int thermal_expansion;    // some equation of state depends on T
   // the fluid within cutoff + skin of each owned wall particle, found at
   // each neighbour-list build and kept until the next: fluid_near[n] for n
   // in [first_fluid[i], first_fluid[i + 1]) indexes fluid_atoms, whose

@@ -48,7 +48,8 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI), xi(SPHF_XI_CLEARY), delta(0.1),
     heating(0.0), diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr),
     eta2(0.0), materials(nullptr), viscosity_varies(0), wall_groupbit(0), pressure(nullptr),
-    viscosity(nullptr), mass_of(nullptr), volume(nullptr), density(nullptr), nmax(0), heat(nullptr),
+    viscosity(nullptr), mass_of(nullptr), volume(nullptr), density(nullptr),
+    diffused_density(nullptr), diffusion_rho(nullptr), thermal_expansion(0), nmax(0), heat(nullptr),
     shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0)
 {
   // the continuity equation and the viscous term need the velocities of
@@ -66,6 +67,7 @@ PairSPHHarmonicVisc::~PairSPHHarmonicVisc()
   memory->destroy(mass_of);
   memory->destroy(volume);
   memory->destroy(density);
+  memory->destroy(diffused_density);
   memory->destroy(shift_sum);
 }
 
@@ -305,7 +307,9 @@ void PairSPHHarmonicVisc::update_atom_state()
     memory->destroy(mass_of);
     memory->destroy(volume);
     memory->destroy(density);
+    memory->destroy(diffused_density);
     memory->create(volume, nmax, "pair:volume");
+    if (thermal_expansion) memory->create(diffused_density, nmax, "pair:diffused_density");
     memory->create(pressure, nmax, "pair:pressure");
     memory->create(viscosity, nmax, "pair:viscosity");
     memory->create(mass_of, nmax, "pair:mass_of");
@@ -317,6 +321,7 @@ void PairSPHHarmonicVisc::update_atom_state()
   const int *const type = atom->type;
   const int *const mask = atom->mask;
   const int nall = atom->nlocal + atom->nghost;
+  diffusion_rho = thermal_expansion ? diffused_density : rho;
   if (atom->rmass_flag && atom->rmass)
     memcpy(mass_of, atom->rmass, nall * sizeof(double));
   else
@@ -337,9 +342,25 @@ void PairSPHHarmonicVisc::update_atom_state()
       density[i] = solid->fluid_density(i);
       viscosity[i] = solid->viscosity(i);
       mass_of[i] = density[i] * volume[i];
+      if (thermal_expansion) diffused_density[i] = rho[i];
       continue;
     }
-    pressure[i] = sphe_pressure(materials->eos(type[i]), rho[i]);
+    const sphe_eos *eos = materials->eos(type[i]);
+    if (eos->thermal) {
+      const double t = esph[i] / cv[i];
+      const double rho_ref = sphe_reference_density(eos, t);
+      if (!(rho_ref > 0.0) || !std::isfinite(rho_ref))
+        error->one(FLERR,
+                   "Pair style sph/harmonic/visc: atom {} (type {}) at T = {} has no reference "
+                   "density: 1 + beta (T - T0) = {} of its equation of state's thermal "
+                   "expansion must be > 0",
+                   atom->tag[i], type[i], t, 1.0 + eos->beta * (t - eos->t0));
+      pressure[i] = sphe_pressure_ref(eos, rho[i], rho_ref);
+      diffused_density[i] = rho[i] - (rho_ref - eos->rho0);
+    } else {
+      pressure[i] = sphe_pressure(eos, rho[i]);
+      if (thermal_expansion) diffused_density[i] = rho[i];
+    }
     viscosity[i] = materials->viscosity_at(type[i], viscosity_varies ? esph[i] / cv[i] : 0.0,
                                            "Pair style sph/harmonic/visc");
     density[i] = rho[i];
@@ -378,7 +399,9 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
   const double *const viscosity = this->viscosity;
   const double xi = this->xi;
   const double eta2 = this->eta2;
-  const double *const atom_rho = atom->rho;
+  // the density the diffusion evens out (with thermal expansion, less the
+  // thermal part of each particle's reference density)
+  const double *const atom_rho = diffusion_rho;
   const sphe_eos *const *const eos_of = this->eos_of.data();
   const double delta_h_half = 0.5 * delta * kernel.h;
   const int hydrostatic = this->hydrostatic;
@@ -747,8 +770,15 @@ void PairSPHHarmonicVisc::init_style()
                info_all[0], info_all[1] == 1 ? "equation of state (eos)" : "viscosity", bad_all);
   }
   viscosity_varies = !materials->viscosity_constant();
-  SPHCheck::atom_state(lmp, "Pair style sph/harmonic/visc", 0,
-                       SPHCheck::RHO | (viscosity_varies ? SPHCheck::CV | SPHCheck::ESPH : 0));
+  // the per-atom arrays are sized again with the diffused density
+  if (materials->thermal_expansion() != thermal_expansion) {
+    thermal_expansion = materials->thermal_expansion();
+    nmax = 0;
+  }
+  SPHCheck::atom_state(
+      lmp, "Pair style sph/harmonic/visc", 0,
+      SPHCheck::RHO |
+          ((viscosity_varies || thermal_expansion) ? SPHCheck::CV | SPHCheck::ESPH : 0));
 
   // the hydrostatic diffusion reads the body force of the run, or assumes one
   body_force = SPHBodyForce::find(lmp, "Pair style sph/harmonic/visc");

@@ -72,6 +72,11 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // (a solid wall particle: the fluid's pressure, density and viscosity at
   // the wall, its own volume)
   double *pressure, *viscosity, *mass_of, *volume, *density;
+  // with thermal expansion, rho - (rho0(T) - rho0): the density diffusion
+  // leaves the thermal density differences alone (else atom->rho)
+  double *diffused_density;
+  const double *diffusion_rho;
+  int thermal_expansion;    // some equation of state depends on T
   int nmax;
   // pair sph/cleary/heat, when its term is evaluated in this style's loop
   class PairSPHClearyHeat *heat;

@@ -7,6 +7,11 @@
              (Reece et al. 2024, eq 11; Cleary 1998, eq 8 with P0 = B)
      linear  P = c0^2 (rho - rho0) + P_b            (Ng et al. 2020, eq 4)
    c0 is the speed of sound at rho0 and P_b a background pressure (default 0).
+   With thermal expansion (Xu's thermal expansion, applied to a weakly
+   compressible fluid) the reference density depends on temperature,
+     rho0(T) = rho0 / (1 + beta (T - T0)),
+   and takes the place of rho0 in both forms (B keeps rho0: the stiffness
+   does not change with T), so that gravity alone makes hot fluid rise.
 ------------------------------------------------------------------------- */
 
 #ifndef SPH_EOS_H
@@ -23,6 +28,9 @@ typedef struct {
   double c0;           /* speed of sound at rho0 */
   double gamma;        /* tait: polytropic index */
   double p_background; /* added to the pressure */
+  int thermal;         /* 1: the reference density depends on T */
+  double beta;         /* thermal: volumetric expansion coefficient */
+  double t0;           /* thermal: temperature at which it is rho0 */
 } sphe_eos;
 
 static inline const char *sphe_name(int kind)
@@ -58,25 +66,58 @@ static inline double sphe_power(double x, double gamma)
   return pow(x, gamma);
 }
 
-static inline double sphe_pressure(const sphe_eos *eos, double rho)
+/* the reference density at temperature T: rho0 without thermal expansion;
+   not positive (or not finite) when 1 + beta (T - T0) <= 0, which callers
+   must refuse */
+static inline double sphe_reference_density(const sphe_eos *eos, double t)
+{
+  if (!eos->thermal) return eos->rho0;
+  return eos->rho0 / (1.0 + eos->beta * (t - eos->t0));
+}
+
+/* pressure at density rho with the reference density rho_ref */
+static inline double sphe_pressure_ref(const sphe_eos *eos, double rho, double rho_ref)
 {
   const double c2 = eos->c0 * eos->c0;
   if (eos->kind == SPHE_TAIT)
-    return eos->rho0 * c2 / eos->gamma * (sphe_power(rho / eos->rho0, eos->gamma) - 1.0) +
+    return eos->rho0 * c2 / eos->gamma * (sphe_power(rho / rho_ref, eos->gamma) - 1.0) +
         eos->p_background;
-  return c2 * (rho - eos->rho0) + eos->p_background;
+  return c2 * (rho - rho_ref) + eos->p_background;
 }
 
-/* the inverse: density at pressure P (walls of Adami et al. 2012); the tait
-   form is clamped at rho = 0 for pressures below -B + P_b */
-static inline double sphe_density(const sphe_eos *eos, double p)
+static inline double sphe_pressure(const sphe_eos *eos, double rho)
+{
+  return sphe_pressure_ref(eos, rho, eos->rho0);
+}
+
+/* pressure at density rho and temperature T */
+static inline double sphe_pressure_at(const sphe_eos *eos, double rho, double t)
+{
+  return sphe_pressure_ref(eos, rho, sphe_reference_density(eos, t));
+}
+
+/* the inverse: density at pressure P with the reference density rho_ref
+   (walls of Adami et al. 2012); the tait form is clamped at rho = 0 for
+   pressures below -B + P_b */
+static inline double sphe_density_ref(const sphe_eos *eos, double p, double rho_ref)
 {
   const double c2 = eos->c0 * eos->c0;
   if (eos->kind == SPHE_TAIT) {
     const double ratio = 1.0 + (p - eos->p_background) * eos->gamma / (eos->rho0 * c2);
-    return (ratio > 0.0) ? eos->rho0 * pow(ratio, 1.0 / eos->gamma) : 0.0;
+    return (ratio > 0.0) ? rho_ref * pow(ratio, 1.0 / eos->gamma) : 0.0;
   }
-  return eos->rho0 + (p - eos->p_background) / c2;
+  return rho_ref + (p - eos->p_background) / c2;
+}
+
+static inline double sphe_density(const sphe_eos *eos, double p)
+{
+  return sphe_density_ref(eos, p, eos->rho0);
+}
+
+/* density at pressure P and temperature T */
+static inline double sphe_density_at(const sphe_eos *eos, double p, double t)
+{
+  return sphe_density_ref(eos, p, sphe_reference_density(eos, t));
 }
 
 /* speed of sound sqrt(dP/drho) at rho */

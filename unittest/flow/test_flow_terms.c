@@ -1,5 +1,5 @@
 /* Unit tests of sph_eos.h and sph_flow.h with sph_kernels.h, in C99.
-   usage: test_flow_terms eos | symmetry | dissipation | laplacian | fused | heating */
+   usage: test_flow_terms eos | symmetry | dissipation | laplacian | fused | heating | expansion */
 
 #include "sph_eos.h"
 #include "sph_flow.h"
@@ -36,8 +36,8 @@ static double uniform(double lo, double hi)
 /* P(rho0) = P_b; density(pressure(rho)) = rho; c^2 = dP/drho by finite differences */
 static void check_eos(void)
 {
-  sphe_eos tait = {SPHE_TAIT, 1000.0, 20.0, 7.0, 50.0};
-  sphe_eos linear = {SPHE_LINEAR, 1.2, 3.0, 0.0, 0.0};
+  sphe_eos tait = {SPHE_TAIT, 1000.0, 20.0, 7.0, 50.0, 0, 0.0, 0.0};
+  sphe_eos linear = {SPHE_LINEAR, 1.2, 3.0, 0.0, 0.0, 0, 0.0, 0.0};
   const sphe_eos *eoses[2] = {&tait, &linear};
   for (int e = 0; e < 2; e++) {
     const sphe_eos *eos = eoses[e];
@@ -253,6 +253,48 @@ static void check_fused(void)
   }
 }
 
+/* thermal expansion: rho0(T) = rho0 / (1 + beta (T - T0)) replaces rho0:
+   at T0 the plain EOS; at any T, P(rho0(T)) = P_b and the inverse holds;
+   a hotter particle at the same density has the higher pressure, by
+   c0^2 rho0 beta dT to first order (linear: exactly c0^2 (rho0 - rho0(T))) */
+static void check_expansion(void)
+{
+  sphe_eos tait = {SPHE_TAIT, 1000.0, 20.0, 7.0, 50.0, 1, 2e-4, 300.0};
+  sphe_eos linear = {SPHE_LINEAR, 1.2, 3.0, 0.0, 0.0, 1, 3.4e-3, 290.0};
+  const sphe_eos *eoses[2] = {&tait, &linear};
+  for (int e = 0; e < 2; e++) {
+    const sphe_eos *eos = eoses[e];
+    sphe_eos plain = *eos;
+    plain.thermal = 0;
+    for (int n = 0; n < 100; n++) {
+      const double rho = eos->rho0 * uniform(0.95, 1.05);
+      const double t = eos->t0 + uniform(-50.0, 50.0);
+      expect(sphe_pressure_at(eos, rho, eos->t0) == sphe_pressure(&plain, rho),
+             "at T0 the plain EOS", sphe_pressure_at(eos, rho, eos->t0), sphe_pressure(&plain, rho));
+      expect(sphe_pressure_at(&plain, rho, t) == sphe_pressure(&plain, rho),
+             "without expansion T plays no part", sphe_pressure_at(&plain, rho, t),
+             sphe_pressure(&plain, rho));
+      const double ref = sphe_reference_density(eos, t);
+      const double want_ref = eos->rho0 / (1.0 + eos->beta * (t - eos->t0));
+      expect(near(ref, want_ref, 1e-15), "rho0(T)", ref, want_ref);
+      expect(near(sphe_pressure_at(eos, ref, t), eos->p_background, 1e-12),
+             "P(rho0(T), T) = background", sphe_pressure_at(eos, ref, t), eos->p_background);
+      const double p = sphe_pressure_at(eos, rho, t);
+      expect(near(sphe_density_at(eos, p, t), rho, 1e-13), "density_at(pressure_at(rho))",
+             sphe_density_at(eos, p, t), rho);
+    }
+    /* 1 K hotter at rho0: the pressure rises by about c0^2 rho0 beta */
+    const double rise = sphe_pressure_at(eos, eos->rho0, eos->t0 + 1.0) - eos->p_background;
+    const double want = eos->c0 * eos->c0 * eos->rho0 * eos->beta;
+    expect(near(rise, want, 1e-2), "dP/dT at rho0", rise, want);
+    expect(rise > 0.0, "hotter: higher pressure at the same density", rise, want);
+  }
+  const double dt = 10.0;
+  expect(near(sphe_pressure_at(&linear, 1.2, 300.0), 9.0 * (1.2 - 1.2 / (1.0 + 3.4e-3 * dt)), 1e-13),
+         "linear value", sphe_pressure_at(&linear, 1.2, 300.0),
+         9.0 * (1.2 - 1.2 / (1.0 + 3.4e-3 * dt)));
+}
+
 /* viscous heating: the pair's heat P = -F_visc . u_ab (sphf_viscous_power)
    is the kinetic energy its viscous force removes, so a pair of particles
    moving with u keeps d/dt (kinetic + thermal) = F_a . u_a + F_b . u_b + P
@@ -317,8 +359,10 @@ int main(int argc, char **argv)
     check_fused();
   else if (strcmp(check, "heating") == 0)
     check_heating();
+  else if (strcmp(check, "expansion") == 0)
+    check_expansion();
   else {
-    printf("usage: test_flow_terms eos | symmetry | dissipation | laplacian | fused | heating\n");
+    printf("usage: test_flow_terms eos | symmetry | dissipation | laplacian | fused | heating | expansion\n");
     return 2;
   }
   if (failures == 0) printf("PASS %s\n", check);
