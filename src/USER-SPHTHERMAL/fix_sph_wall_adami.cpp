@@ -21,15 +21,16 @@
 #include "error.h"
 #include "fix_sph_materials.h"
 #include "force.h"
+#include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
 #include "pair.h"
-#include "memory.h"
 #include "sph_body_force.h"
 #include "sph_buoyancy.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
 #include "sph_kernels.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
@@ -42,9 +43,11 @@ static const char cmd[] = "fix sph/wall/adami";
 /* ---------------------------------------------------------------------- */
 
 FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), body_given(0), body_force(nullptr), buoyancy(nullptr), wall_groupbit(0),
-    kernel_kind(0), cutoff(0.0), materials(nullptr), thermal_expansion(0), fluid_near_valid(false),
-    solid_type(nullptr), fluid_weight(nullptr), any_solid(0), solid_state(nullptr), nmax(0)
+    Fix(lmp, narg, arg), body_given(0), moving_keyword(-1), moving(0), v_sampled(nullptr),
+    accel(nullptr), remaining_sampled(0.0), sampled(0), body_force(nullptr), buoyancy(nullptr),
+    wall_groupbit(0), kernel_kind(0), cutoff(0.0), materials(nullptr), thermal_expansion(0),
+    fluid_near_valid(false), solid_type(nullptr), fluid_weight(nullptr), any_solid(0),
+    solid_state(nullptr), nmax(0)
 {
   if (!atom->rho_flag || !atom->vest_flag)
     error->all(FLERR, "Fix sph/wall/adami requires atom style sph (rho, vest)");
@@ -57,12 +60,29 @@ FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
       for (int k = 0; k < 3; k++) body[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
       body_given = 1;
       iarg += 4;
+    } else if (strcmp(arg[iarg], "moving") == 0) {
+      if (iarg + 1 >= narg)
+        error->all(FLERR, "Illegal {} command: 'moving' needs yes, no or auto", cmd);
+      if (strcmp(arg[iarg + 1], "yes") == 0)
+        moving_keyword = 1;
+      else if (strcmp(arg[iarg + 1], "no") == 0)
+        moving_keyword = 0;
+      else if (strcmp(arg[iarg + 1], "auto") == 0)
+        moving_keyword = -1;
+      else
+        error->all(FLERR, "Illegal {} command: moving {}: yes, no or auto", cmd, arg[iarg + 1]);
+      iarg += 2;
     } else
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
   }
   memory->create(solid_type, atom->ntypes + 1, "sph/wall/adami:solid_type");
   memory->create(fluid_weight, atom->ntypes + 1, "sph/wall/adami:fluid_weight");
   for (int t = 0; t <= atom->ntypes; t++) solid_type[t] = 0;
+  restart_global = 1;
+  restart_peratom = 1;
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
 }
 
 FixSPHWallAdami::~FixSPHWallAdami()
@@ -70,6 +90,10 @@ FixSPHWallAdami::~FixSPHWallAdami()
   memory->destroy(solid_type);
   memory->destroy(fluid_weight);
   memory->destroy(solid_state);
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(v_sampled);
+  memory->destroy(accel);
 }
 
 int FixSPHWallAdami::setmask()
@@ -118,6 +142,21 @@ void FixSPHWallAdami::init()
   for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/adami"))
     wall_groupbit |= wall->groupbit;
   fluid_near_valid = false;
+
+  // moving walls: a fix that moves atoms of this group (auto), or the keyword
+  moving = moving_keyword;
+  if (moving < 0) {
+    int local = 0, any = 0;
+    for (int ifix = 0; ifix < modify->nfix; ifix++) {
+      Fix *other = modify->fix[ifix];
+      if (!utils::strmatch(other->style, "^rigid") && !utils::strmatch(other->style, "^move"))
+        continue;
+      for (int i = 0; i < atom->nlocal; i++)
+        if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit)) local = 1;
+    }
+    MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_MAX, world);
+    moving = any;
+  }
 }
 
 // atoms were exchanged or sorted: the fluid found near each wall particle is stale
@@ -149,9 +188,44 @@ void FixSPHWallAdami::find_fluid_near()
   fluid_near_valid = true;
 }
 
-void FixSPHWallAdami::setup_pre_force(int vflag)
+void FixSPHWallAdami::setup_pre_force(int /*vflag*/)
 {
-  pre_force(vflag);
+  // at setup v is the full-step velocity: the sample of this step
+  if (moving) sample_acceleration(0.0);
+  pre_force_walls();
+}
+
+void FixSPHWallAdami::pre_force(int /*vflag*/)
+{
+  // in a step v is the half-step velocity of fix rigid, move and sph
+  if (moving) sample_acceleration(0.5 * update->dt);
+  pre_force_walls();
+}
+
+/* ----------------------------------------------------------------------
+   a_w of each owned wall particle from its velocity now and at the last
+   sample, a_w = (v - v_sampled) / (time between them); 0 before the first
+   sample. half_dt: time from the start of this step to now (0 at setup).
+------------------------------------------------------------------------- */
+
+void FixSPHWallAdami::sample_acceleration(double half_dt)
+{
+  double *const *const v = atom->v;
+  const int *const mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  // from the last sample to the end of its step, then to now
+  const double between = remaining_sampled + half_dt;
+  const int known = sampled && between > 0.0;
+  const double inv = known ? 1.0 / between : 0.0;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    for (int k = 0; k < 3; k++) {
+      accel[i][k] = known ? (v[i][k] - v_sampled[i][k]) * inv : 0.0;
+      v_sampled[i][k] = v[i][k];
+    }
+  }
+  sampled = 1;
+  remaining_sampled = (half_dt > 0.0) ? update->dt - half_dt : 0.0;
 }
 
 /* ----------------------------------------------------------------------
@@ -159,7 +233,7 @@ void FixSPHWallAdami::setup_pre_force(int vflag)
    ghost copies; a wall particle with no fluid neighbour is at rest density
 ------------------------------------------------------------------------- */
 
-void FixSPHWallAdami::pre_force(int /*vflag*/)
+void FixSPHWallAdami::pre_force_walls()
 {
   const double *const *const x = atom->x;
   const double *const *const v = atom->v;
@@ -206,6 +280,7 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
     if (!(mask[i] & groupbit)) continue;
     const int is_solid = solid_type[type[i]];
     double weight = 0.0, weighted_p = 0.0, hydrostatic = 0.0;
+    double weighted_rho_r[3] = {0.0, 0.0, 0.0};    // moving walls: sum_f rho_f r_wf W_wf
     double weighted_mu = 0.0;    // solids only; and the weight of each fluid type
     if (is_solid)
       for (int t = 1; t <= ntypes; t++) fluid_weight[t] = 0.0;
@@ -221,12 +296,22 @@ void FixSPHWallAdami::pre_force(int /*vflag*/)
       weighted_p += w * fluid_pressure[m];
       const double *const rho_accel = &fluid_rho_accel[3 * (size_t) m];
       hydrostatic += w * (rho_accel[0] * dx + rho_accel[1] * dy + rho_accel[2] * dz);
+      if (moving) {
+        const double w_rho = w * rho[j];
+        weighted_rho_r[0] += w_rho * dx;
+        weighted_rho_r[1] += w_rho * dy;
+        weighted_rho_r[2] += w_rho * dz;
+      }
       for (int k = 0; k < 3; k++) weighted_v[k] += w * v[j][k];
       if (is_solid) {
         fluid_weight[type[j]] += w;
         weighted_mu += w * materials->viscosity_at(type[j], esph[j] / cv[j], "Fix sph/wall/adami");
       }
     }
+    // the wall's own acceleration: P_w gets -a_w . sum_f rho_f r_wf W_wf
+    if (moving)
+      hydrostatic -= accel[i][0] * weighted_rho_r[0] + accel[i][1] * weighted_rho_r[1] +
+          accel[i][2] * weighted_rho_r[2];
     if (is_solid) {
       // the density and viscosity of the fluid at the wall pressure: the
       // kernel-weighted mean over the fluid neighbours' materials
@@ -303,6 +388,90 @@ void FixSPHWallAdami::unpack_forward_comm(int n, int first, double *buf)
     if (any_solid)
       for (int c = 0; c < 4; c++) solid_state[i][c] = buf[m++];
   }
+}
+
+/* ----------------------------------------------------------------------
+   the last velocity sample travels and restarts with its atom (restarts
+   continue the acceleration as an uninterrupted run would)
+------------------------------------------------------------------------- */
+
+void FixSPHWallAdami::grow_arrays(int nmax_atom)
+{
+  memory->grow(v_sampled, nmax_atom, 3, "sph/wall/adami:v_sampled");
+  memory->grow(accel, nmax_atom, 3, "sph/wall/adami:accel");
+}
+
+void FixSPHWallAdami::copy_arrays(int i, int j, int /*delflag*/)
+{
+  for (int k = 0; k < 3; k++) {
+    v_sampled[j][k] = v_sampled[i][k];
+    accel[j][k] = accel[i][k];
+  }
+}
+
+int FixSPHWallAdami::pack_exchange(int i, double *buf)
+{
+  for (int k = 0; k < 3; k++) buf[k] = v_sampled[i][k];
+  return 3;
+}
+
+int FixSPHWallAdami::unpack_exchange(int nlocal, double *buf)
+{
+  for (int k = 0; k < 3; k++) {
+    v_sampled[nlocal][k] = buf[k];
+    accel[nlocal][k] = 0.0;
+  }
+  return 3;
+}
+
+int FixSPHWallAdami::pack_restart(int i, double *buf)
+{
+  buf[0] = 4;
+  for (int k = 0; k < 3; k++) buf[1 + k] = v_sampled[i][k];
+  return 4;
+}
+
+void FixSPHWallAdami::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  for (int k = 0; k < 3; k++) {
+    v_sampled[nlocal][k] = extra[nlocal][m + k];
+    accel[nlocal][k] = 0.0;
+  }
+}
+
+int FixSPHWallAdami::size_restart(int /*nlocal*/)
+{
+  return 4;
+}
+
+int FixSPHWallAdami::maxsize_restart()
+{
+  return 4;
+}
+
+void FixSPHWallAdami::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  const double state[2] = {(double) sampled, remaining_sampled};
+  const int size = sizeof(state);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(state, sizeof(double), 2, fp);
+}
+
+void FixSPHWallAdami::restart(char *buf)
+{
+  const double *state = (const double *) buf;
+  sampled = (int) state[0];
+  remaining_sampled = state[1];
+}
+
+double FixSPHWallAdami::memory_usage()
+{
+  return 6.0 * atom->nmax * sizeof(double) + (any_solid ? 4.0 * nmax * sizeof(double) : 0.0);
 }
 
 /* ----------------------------------------------------------------------

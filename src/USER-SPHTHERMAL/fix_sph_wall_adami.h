@@ -46,10 +46,36 @@ class FixSPHWallAdami : public Fix {
   double compression(int i) const { return solid_state[i][3]; }
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
+  // the velocity of the last sample travels and restarts with each atom
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+  double memory_usage() override;
+  // 1 when the wall particles move (fix rigid, fix move, or 'moving yes'):
+  // their acceleration enters the pressure (Adami et al. 2012)
+  int is_moving() const { return moving; }
 
  protected:
   double body[3];            // body acceleration of the fluid minus that of the wall
   int body_given;            // 1: 'body' in the command; 0: the run's body force
+  // moving walls: each particle's acceleration a_w, from its velocity at
+  // successive force evaluations (fix rigid and fix move set v at the half
+  // step, fix sph/wall/adami samples it in pre_force)
+  int moving_keyword;    // -1 auto (a fix rigid* or move on the group), 0 no, 1 yes
+  int moving;
+  double **v_sampled;          // per atom: v at the last sample
+  double **accel;              // per atom: a_w of this step (owned wall atoms)
+  double remaining_sampled;    // time from the last sample to the end of its step
+  int sampled;                 // 1 when v_sampled holds a sample of every wall atom
+  void sample_acceleration(double half_dt);
+  void pre_force_walls();
   const double *body_force;  // the run's body force (fix gravity), nullptr when none
   const SPHBodyForce::Buoyancy *buoyancy;    // fix sph/boussinesq, nullptr when none
   int wall_groupbit;      // particles of every sph/wall/adami fix

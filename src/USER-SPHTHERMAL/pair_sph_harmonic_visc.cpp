@@ -18,6 +18,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix.h"
 #include "fix_sph_materials.h"
 #include "fix_sph_wall_adami.h"
 #include "force.h"
@@ -748,6 +749,23 @@ void PairSPHHarmonicVisc::init_style()
   for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/adami")) {
     wall_groupbit |= wall->groupbit;
     adami_walls.push_back((FixSPHWallAdami *) wall);
+  }
+  // a body moved by a fix rigid is a moving wall: its particles must be in
+  // a fix sph/wall/adami group, or the flow would treat them as fluid
+  for (int ifix = 0; ifix < modify->nfix; ifix++) {
+    Fix *rigid = modify->fix[ifix];
+    if (!utils::strmatch(rigid->style, "^rigid")) continue;
+    tagint first = MAXTAGINT, first_all;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & rigid->groupbit) && !(atom->mask[i] & wall_groupbit))
+        first = MIN(first, atom->tag[i]);
+    MPI_Allreduce(&first, &first_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    if (first_all != MAXTAGINT)
+      error->all(FLERR,
+                 "Pair style sph/harmonic/visc: atom {} of fix {} ({}) is in no fix sph/wall/adami "
+                 "group: the particles of a rigid body must be walls of fix sph/wall/adami, which "
+                 "moves them with the body",
+                 first_all, rigid->id, rigid->style);
   }
   // every particle that is not such a wall needs its fluid's properties
   tagint bad_tag = MAXTAGINT;
