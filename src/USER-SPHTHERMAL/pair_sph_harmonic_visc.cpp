@@ -351,11 +351,13 @@ void PairSPHHarmonicVisc::update_atom_state()
       const double t = esph[i] / cv[i];
       const double rho_ref = sphe_reference_density(eos, t);
       if (!(rho_ref > 0.0) || !std::isfinite(rho_ref))
-        error->one(FLERR,
-                   "Pair style sph/harmonic/visc: atom {} (type {}) at T = {} has no reference "
-                   "density: 1 + beta (T - T0) = {} of its equation of state's thermal "
-                   "expansion must be > 0",
-                   atom->tag[i], type[i], t, 1.0 + eos->beta * (t - eos->t0));
+        SPHCheck::stop(
+            lmp,
+            fmt::format(
+                "Pair style sph/harmonic/visc: atom {} (type {}) at T = {} has no reference "
+                "density: 1 + beta (T - T0) = {} of its equation of state's thermal "
+                "expansion must be > 0",
+                atom->tag[i], type[i], t, 1.0 + eos->beta * (t - eos->t0)));
       pressure[i] = sphe_pressure_ref(eos, rho[i], rho_ref);
       diffused_density[i] = rho[i] - (rho_ref - eos->rho0);
     } else {
