@@ -132,20 +132,6 @@ void PairSPHHarmonicVisc::eval_pairs(int ifrom, int ito, const Rates &rates)
       eval_kernel<SPHK_WENDLAND>(ifrom, ito, rates);
       break;
   }
-  if (heating > 0.0) switch (kernel_kind) {
-      case SPHK_LUCY:
-        eval_heating_kernel<SPHK_LUCY>(ifrom, ito, rates);
-        break;
-      case SPHK_CUBIC:
-        eval_heating_kernel<SPHK_CUBIC>(ifrom, ito, rates);
-        break;
-      case SPHK_QUINTIC:
-        eval_heating_kernel<SPHK_QUINTIC>(ifrom, ito, rates);
-        break;
-      case SPHK_WENDLAND:
-        eval_heating_kernel<SPHK_WENDLAND>(ifrom, ito, rates);
-        break;
-    }
 }
 
 /* ----------------------------------------------------------------------
@@ -215,6 +201,8 @@ void PairSPHHarmonicVisc::eval_kernel(int ifrom, int ito, const Rates &rates)
     default:
       eval_pressure<KERNEL, SPHF_P_AVERAGED>(ifrom, ito, rates);
   }
+  // viscous heating: a pass of its own, only when asked for
+  if (heating > 0.0) eval_heating_kernel<KERNEL>(ifrom, ito, rates);
 }
 
 template <int KERNEL, int PRESSURE>
