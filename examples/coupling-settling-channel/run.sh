@@ -1,0 +1,29 @@
+#!/bin/sh
+# A heavy disc (a rigid body of fix rigid) settling in a closed channel of
+# very viscous oil, against the Stokes drag of tools/cylinder_stokes.py
+# (work in progress: see README.md).
+#   ./run.sh          R = 4, 6 and 8 dx with the oil weightless (weight body), R = 4 and 6 dx
+#                     with gravity on everything (weight all), 0.15 s after the release, PNG
+#                     (about 12 min on 2 ranks)
+#   ./run.sh quick    R = 4 dx, weight body, 0.1 s: the speed within 10 % of the reference
+#                     from 0.05 to 0.1 s (the CI test coupling.validation.settling_channel_4)
+# Environment: LMP, PLUGIN, NP (MPI ranks), OUT (default ./out), PYTHON.
+set -e
+here=$(cd "$(dirname "$0")" && pwd)
+. "$here/../common.sh"
+
+settle() {    # n weight tend
+  $run "$LMP" -in "$here/in.channel" -var plugin "$PLUGIN" -var n $1 -var weight $2 -var tend $3 \
+    -var out "channel_$2_$1" -log "log.channel_$2_$1" > /dev/null
+  grep -E "^final" "log.channel_$2_$1"
+}
+case "${1:-}" in
+  quick)
+    settle 4 body 0.1
+    "$PYTHON" "$here/compare.py" channel_body_4 --skip 0.05 --until 0.1 --max-error 0.10 ;;
+  *)
+    for n in 4 6 8; do settle $n body 0.15; done
+    for n in 4 6; do settle $n all 0.15; done
+    "$PYTHON" "$here/compare.py" channel_all_4 channel_all_6
+    "$PYTHON" "$here/compare.py" channel_body_4 channel_body_6 channel_body_8 --png settling.png ;;
+esac
