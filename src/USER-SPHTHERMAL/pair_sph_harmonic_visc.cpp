@@ -47,7 +47,8 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     PairSPHKernel(lmp, "sph/harmonic/visc",
                   "viscosities and equations of state come from fix sph/materials"),
     pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI), xi(SPHF_XI_CLEARY), delta(0.1),
-    heating(0.0), diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr),
+    heating(0.0), mean_pressure_held(0), mean_pressure(0.0), pressure_offset(0.0),
+    diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr),
     eta2(0.0), materials(nullptr), viscosity_varies(0), wall_groupbit(0), pressure(nullptr),
     viscosity(nullptr), mass_of(nullptr), volume(nullptr), density(nullptr),
     diffused_density(nullptr), diffusion_rho(nullptr), thermal_expansion(0), nmax(0), heat(nullptr),
@@ -58,6 +59,10 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
   comm->ghost_velocity = 1;
   comm_forward = 3;
   comm_reverse = 3;    // the shift sums of ghosts
+  // compute pair: the offset 'mean_pressure' subtracted (0 without it)
+  nextra = 1;
+  pvector = new double[nextra];
+  pvector[0] = 0.0;
   gravity[0] = gravity[1] = gravity[2] = 0.0;
 }
 
@@ -70,6 +75,7 @@ PairSPHHarmonicVisc::~PairSPHHarmonicVisc()
   memory->destroy(density);
   memory->destroy(diffused_density);
   memory->destroy(shift_sum);
+  delete[] pvector;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -357,6 +363,39 @@ void PairSPHHarmonicVisc::update_atom_state()
     density[i] = rho[i];
     volume[i] = mass_of[i] / rho[i];
   }
+  pvector[0] = pressure_offset = mean_pressure_held ? hold_mean_pressure() : 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   'mean_pressure P': every particle's pressure, owned or ghost, wall or
+   fluid, less one offset such that the volume-weighted mean over the
+   fluid (the atoms of no wall group) is P. The pair terms then do not see
+   how the kernel sum of a changing particle arrangement moves the mean
+   pressure of a closed container, and a constant offset of all pressures
+   changes no pair force (the walls extrapolate the fluid's pressure, so
+   their pressure moves with it). Returns the offset.
+------------------------------------------------------------------------- */
+
+double PairSPHHarmonicVisc::hold_mean_pressure()
+{
+  const int *const mask = atom->mask;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  double mine[2] = {0.0, 0.0}, sum[2];
+  for (int i = 0; i < nlocal; i++)
+    if (!(mask[i] & wall_groupbit)) {
+      mine[0] += pressure[i] * volume[i];
+      mine[1] += volume[i];
+    }
+  MPI_Allreduce(mine, sum, 2, MPI_DOUBLE, MPI_SUM, world);
+  // no fluid: nothing to hold
+  if (!(sum[1] > 0.0)) return 0.0;
+  const double offset = sum[0] / sum[1] - mean_pressure;
+  if (!std::isfinite(offset))
+    SPHCheck::stop(lmp,
+                   fmt::format("{}: the fluid's mean pressure that mean_pressure holds at {} is {}",
+                               cmd, mean_pressure, sum[0] / sum[1]));
+  for (int i = 0; i < nall; i++) pressure[i] -= offset;
+  return offset;
 }
 
 /* ----------------------------------------------------------------------
@@ -631,6 +670,7 @@ void PairSPHHarmonicVisc::eval_heating(int ifrom, int ito, const Rates &rates)
    pair_style sph/harmonic/visc kernel cutoff [pressure symmetric|sum|averaged]
      [viscosity cleary|adami|morris] [xi value] [eta f] [delta value]
      [diffusion fourtakas|molteni] [fourtakas gx gy gz] [heating fraction]
+     [mean_pressure P|none]
 ------------------------------------------------------------------------- */
 
 void PairSPHHarmonicVisc::settings(int narg, char **arg)
@@ -643,6 +683,8 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
   eta_factor = -1.0;    // the default depends on the viscosity form
   delta = 0.1;    // Ng et al. 2020: "not a tunable parameter", 0.1 for all flows
   heating = 0.0;    // Reece et al. 2024 and Ng et al. 2020 neglect it
+  mean_pressure_held = 0;
+  mean_pressure = 0.0;
   // Fourtakas's form equals Molteni's without gravity and keeps a column at
   // rest with it (examples/flow-hydrostatic): the default
   diffusion_form = DIFFUSION_BODY_FORCE;
@@ -698,6 +740,9 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
                    "Illegal {} command: heating {} must be in [0, 1] (the fraction of the "
                    "viscous work turned into heat)",
                    cmd, value);
+    } else if (strcmp(arg[iarg], "mean_pressure") == 0) {
+      mean_pressure_held = (strcmp(value, "none") != 0);
+      mean_pressure = mean_pressure_held ? utils::numeric(FLERR, value, false, lmp) : 0.0;
     } else if (strcmp(arg[iarg], "delta") == 0) {
       delta = utils::numeric(FLERR, value, false, lmp);
       if (delta < 0.0) error->all(FLERR, "Illegal {} command: delta {} must be >= 0", cmd, value);
@@ -834,24 +879,25 @@ double PairSPHHarmonicVisc::init_one(int, int)
 
 void PairSPHHarmonicVisc::write_restart_settings(FILE *fp)
 {
-  const int ints[4] = {kernel_kind, pressure_form, viscosity_form, diffusion_form};
+  const int ints[5] = {kernel_kind, pressure_form, viscosity_form, diffusion_form,
+                       mean_pressure_held};
   // xi_given only checks the command line
-  const double doubles[8] = {cut_global, xi,         eta_factor, delta,
-                             gravity[0], gravity[1], gravity[2], heating};
-  fwrite(ints, sizeof(int), 4, fp);
-  fwrite(doubles, sizeof(double), 8, fp);
+  const double doubles[9] = {cut_global, xi,         eta_factor, delta,        gravity[0],
+                             gravity[1], gravity[2], heating,    mean_pressure};
+  fwrite(ints, sizeof(int), 5, fp);
+  fwrite(doubles, sizeof(double), 9, fp);
 }
 
 void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
 {
-  int ints[4];
-  double doubles[8];
+  int ints[5];
+  double doubles[9];
   if (comm->me == 0) {
-    utils::sfread(FLERR, ints, sizeof(int), 4, fp, nullptr, error);
-    utils::sfread(FLERR, doubles, sizeof(double), 8, fp, nullptr, error);
+    utils::sfread(FLERR, ints, sizeof(int), 5, fp, nullptr, error);
+    utils::sfread(FLERR, doubles, sizeof(double), 9, fp, nullptr, error);
   }
-  MPI_Bcast(ints, 4, MPI_INT, 0, world);
-  MPI_Bcast(doubles, 8, MPI_DOUBLE, 0, world);
+  MPI_Bcast(ints, 5, MPI_INT, 0, world);
+  MPI_Bcast(doubles, 9, MPI_DOUBLE, 0, world);
   // the body force is read again from fix gravity at init
   diffusion_form = ints[3];
   hydrostatic = (diffusion_form == DIFFUSION_GIVEN);
@@ -864,6 +910,8 @@ void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
   eta_factor = doubles[2];
   delta = doubles[3];
   heating = doubles[7];
+  mean_pressure_held = ints[4];
+  mean_pressure = doubles[8];
 }
 
 /* ---------------------------------------------------------------------- */
