@@ -11,13 +11,16 @@ meshes and extrapolated. Creeping flow: the run's Reynolds number is printed
 (about 0.02), and the drag's inertial correction is of second order in it
 (the channel is symmetric fore and aft of the disc).
 
-    compare.py RUN [RUN ...] [--skip 0.05] [--until 0.1] [--max-error 0.1] [--png settling.png]
+    compare.py RUN [RUN ...] [--skip 0.05] [--until 0.1] [--max-error 0.1] [--max-drift 0.015]
+               [--png settling.png]
 
 RUN is the prefix of a run: <RUN>.series (t, x, y, vx, vy, spin of the disc)
 and log.<RUN> (its 'disc of' line). Compared from --skip seconds after the
 release (the slowest mode of the channel's flow decays as exp(-t / 16 ms):
 (2 l)^2 / (pi^2 nu)) up to --until (default: the end); exits 1 when the
-largest relative velocity error of the last run exceeds --max-error.
+largest relative velocity error of the last run exceeds --max-error, or
+when its error changes by more than --max-drift between the first and the
+last fifth of the window (the speed must settle at a terminal value).
 """
 
 import argparse
@@ -71,6 +74,7 @@ def main():
     ap.add_argument("--skip", type=float, default=0.05)
     ap.add_argument("--until", type=float, default=math.inf)
     ap.add_argument("--max-error", type=float)
+    ap.add_argument("--max-drift", type=float)
     ap.add_argument("--png")
     args = ap.parse_args()
     results = []
@@ -84,21 +88,23 @@ def main():
         rel = speed / U - 1.0
         Re = RHO_F * float(np.max(speed)) * 2.0 * run["R"] / MU
         worst = float(np.max(np.abs(rel)))
+        fifth = max(1, len(rel) // 5)
+        drift = float(np.mean(rel[-fifth:]) - np.mean(rel[:fifth]))
         n = run["R"] / run["dx"]
         print(f"{prefix}: {run['particles']} particles, R = {run['R']:.6g} m ({n:.2f} dx), l/R = "
               f"{0.5 * run['W'] / run['R']:.4f}, Re = {Re:.3f}; drag/(mu U) {coeff[0]:.5f} .. {coeff[-1]:.5f} "
               f"(reference error {ref_err:.1e})")
         print(f"  t in [{args.skip}, {min(args.until, run['t'][-1]):.3g}] s: fell {run['y'][window][0] - run['y'][window][-1]:.4e} m; speed {speed[0]:.5e} .. "
               f"{speed[-1]:.5e} m/s against {U[0]:.5e} .. {U[-1]:.5e}: error {rel[0]:+.4f} .. {rel[-1]:+.4f}, "
-              f"largest {worst:.4f}; |x - W/2| <= {np.max(np.abs(run['x'] - 0.5 * run['W'])):.1e} m, "
+              f"largest {worst:.4f}, drift {drift:+.4f}; |x - W/2| <= {np.max(np.abs(run['x'] - 0.5 * run['W'])):.1e} m, "
               f"|spin| <= {np.max(np.abs(run['spin'])):.1e} 1/s")
-        results.append((run, window, U, rel, worst))
+        results.append((run, window, U, rel, worst, drift))
     if args.png:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
-        for run, window, U, rel, _ in results:
+        for run, window, U, rel, _, _ in results:
             label = f"SPH, R = {run['R'] / run['dx']:.2f} dx"
             line, = ax1.plot(run["t"], -run["vy"] * 1e3, label=label)
             ax1.plot(run["t"][window], U * 1e3, "--", color=line.get_color())
@@ -114,10 +120,14 @@ def main():
         fig.tight_layout()
         fig.savefig(args.png, dpi=110)
         print(f"wrote {args.png}")
+    status = 0
     if args.max_error is not None and results[-1][4] > args.max_error:
         print(f"FAIL: largest relative error {results[-1][4]:.4f} above {args.max_error}")
-        return 1
-    return 0
+        status = 1
+    if args.max_drift is not None and abs(results[-1][5]) > args.max_drift:
+        print(f"FAIL: the error drifts by {results[-1][5]:+.4f} (more than {args.max_drift}): no terminal speed")
+        status = 1
+    return status
 
 
 if __name__ == "__main__":

@@ -5,8 +5,9 @@
 #   ./run.sh          R = 4, 6 and 8 dx with the oil weightless (weight body), R = 4 and 6 dx
 #                     with gravity on everything (weight all), 0.15 s after the release, PNG
 #                     (about 12 min on 2 ranks)
-#   ./run.sh quick    R = 4 dx, weight body, 0.1 s: the speed within 10 % of the reference
-#                     from 0.05 to 0.1 s (the CI test coupling.validation.settling_channel_4)
+#   ./run.sh quick    R = 4 dx, weight body, 0.15 s: the speed within 8 % of the reference
+#                     from 0.05 to 0.15 s, its error drifting by less than 1.5 % (the CI test
+#                     coupling.validation.settling_channel_4)
 # Environment: LMP, PLUGIN, NP (MPI ranks), OUT (default ./out), PYTHON.
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
@@ -19,8 +20,9 @@ settle() {    # n weight tend
 }
 case "${1:-}" in
   quick)
-    settle 4 body 0.1
-    "$PYTHON" "$here/compare.py" channel_body_4 --skip 0.05 --until 0.1 --max-error 0.10 ;;
+    settle 4 body 0.15
+    "$PYTHON" "$here/compare.py" channel_body_4 --skip 0.05 --until 0.15 --max-error 0.08 \
+      --max-drift 0.015 ;;
   *)
     for n in 4 6 8; do settle $n body 0.15; done
     for n in 4 6; do settle $n all 0.15; done
