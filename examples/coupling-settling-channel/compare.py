@@ -12,7 +12,7 @@ meshes and extrapolated. Creeping flow: the run's Reynolds number is printed
 (the channel is symmetric fore and aft of the disc).
 
     compare.py RUN [RUN ...] [--skip 0.05] [--until 0.1] [--max-error 0.1] [--max-drift 0.015]
-               [--png settling.png]
+               [--max-body 0.8] [--png settling.png]
 
 RUN is the prefix of a run: <RUN>.series (t, x, y, vx, vy, spin of the disc)
 and log.<RUN> (its 'disc of' line). Compared from --skip seconds after the
@@ -20,7 +20,9 @@ release (the slowest mode of the channel's flow decays as exp(-t / 16 ms):
 (2 l)^2 / (pi^2 nu)) up to --until (default: the end); exits 1 when the
 largest relative velocity error of the last run exceeds --max-error, or
 when its error changes by more than --max-drift between the first and the
-last fifth of the window (the speed must settle at a terminal value).
+last fifth of the window (the speed must settle at a terminal value), or
+when the mean error of any run, less the lattice error of the viscous
+term (lattice_viscosity_factor), exceeds --max-body times (dx / R)^2.
 """
 
 import argparse
@@ -36,6 +38,29 @@ import cylinder_stokes as cs  # noqa: E402
 
 # the materials and the geometry of in.channel
 RHO_S, RHO_F, MU, G = 7850.0, 970.0, 10.0, 9.81
+# its kernel: Wendland C2 with h = 1.3 dx; the pair style's eta = 0.01 h
+H_OVER_DX, ETA_OVER_H = 1.3, 0.01
+
+
+def lattice_viscosity_factor(h_over_dx=H_OVER_DX, eta_over_h=ETA_OVER_H):
+    """The viscous term of pair sph/harmonic/visc (adami form; morris is the
+    same for one fluid) on a square lattice, applied to u = (0, x^2), over
+    the exact mu laplace(u) = (0, 2 mu): sum_j V (u_i - u_j) 2 (dW/dr) r /
+    (r^2 + eta^2) / 2 = -sum_j V x_ij^2 (dW/dr) r / (r^2 + eta^2) in units
+    of dx (V = 1). The viscosity the particles feel is this factor times mu,
+    whatever the spacing: a lattice error, not a discretisation error that
+    refinement at fixed h / dx removes."""
+    h = h_over_dx
+    n = int(math.ceil(2.0 * h)) + 1
+    i = np.arange(-n, n + 1, dtype=float)
+    x, y = np.meshgrid(i, i)
+    r = np.hypot(x, y)
+    inside = (r > 0.0) & (r < 2.0 * h)
+    q = r[inside] / h
+    # Wendland C2 in 2-d: W = 7 / (4 pi h^2) (1 - q/2)^4 (2 q + 1)
+    dwdr = 7.0 / (4.0 * math.pi * h * h) * (-5.0 * q * (1.0 - 0.5 * q) ** 3) / h
+    rr = r[inside]
+    return float(-np.sum(x[inside] ** 2 * dwdr * rr / (rr * rr + (eta_over_h * h) ** 2)))
 
 
 def read_run(prefix):
@@ -75,9 +100,11 @@ def main():
     ap.add_argument("--until", type=float, default=math.inf)
     ap.add_argument("--max-error", type=float)
     ap.add_argument("--max-drift", type=float)
+    ap.add_argument("--max-body", type=float)
     ap.add_argument("--png")
     args = ap.parse_args()
     results = []
+    failed_body = False
     for prefix in args.runs:
         run = read_run(prefix)
         window = (run["t"] >= args.skip) & (run["t"] <= args.until)
@@ -90,6 +117,9 @@ def main():
         worst = float(np.max(np.abs(rel)))
         fifth = max(1, len(rel) // 5)
         drift = float(np.mean(rel[-fifth:]) - np.mean(rel[:fifth]))
+        # the error less that of the lattice viscosity: the body's own
+        # discretisation error, (dx / R)^2 times this
+        body = float(np.mean((1.0 + rel) * lattice_viscosity_factor() - 1.0))
         n = run["R"] / run["dx"]
         print(f"{prefix}: {run['particles']} particles, R = {run['R']:.6g} m ({n:.2f} dx), l/R = "
               f"{0.5 * run['W'] / run['R']:.4f}, Re = {Re:.3f}; drag/(mu U) {coeff[0]:.5f} .. {coeff[-1]:.5f} "
@@ -98,7 +128,13 @@ def main():
               f"{speed[-1]:.5e} m/s against {U[0]:.5e} .. {U[-1]:.5e}: error {rel[0]:+.4f} .. {rel[-1]:+.4f}, "
               f"largest {worst:.4f}, drift {drift:+.4f}; |x - W/2| <= {np.max(np.abs(run['x'] - 0.5 * run['W'])):.1e} m, "
               f"|spin| <= {np.max(np.abs(run['spin'])):.1e} 1/s")
+        print(f"  mean error {np.mean(rel):+.4f}; with the lattice's viscosity "
+              f"{lattice_viscosity_factor():.4f} mu: {body:+.4f} = {body * n * n:.3f} (dx/R)^2")
         results.append((run, window, U, rel, worst, drift))
+        if args.max_body is not None and abs(body) > args.max_body / (n * n):
+            print(f"FAIL: {prefix}: the error less the lattice's, {body:+.4f}, is above "
+                  f"{args.max_body} (dx/R)^2 = {args.max_body / (n * n):.4f}")
+            failed_body = True
     if args.png:
         import matplotlib
         matplotlib.use("Agg")
@@ -120,7 +156,7 @@ def main():
         fig.tight_layout()
         fig.savefig(args.png, dpi=110)
         print(f"wrote {args.png}")
-    status = 0
+    status = 1 if failed_body else 0
     if args.max_error is not None and results[-1][4] > args.max_error:
         print(f"FAIL: largest relative error {results[-1][4]:.4f} above {args.max_error}")
         status = 1
