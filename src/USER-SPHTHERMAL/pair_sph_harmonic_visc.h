@@ -53,9 +53,11 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   int xi_given;           // xi was given (only the cleary form reads it)
   double delta;           // density diffusion (Ng et al. 2020, eq 5), 0: none
   double heating;         // fraction of the viscous work turned into heat, 0: none
-  int mean_pressure_held;    // 1: the pair terms see the pressure less an offset that holds
-  double mean_pressure;      // the fluid's volume-weighted mean pressure at this value
-  double pressure_offset;    // the offset of the last force evaluation
+  // 1: the pair terms see the pressure less an offset (pvector[0], for
+  // compute pair) that holds the fluid's volume-weighted mean pressure at
+  // mean_pressure
+  int mean_pressure_held;
+  double mean_pressure;
   // the density diffusion: Fourtakas's (Reece et al. 2024, eq 39) with the
   // run's body force (the default), Molteni's (Ng et al. 2020, eq 5: no
   // gravity), or Fourtakas's with a vector given in the command
