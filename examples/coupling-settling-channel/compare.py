@@ -35,6 +35,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 import cylinder_stokes as cs  # noqa: E402
+import wendland2d  # noqa: E402
 
 # the materials and the geometry of in.channel
 RHO_S, RHO_F, MU, G = 7850.0, 970.0, 10.0, 9.81
@@ -56,10 +57,8 @@ def lattice_viscosity_factor(h_over_dx=H_OVER_DX, eta_over_h=ETA_OVER_H):
     x, y = np.meshgrid(i, i)
     r = np.hypot(x, y)
     inside = (r > 0.0) & (r < 2.0 * h)
-    q = r[inside] / h
-    # Wendland C2 in 2-d: W = 7 / (4 pi h^2) (1 - q/2)^4 (2 q + 1)
-    dwdr = 7.0 / (4.0 * math.pi * h * h) * (-5.0 * q * (1.0 - 0.5 * q) ** 3) / h
     rr = r[inside]
+    dwdr = wendland2d.dwdr(rr, h)
     return float(-np.sum(x[inside] ** 2 * dwdr * rr / (rr * rr + (eta_over_h * h) ** 2)))
 
 

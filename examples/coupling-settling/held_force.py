@@ -23,10 +23,16 @@ from rho0 g, the water's pressure, not the coupling, is what is off.
 """
 
 import argparse
+import os
 import re
+import sys
 
 import numpy as np
 from scipy.spatial import cKDTree
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+import wendland2d  # noqa: E402
+from lammps_dump import read_frames  # noqa: E402
 
 RHO0, GAMMA, G = 1000.0, 7.0, 9.81
 
@@ -39,21 +45,12 @@ def main():
     ap.add_argument("--log", required=True)
     ap.add_argument("--max-mismatch", type=float)
     args = ap.parse_args()
-    with open(args.snapshot) as f:
-        lines = f.read().split("\n")
-    n = int(lines[3])
-    data = np.array([[float(v) for v in line.split()] for line in lines[9:9 + n]])
-    kind, mass, x, rho = data[:, 1], data[:, 2], data[:, 3:5], data[:, 5]
+    atoms = read_frames(args.snapshot)[-1][1]
+    kind, mass, rho = atoms["type"], atoms["mass"], atoms["c_rho_all"]
+    x = np.c_[atoms["x"], atoms["y"]]
+    n = len(kind)
     dx, h = args.dx, 1.3 * args.dx
     b_tait = RHO0 * args.c0 ** 2 / GAMMA
-
-    def kernel(r):
-        q = r / h
-        return np.where(q < 2, 7 / (4 * np.pi * h * h) * (1 - q / 2) ** 4 * (2 * q + 1), 0.0)
-
-    def dwdr_over_r(r):
-        q = r / h
-        return np.where(q < 2, 7 / (4 * np.pi * h * h) * (-5 * q * (1 - q / 2) ** 3) / h / r, 0.0)
 
     def pressure(density):
         return b_tait * ((density / RHO0) ** GAMMA - 1.0)
@@ -77,11 +74,11 @@ def main():
                 continue
             r = x[w] - x[nb]
             dist = np.linalg.norm(r, axis=1)
-            p_w = wall_pressure(w, nb, kernel(dist), r)
+            p_w = wall_pressure(w, nb, wendland2d.w(dist, h), r)
             rho_w = density(p_w)
             v_w = dx * dx * RHO0 / rho_w    # the solid's volume compressed with the water
             p_avg = (p_w * rho[nb] + p_field[nb] * rho_w) / (rho_w + rho[nb])
-            s = -(v_w ** 2 + vol[nb] ** 2) * p_avg * dwdr_over_r(dist)
+            s = -(v_w ** 2 + vol[nb] ** 2) * p_avg * wendland2d.dwdr(dist, h) / dist
             total += (s[:, None] * r).sum(axis=0)
         return total
 
