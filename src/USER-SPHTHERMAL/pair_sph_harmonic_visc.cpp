@@ -31,6 +31,7 @@
 #include "sph_checks.h"
 #include "sph_compat.h"
 #include "sph_conduction.h"
+#include "sph_consistent.h"
 #include "sph_flow.h"
 #include "update.h"
 
@@ -47,17 +48,19 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     PairSPHKernel(lmp, "sph/harmonic/visc",
                   "viscosities and equations of state come from fix sph/materials"),
     pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI), xi(SPHF_XI_CLEARY), delta(0.1),
-    heating(0.0), mean_pressure_held(0), mean_pressure(0.0), diffusion_form(DIFFUSION_BODY_FORCE),
-    hydrostatic(0), body_force(nullptr), eta2(0.0), materials(nullptr), viscosity_varies(0),
-    wall_groupbit(0), pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr),
-    density(nullptr), diffused_density(nullptr), diffusion_rho(nullptr), thermal_expansion(0),
-    nmax(0), heat(nullptr), shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0)
+    heating(0.0), mean_pressure_held(0), mean_pressure(0.0), gradient_correction(0),
+    gradient_inverse(nullptr), nmax_gradient(0), gradient_fluid(0), gradient_plain(0),
+    comm_stage(COMM_VEST), diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0),
+    body_force(nullptr), eta2(0.0), materials(nullptr), viscosity_varies(0), wall_groupbit(0),
+    pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr), density(nullptr),
+    diffused_density(nullptr), diffusion_rho(nullptr), thermal_expansion(0), nmax(0), heat(nullptr),
+    shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0)
 {
   // the continuity equation and the viscous term need the velocities of
   // ghost atoms: turned on here, as comm_modify vel yes would
   comm->ghost_velocity = 1;
-  comm_forward = 3;
-  comm_reverse = 3;    // the shift sums of ghosts
+  comm_forward = 6;    // vest at setup (3); the gradient correction's B (6)
+  comm_reverse = 6;    // the shift sums of ghosts (3); the gradient correction's moments (6)
   // compute pair: the offset 'mean_pressure' subtracted (0 without it)
   nextra = 1;
   pvector = new double[nextra];
@@ -74,6 +77,7 @@ PairSPHHarmonicVisc::~PairSPHHarmonicVisc()
   memory->destroy(density);
   memory->destroy(diffused_density);
   memory->destroy(shift_sum);
+  memory->destroy(gradient_inverse);
   delete[] pvector;
 }
 
@@ -97,9 +101,39 @@ void PairSPHHarmonicVisc::begin_compute()
 {
   // fix sph sets vest = v on owned atoms at setup without updating their
   // ghosts: refresh them, or results depend on newton and the rank count
-  if (update->setupflag) SPHCompat::forward_comm(comm, this);
+  if (update->setupflag) {
+    comm_stage = COMM_VEST;
+    SPHCompat::forward_comm(comm, this);
+  }
   update_atom_state();
   if (update->setupflag) check_neighbours();
+  if (gradient_correction) {
+    const int dim3 = domain->dimension == 3;
+    switch (kernel_kind) {
+      case SPHK_LUCY:
+        dim3 ? update_gradient_correction<SPHK_LUCY, 3>()
+             : update_gradient_correction<SPHK_LUCY, 2>();
+        break;
+      case SPHK_CUBIC:
+        dim3 ? update_gradient_correction<SPHK_CUBIC, 3>()
+             : update_gradient_correction<SPHK_CUBIC, 2>();
+        break;
+      case SPHK_QUINTIC:
+        dim3 ? update_gradient_correction<SPHK_QUINTIC, 3>()
+             : update_gradient_correction<SPHK_QUINTIC, 2>();
+        break;
+      case SPHK_WENDLAND:
+        dim3 ? update_gradient_correction<SPHK_WENDLAND, 3>()
+             : update_gradient_correction<SPHK_WENDLAND, 2>();
+        break;
+    }
+    if (update->setupflag && comm->me == 0)
+      utils::logmesg(lmp,
+                     "Pair style sph/harmonic/visc: correction gradient on {} fluid atoms; {} keep "
+                     "the plain gradient (incomplete kernel support: free surfaces or too few "
+                     "neighbours)\n",
+                     gradient_fluid - gradient_plain, gradient_plain);
+  }
   // fix gravity may vary its acceleration in time
   if (diffusion_form == DIFFUSION_BODY_FORCE && body_force) {
     for (int k = 0; k < 3; k++) gravity[k] = body_force[k];
@@ -148,14 +182,18 @@ void PairSPHHarmonicVisc::end_compute()
   check_rates3(atom->f, "force");
   check_rates(atom->drho, "drho");
   if (heat && heat->term_in_flow_loop()) heat->end_flow_loop_term();
-  if (shift_sums_wanted && force->newton_pair) SPHCompat::reverse_comm(comm, this);
+  if (shift_sums_wanted && force->newton_pair) {
+    comm_stage = COMM_SHIFT;
+    SPHCompat::reverse_comm(comm, this);
+  }
 }
 
 /* ---------------------------------------------------------------------- */
 
 bool PairSPHHarmonicVisc::provide_shift_sums(int groupbit)
 {
-  if (pressure_form != SPHF_P_AVERAGED) return false;
+  // the corrected loop does not make them (fix sph/shift then sums them itself)
+  if (pressure_form != SPHF_P_AVERAGED || gradient_correction) return false;
   const int ntypes = atom->ntypes;
   std::vector<int> group_type(ntypes + 1, 0), group_type_all(ntypes + 1, 0);
   int in_wall = 0, in_wall_any = 0;
@@ -177,14 +215,108 @@ bool PairSPHHarmonicVisc::provide_shift_sums(int groupbit)
 
 int PairSPHHarmonicVisc::pack_reverse_comm(int n, int first, double *buf)
 {
+  if (comm_stage == COMM_GRADIENT_MOMENT) {
+    int m = 0;
+    for (int i = first; i < first + n; i++)
+      for (int k = 0; k < 6; k++) buf[m++] = gradient_inverse[i][k];
+    return m;
+  }
   memcpy(buf, &shift_sum[3 * (size_t) first], 3 * sizeof(double) * n);
   return 3 * n;
 }
 
 void PairSPHHarmonicVisc::unpack_reverse_comm(int n, int *list_send, double *buf)
 {
+  if (comm_stage == COMM_GRADIENT_MOMENT) {
+    for (int k = 0; k < n; k++)
+      for (int a = 0; a < 6; a++) gradient_inverse[list_send[k]][a] += buf[6 * k + a];
+    return;
+  }
   for (int k = 0; k < n; k++)
     for (int a = 0; a < 3; a++) shift_sum[3 * (size_t) list_send[k] + a] += buf[3 * k + a];
+}
+
+/* ----------------------------------------------------------------------
+   'correction gradient': B = M^-1 per fluid atom, with the moment
+     M_i = sum_j V_j (-dW/dr / r) r_ij (x) r_ij = -sum_j V_j r_ij (x) grad_i W_ij
+   over every neighbour in the support (fluid and wall), which is I for a
+   complete support in the continuum (0.974 I on a square lattice with
+   Wendland C2 and h = 1.3 dx, about 0.95 I on particles that have
+   rearranged). With B grad W in place of grad W (Bonet & Lok 1999) the pair
+   force of a linear pressure field is exactly -V grad p where the
+   neighbours' B are equal and sum_j V_j grad W_ij = 0 (any lattice; test
+   flow.gradient.linear); on disordered particles the moment's error is
+   removed and the zeroth-order sum remains, which moves particles towards
+   an even arrangement as in the plain form. Atoms whose smallest
+   eigenvalue of M is below FULL_SUPPORT (a free surface) and wall
+   particles keep B = I.
+------------------------------------------------------------------------- */
+
+// smallest eigenvalue of M that counts as complete support: 0.974 inside a
+// square lattice, about 0.5 in the first row of a free surface
+static constexpr double FULL_SUPPORT = 0.7;
+
+template <int KERNEL, int DIM> void PairSPHHarmonicVisc::update_gradient_correction()
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const int newton_pair = force->newton_pair;
+  if (atom->nmax > nmax_gradient) {
+    nmax_gradient = atom->nmax;
+    memory->destroy(gradient_inverse);
+    memory->create(gradient_inverse, nmax_gradient, 6, "pair:gradient_inverse");
+  }
+  double **const moment = gradient_inverse;    // M until B replaces it
+  for (int i = 0; i < nall; i++)
+    for (int k = 0; k < 6; k++) moment[i][k] = 0.0;
+  const double *const *const x = atom->x;
+  const int *const mask = atom->mask;
+  const double cutsq_kernel = cut_global * cut_global;
+  const double inv_h = kernel.inv_h;
+  const double dwdr_r_scale = kernel.dw_scale * kernel.inv_h;
+  const int *const ilist = list->ilist;
+  const int *const numneigh = list->numneigh;
+  int **const firstneigh = list->firstneigh;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = ilist[ii];
+    const int wall_i = mask[i] & wall_groupbit;
+    const int *const jlist = firstneigh[i];
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const int wall_j = mask[j] & wall_groupbit;
+      if (wall_i && wall_j) continue;
+      const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1],
+                             (DIM == 3) ? x[i][2] - x[j][2] : 0.0};
+      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+      if (rsq >= cutsq_kernel) continue;
+      const double g = -dwdr_r_scale * sphk_df_over_q(KERNEL, sqrt(rsq) * inv_h);
+      if (!wall_i) sphc_moment_add(moment[i], g * volume[j], del);
+      if (!wall_j && (newton_pair || j < nlocal)) sphc_moment_add(moment[j], g * volume[i], del);
+    }
+  }
+  comm_stage = COMM_GRADIENT_MOMENT;
+  if (newton_pair) SPHCompat::reverse_comm(comm, this);
+  bigint plain = 0, fluid = 0;
+  for (int i = 0; i < nlocal; i++) {
+    double inverse[6] = {1.0, 1.0, 1.0, 0.0, 0.0, 0.0};
+    if (!(mask[i] & wall_groupbit)) {
+      fluid++;
+      const int full = sphc_sym_min_eigen(DIM, moment[i]) >= FULL_SUPPORT &&
+          sphc_sym_inverse(DIM, moment[i], inverse) > 0.0;
+      if (!full) {
+        plain++;
+        for (int k = 0; k < 6; k++) inverse[k] = (k < 3) ? 1.0 : 0.0;
+      }
+    }
+    for (int k = 0; k < 6; k++) moment[i][k] = inverse[k];
+  }
+  comm_stage = COMM_GRADIENT_INVERSE;
+  SPHCompat::forward_comm(comm, this);
+  if (update->setupflag) {
+    bigint mine[2] = {plain, fluid}, all[2];
+    MPI_Allreduce(mine, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+    gradient_plain = all[0];
+    gradient_fluid = all[1];
+  }
 }
 
 void PairSPHHarmonicVisc::tally_pair(int i, int j, double fx, double fy, double fz, double delx,
@@ -275,8 +407,15 @@ void PairSPHHarmonicVisc::eval_dimension(int ifrom, int ito, const Rates &rates)
   // the shift sums only with the default pressure form (else SHIFT is 0 and
   // both branches are the same instantiation)
   constexpr int SHIFT = (PRESSURE == SPHF_P_AVERAGED) ? SHIFT_SUMS : 0;
+  // likewise the corrected gradient (which fix sph/shift never asks to sum with)
+  constexpr int CORRECTED = (PRESSURE == SPHF_P_AVERAGED) ? GRADIENT : 0;
   // 2-D: the z components are zero, and so are their terms
-  if (SHIFT && shift_sums_wanted) {
+  if (CORRECTED && gradient_correction) {
+    if (domain->dimension == 2)
+      eval<KERNEL, PRESSURE, VISCOSITY, TERMS | CORRECTED, 2>(ifrom, ito, rates);
+    else
+      eval<KERNEL, PRESSURE, VISCOSITY, TERMS | CORRECTED, 3>(ifrom, ito, rates);
+  } else if (SHIFT && shift_sums_wanted) {
     if (domain->dimension == 2)
       eval<KERNEL, PRESSURE, VISCOSITY, TERMS | SHIFT, 2>(ifrom, ito, rates);
     else
@@ -435,6 +574,7 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
   const double gravity[3] = {this->gravity[0], this->gravity[1], this->gravity[2]};
   const PairSPHClearyHeat::FlowLoopTerm term = heat_term;
   double *const shift_sum = this->shift_sum;
+  const double *const *const gradient_inverse = this->gradient_inverse;
 
   const double cutsq_kernel = cut_global * cut_global;
   const double inv_h = kernel.inv_h;
@@ -507,9 +647,28 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
           (TERMS & HEAT_ON) ? sphc_cleary_denominator(rho_i, term.rho[j], rsq, term.eta2) : 1.0;
       sphf_pair(PRESSURE, VISCOSITY, xi, &a, &b, rsq, dwdr_r, eta2, vr_est, heat_den, &s_r, &s_rv,
                 &s_v, &c_i, &c_j, &inv_heat);
-      const double fx = s_r * delx + s_v * dvx;
-      const double fy = s_r * dely + s_v * dvy;
-      const double fz = s_r * delz + s_v * dvz;
+      double fx = s_r * delx + s_v * dvx;
+      double fy = s_r * dely + s_v * dvy;
+      double fz = s_r * delz + s_v * dvz;
+      if (TERMS & GRADIENT) {
+        // the pressure force along B grad W: the mean of the two particles'
+        // B for a fluid pair, the fluid particle's with a wall (one matrix
+        // per pair: the force stays antisymmetric and momentum is kept)
+        const double del[3] = {delx, dely, delz};
+        double b_del[3];
+        if (wall_i || (mask[j] & wall_groupbit))
+          sphc_sym_apply(gradient_inverse[wall_i ? j : i], del, b_del);
+        else {
+          double b_del_j[3];
+          sphc_sym_apply(gradient_inverse[i], del, b_del);
+          sphc_sym_apply(gradient_inverse[j], del, b_del_j);
+          for (int k = 0; k < 3; k++) b_del[k] = 0.5 * (b_del[k] + b_del_j[k]);
+        }
+        const double s_p = s_r - s_rv;
+        fx += s_p * (b_del[0] - delx);
+        fy += s_p * (b_del[1] - dely);
+        if (DIM == 3) fz += s_p * (b_del[2] - delz);
+      }
       // fix sph/shift's sums: grad_i W_ij = dW/dr / r (r_i - r_j)
       const double shift_ij = (TERMS & SHIFT_SUMS) ? dwdr_r * b.vol : 0.0;
       const double shift_ji = (TERMS & SHIFT_SUMS) ? dwdr_r * a.vol : 0.0;
@@ -667,7 +826,7 @@ void PairSPHHarmonicVisc::eval_heating(int ifrom, int ito, const Rates &rates)
    pair_style sph/harmonic/visc kernel cutoff [pressure symmetric|sum|averaged]
      [viscosity cleary|adami|morris] [xi value] [eta f] [delta value]
      [diffusion fourtakas|molteni] [fourtakas gx gy gz] [heating fraction]
-     [mean_pressure P|none]
+     [mean_pressure P|none] [correction none|gradient]
 ------------------------------------------------------------------------- */
 
 void PairSPHHarmonicVisc::settings(int narg, char **arg)
@@ -682,6 +841,7 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
   heating = 0.0;    // Reece et al. 2024 and Ng et al. 2020 neglect it
   mean_pressure_held = 0;
   mean_pressure = 0.0;
+  gradient_correction = 0;
   // Fourtakas's form equals Molteni's without gravity and keeps a column at
   // rest with it (examples/flow-hydrostatic): the default
   diffusion_form = DIFFUSION_BODY_FORCE;
@@ -740,6 +900,14 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
     } else if (strcmp(arg[iarg], "mean_pressure") == 0) {
       mean_pressure_held = (strcmp(value, "none") != 0);
       mean_pressure = mean_pressure_held ? utils::numeric(FLERR, value, false, lmp) : 0.0;
+    } else if (strcmp(arg[iarg], "correction") == 0) {
+      if (strcmp(value, "gradient") == 0)
+        gradient_correction = 1;
+      else if (strcmp(value, "none") == 0)
+        gradient_correction = 0;
+      else
+        error->all(FLERR, "Illegal {} command: unknown correction '{}' (none or gradient)", cmd,
+                   value);
     } else if (strcmp(arg[iarg], "delta") == 0) {
       delta = utils::numeric(FLERR, value, false, lmp);
       if (delta < 0.0) error->all(FLERR, "Illegal {} command: delta {} must be >= 0", cmd, value);
@@ -752,6 +920,11 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
                "Illegal {} command: xi is a factor of the cleary viscosity form only; viscosity {} "
                "does not use it",
                cmd, sphf_viscosity_name(viscosity_form));
+  if (gradient_correction && pressure_form != SPHF_P_AVERAGED)
+    error->all(FLERR,
+               "Illegal {} command: correction gradient needs the averaged pressure form (the "
+               "default), not pressure {}",
+               cmd, sphf_pressure_name(pressure_form));
   if (diffusion_form == DIFFUSION_GIVEN && gravity[0] == 0.0 && gravity[1] == 0.0 &&
       gravity[2] == 0.0)
     error->all(FLERR,
@@ -876,24 +1049,24 @@ double PairSPHHarmonicVisc::init_one(int, int)
 
 void PairSPHHarmonicVisc::write_restart_settings(FILE *fp)
 {
-  const int ints[5] = {kernel_kind, pressure_form, viscosity_form, diffusion_form,
-                       mean_pressure_held};
+  const int ints[6] = {kernel_kind,    pressure_form,      viscosity_form,
+                       diffusion_form, mean_pressure_held, gradient_correction};
   // xi_given only checks the command line
   const double doubles[9] = {cut_global, xi,         eta_factor, delta,        gravity[0],
                              gravity[1], gravity[2], heating,    mean_pressure};
-  fwrite(ints, sizeof(int), 5, fp);
+  fwrite(ints, sizeof(int), 6, fp);
   fwrite(doubles, sizeof(double), 9, fp);
 }
 
 void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
 {
-  int ints[5];
+  int ints[6];
   double doubles[9];
   if (comm->me == 0) {
-    utils::sfread(FLERR, ints, sizeof(int), 5, fp, nullptr, error);
+    utils::sfread(FLERR, ints, sizeof(int), 6, fp, nullptr, error);
     utils::sfread(FLERR, doubles, sizeof(double), 9, fp, nullptr, error);
   }
-  MPI_Bcast(ints, 5, MPI_INT, 0, world);
+  MPI_Bcast(ints, 6, MPI_INT, 0, world);
   MPI_Bcast(doubles, 9, MPI_DOUBLE, 0, world);
   // the body force is read again from fix gravity at init
   diffusion_form = ints[3];
@@ -909,13 +1082,15 @@ void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
   heating = doubles[7];
   mean_pressure_held = ints[4];
   mean_pressure = doubles[8];
+  gradient_correction = ints[5];
 }
 
 /* ---------------------------------------------------------------------- */
 
 double PairSPHHarmonicVisc::memory_usage()
 {
-  return Pair::memory_usage() + (5.0 * nmax + 3.0 * nmax_shift) * sizeof(double);
+  return Pair::memory_usage() +
+      (5.0 * nmax + 3.0 * nmax_shift + 6.0 * nmax_gradient) * sizeof(double);
 }
 
 /* ----------------------------------------------------------------------
@@ -938,6 +1113,11 @@ int PairSPHHarmonicVisc::pack_forward_comm(int n, int *send, double *buf, int /*
                                            int * /*pbc*/)
 {
   int m = 0;
+  if (comm_stage == COMM_GRADIENT_INVERSE) {
+    for (int k = 0; k < n; k++)
+      for (int a = 0; a < 6; a++) buf[m++] = gradient_inverse[send[k]][a];
+    return m;
+  }
   for (int k = 0; k < n; k++)
     for (int d = 0; d < 3; d++) buf[m++] = atom->vest[send[k]][d];
   return m;
@@ -946,6 +1126,11 @@ int PairSPHHarmonicVisc::pack_forward_comm(int n, int *send, double *buf, int /*
 void PairSPHHarmonicVisc::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
+  if (comm_stage == COMM_GRADIENT_INVERSE) {
+    for (int i = first; i < first + n; i++)
+      for (int a = 0; a < 6; a++) gradient_inverse[i][a] = buf[m++];
+    return;
+  }
   for (int i = first; i < first + n; i++)
     for (int d = 0; d < 3; d++) atom->vest[i][d] = buf[m++];
 }

@@ -58,6 +58,19 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // mean_pressure
   int mean_pressure_held;
   double mean_pressure;
+  // 'correction gradient': the pressure force with the kernel gradient
+  // normalised per particle (B = M^-1, sph_consistent.h), so that the
+  // discrete pressure gradient has no first-order (moment) error; per atom
+  // (owned and ghost) B in sph_consistent.h's storage,
+  // I where the support is incomplete and for wall particles
+  int gradient_correction;
+  double **gradient_inverse;
+  int nmax_gradient;
+  // fluid atoms (all ranks, counted at setup) and those that kept the plain gradient
+  bigint gradient_fluid, gradient_plain;
+  // what pack_forward_comm / pack_reverse_comm carry
+  enum { COMM_VEST, COMM_SHIFT, COMM_GRADIENT_MOMENT, COMM_GRADIENT_INVERSE };
+  int comm_stage;
   // the density diffusion: Fourtakas's (Reece et al. 2024, eq 39) with the
   // run's body force (the default), Molteni's (Ng et al. 2020, eq 5: no
   // gravity), or Fourtakas's with a vector given in the command
@@ -89,7 +102,15 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // the heat term in eval(): on, per-atom conductivities, relax_rate
   // and the density diffusion
   // and fix sph/shift's sums
-  enum { HEAT_ON = 1, HEAT_ATOM_K = 2, HEAT_RELAX = 4, DIFFUSION = 8, SHIFT_SUMS = 16 };
+  // and the corrected pressure gradient
+  enum {
+    HEAT_ON = 1,
+    HEAT_ATOM_K = 2,
+    HEAT_RELAX = 4,
+    DIFFUSION = 8,
+    SHIFT_SUMS = 16,
+    GRADIENT = 32
+  };
   int shift_sums_wanted;
   double *shift_sum;    // per owned and ghost atom, 3 each
   int nmax_shift;
@@ -110,6 +131,7 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
                           double delz, void *thread);
 
   void update_atom_state();
+  template <int KERNEL, int DIM> void update_gradient_correction();
   double hold_mean_pressure();
   template <int KERNEL> void eval_kernel(int ifrom, int ito, const Rates &rates);
   template <int KERNEL, int PRESSURE> void eval_pressure(int ifrom, int ito, const Rates &rates);
