@@ -14,8 +14,8 @@
 # ranks), OUT (output directory, default ./out), RA, N, TEND, KERNEL, HDX, BG
 # (background pressure / (rho0 c0^2)), NZ (> 0: quasi-2-D, 3-D with a
 # periodic depth of NZ spacings), CONDUCTION (options of pair
-# sph/cleary/heat, e.g. "correction consistent"), MAX_NU_ERROR (exit 1 above
-# it, %).
+# sph/cleary/heat, e.g. "correction consistent"), GRADIENT (correction of
+# pair sph/harmonic/visc: none or gradient), MAX_NU_ERROR (exit 1 above it, %).
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../common.sh"
@@ -39,6 +39,7 @@ TEND=${TEND:-0}
 $run "$LMP" -in "$here/in.cavity" -var plugin "$PLUGIN" -var ra "$RA" -var n "$N" \
   -var tend "$TEND" -var kernel "${KERNEL:-wendland}" -var hdx "${HDX:-2.0}" \
   -var bg "${BG:-0.1}" -var nz "${NZ:-0}" -var conduction "${CONDUCTION:-mean harmonic}" \
+  -var gradient "${GRADIENT:-none}" \
   -var out cavity.dump -log log.cavity | grep -E "^Ra =|final"
 if [ "$RA" = 0 ]; then
   echo "without buoyancy the exact Nu is 1"
