@@ -104,6 +104,7 @@ def main():
     args = ap.parse_args()
     results = []
     failed_body = False
+    lattice_factor = lattice_viscosity_factor()
     for prefix in args.runs:
         run = read_run(prefix)
         window = (run["t"] >= args.skip) & (run["t"] <= args.until)
@@ -118,7 +119,7 @@ def main():
         drift = float(np.mean(rel[-fifth:]) - np.mean(rel[:fifth]))
         # the error less that of the lattice viscosity: the body's own
         # discretisation error, (dx / R)^2 times this
-        body = float(np.mean((1.0 + rel) * lattice_viscosity_factor() - 1.0))
+        body = float(np.mean((1.0 + rel) * lattice_factor - 1.0))
         n = run["R"] / run["dx"]
         print(f"{prefix}: {run['particles']} particles, R = {run['R']:.6g} m ({n:.2f} dx), l/R = "
               f"{0.5 * run['W'] / run['R']:.4f}, Re = {Re:.3f}; drag/(mu U) {coeff[0]:.5f} .. {coeff[-1]:.5f} "
@@ -128,7 +129,7 @@ def main():
               f"largest {worst:.4f}, drift {drift:+.4f}; |x - W/2| <= {np.max(np.abs(run['x'] - 0.5 * run['W'])):.1e} m, "
               f"|spin| <= {np.max(np.abs(run['spin'])):.1e} 1/s")
         print(f"  mean error {np.mean(rel):+.4f}; with the lattice's viscosity "
-              f"{lattice_viscosity_factor():.4f} mu: {body:+.4f} = {body * n * n:.3f} (dx/R)^2")
+              f"{lattice_factor:.4f} mu: {body:+.4f} = {body * n * n:.3f} (dx/R)^2")
         results.append((run, window, U, rel, worst, drift))
         if args.max_body is not None and abs(body) > args.max_body / (n * n):
             print(f"FAIL: {prefix}: the error less the lattice's, {body:+.4f}, is above "

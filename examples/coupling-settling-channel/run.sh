@@ -1,7 +1,7 @@
 #!/bin/sh
 # A heavy disc (a rigid body of fix rigid) settling in a closed channel of
 # very viscous oil, against the Stokes drag of tools/cylinder_stokes.py
-# (work in progress: see README.md).
+# (README.md).
 #   ./run.sh          R = 4, 6, 8 and 12 dx with the oil weightless (weight body), R = 4 and
 #                     6 dx with gravity on everything (weight all), 0.15 s after the release,
 #                     PNG; each weight-body run's error, less the lattice error of the viscous

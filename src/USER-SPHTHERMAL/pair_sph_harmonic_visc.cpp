@@ -49,10 +49,10 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
                   "viscosities and equations of state come from fix sph/materials"),
     pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI), xi(SPHF_XI_CLEARY), delta(0.1),
     heating(0.0), mean_pressure_held(0), mean_pressure(0.0), gradient_correction(0),
-    gradient_inverse(nullptr), nmax_gradient(0), gradient_fluid(0), gradient_plain(0),
-    comm_stage(COMM_VEST), diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0),
-    body_force(nullptr), eta2(0.0), materials(nullptr), viscosity_varies(0), wall_groupbit(0),
-    pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr), density(nullptr),
+    gradient_inverse(nullptr), nmax_gradient(0), comm_stage(COMM_VEST),
+    diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr), eta2(0.0),
+    materials(nullptr), viscosity_varies(0), wall_groupbit(0), pressure(nullptr),
+    viscosity(nullptr), mass_of(nullptr), volume(nullptr), density(nullptr),
     diffused_density(nullptr), diffusion_rho(nullptr), thermal_expansion(0), nmax(0), heat(nullptr),
     shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0)
 {
@@ -108,31 +108,20 @@ void PairSPHHarmonicVisc::begin_compute()
   update_atom_state();
   if (update->setupflag) check_neighbours();
   if (gradient_correction) {
-    const int dim3 = domain->dimension == 3;
     switch (kernel_kind) {
       case SPHK_LUCY:
-        dim3 ? update_gradient_correction<SPHK_LUCY, 3>()
-             : update_gradient_correction<SPHK_LUCY, 2>();
+        update_gradient_correction<SPHK_LUCY>();
         break;
       case SPHK_CUBIC:
-        dim3 ? update_gradient_correction<SPHK_CUBIC, 3>()
-             : update_gradient_correction<SPHK_CUBIC, 2>();
+        update_gradient_correction<SPHK_CUBIC>();
         break;
       case SPHK_QUINTIC:
-        dim3 ? update_gradient_correction<SPHK_QUINTIC, 3>()
-             : update_gradient_correction<SPHK_QUINTIC, 2>();
+        update_gradient_correction<SPHK_QUINTIC>();
         break;
       case SPHK_WENDLAND:
-        dim3 ? update_gradient_correction<SPHK_WENDLAND, 3>()
-             : update_gradient_correction<SPHK_WENDLAND, 2>();
+        update_gradient_correction<SPHK_WENDLAND>();
         break;
     }
-    if (update->setupflag && comm->me == 0)
-      utils::logmesg(lmp,
-                     "Pair style sph/harmonic/visc: correction gradient on {} fluid atoms; {} keep "
-                     "the plain gradient (incomplete kernel support: free surfaces or too few "
-                     "neighbours)\n",
-                     gradient_fluid - gradient_plain, gradient_plain);
   }
   // fix gravity may vary its acceleration in time
   if (diffusion_form == DIFFUSION_BODY_FORCE && body_force) {
@@ -256,8 +245,9 @@ void PairSPHHarmonicVisc::unpack_reverse_comm(int n, int *list_send, double *buf
 // square lattice, about 0.5 in the first row of a free surface
 static constexpr double FULL_SUPPORT = 0.7;
 
-template <int KERNEL, int DIM> void PairSPHHarmonicVisc::update_gradient_correction()
+template <int KERNEL> void PairSPHHarmonicVisc::update_gradient_correction()
 {
+  const int dim = domain->dimension;
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const int newton_pair = force->newton_pair;
   if (atom->nmax > nmax_gradient) {
@@ -285,7 +275,7 @@ template <int KERNEL, int DIM> void PairSPHHarmonicVisc::update_gradient_correct
       const int wall_j = mask[j] & wall_groupbit;
       if (wall_i && wall_j) continue;
       const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1],
-                             (DIM == 3) ? x[i][2] - x[j][2] : 0.0};
+                             (dim == 3) ? x[i][2] - x[j][2] : 0.0};
       const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
       if (rsq >= cutsq_kernel) continue;
       const double g = -dwdr_r_scale * sphk_df_over_q(KERNEL, sqrt(rsq) * inv_h);
@@ -300,8 +290,8 @@ template <int KERNEL, int DIM> void PairSPHHarmonicVisc::update_gradient_correct
     double inverse[6] = {1.0, 1.0, 1.0, 0.0, 0.0, 0.0};
     if (!(mask[i] & wall_groupbit)) {
       fluid++;
-      const int full = sphc_sym_min_eigen(DIM, moment[i]) >= FULL_SUPPORT &&
-          sphc_sym_inverse(DIM, moment[i], inverse) > 0.0;
+      const int full = sphc_sym_min_eigen(dim, moment[i]) >= FULL_SUPPORT &&
+          sphc_sym_inverse(dim, moment[i], inverse) > 0.0;
       if (!full) {
         plain++;
         for (int k = 0; k < 6; k++) inverse[k] = (k < 3) ? 1.0 : 0.0;
@@ -314,8 +304,12 @@ template <int KERNEL, int DIM> void PairSPHHarmonicVisc::update_gradient_correct
   if (update->setupflag) {
     bigint mine[2] = {plain, fluid}, all[2];
     MPI_Allreduce(mine, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
-    gradient_plain = all[0];
-    gradient_fluid = all[1];
+    if (comm->me == 0)
+      utils::logmesg(lmp,
+                     "Pair style sph/harmonic/visc: correction gradient on {} fluid atoms; {} keep "
+                     "the plain gradient (incomplete kernel support: free surfaces or too few "
+                     "neighbours)\n",
+                     all[1] - all[0], all[0]);
   }
 }
 
@@ -630,7 +624,8 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
       // between two wall particles the flow changes nothing: fix sph/wall/adami
       // sets their density and velocity every step and they are not
       // integrated with fix sph; heat still flows
-      if (wall_i && (mask[j] & wall_groupbit)) {
+      const int wall_j = mask[j] & wall_groupbit;
+      if (wall_i && wall_j) {
         if (TERMS & HEAT_ON)
           add_heat(j, rsq * dwdr_r,
                    1.0 / sphc_cleary_denominator(rho_i, term.rho[j], rsq, term.eta2));
@@ -647,16 +642,14 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
           (TERMS & HEAT_ON) ? sphc_cleary_denominator(rho_i, term.rho[j], rsq, term.eta2) : 1.0;
       sphf_pair(PRESSURE, VISCOSITY, xi, &a, &b, rsq, dwdr_r, eta2, vr_est, heat_den, &s_r, &s_rv,
                 &s_v, &c_i, &c_j, &inv_heat);
-      double fx = s_r * delx + s_v * dvx;
-      double fy = s_r * dely + s_v * dvy;
-      double fz = s_r * delz + s_v * dvz;
+      double fx, fy, fz;
       if (TERMS & GRADIENT) {
         // the pressure force along B grad W: the mean of the two particles'
         // B for a fluid pair, the fluid particle's with a wall (one matrix
         // per pair: the force stays antisymmetric and momentum is kept)
         const double del[3] = {delx, dely, delz};
         double b_del[3];
-        if (wall_i || (mask[j] & wall_groupbit))
+        if (wall_i || wall_j)
           sphc_sym_apply(gradient_inverse[wall_i ? j : i], del, b_del);
         else {
           double b_del_j[3];
@@ -664,10 +657,14 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
           sphc_sym_apply(gradient_inverse[j], del, b_del_j);
           for (int k = 0; k < 3; k++) b_del[k] = 0.5 * (b_del[k] + b_del_j[k]);
         }
-        const double s_p = s_r - s_rv;
-        fx += s_p * (b_del[0] - delx);
-        fy += s_p * (b_del[1] - dely);
-        if (DIM == 3) fz += s_p * (b_del[2] - delz);
+        const double s_p = s_r - s_rv;    // the pressure's share of s_r
+        fx = s_p * b_del[0] + s_rv * delx + s_v * dvx;
+        fy = s_p * b_del[1] + s_rv * dely + s_v * dvy;
+        fz = s_p * b_del[2] + s_rv * delz + s_v * dvz;
+      } else {
+        fx = s_r * delx + s_v * dvx;
+        fy = s_r * dely + s_v * dvy;
+        fz = s_r * delz + s_v * dvz;
       }
       // fix sph/shift's sums: grad_i W_ij = dW/dr / r (r_i - r_j)
       const double shift_ij = (TERMS & SHIFT_SUMS) ? dwdr_r * b.vol : 0.0;
@@ -687,7 +684,7 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
       // density diffusion (Ng et al. 2020, eqs 5-6; Fourtakas's with
       // hydrostatic), not across walls (the papers set rho_b = rho_a there)
       double diffusion_j = 0.0;
-      if ((TERMS & DIFFUSION) && !wall_i && !(mask[j] & wall_groupbit)) {
+      if ((TERMS & DIFFUSION) && !wall_i && !wall_j) {
         const sphe_eos *const eos_j = eos_of[type[j]];
         // one coefficient per pair: the mean speed of sound of the two
         const double delta_h_c0 = delta_h_half * (eos_i->c0 + eos_j->c0);

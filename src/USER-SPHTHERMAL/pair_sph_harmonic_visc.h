@@ -66,8 +66,6 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   int gradient_correction;
   double **gradient_inverse;
   int nmax_gradient;
-  // fluid atoms (all ranks, counted at setup) and those that kept the plain gradient
-  bigint gradient_fluid, gradient_plain;
   // what pack_forward_comm / pack_reverse_comm carry
   enum { COMM_VEST, COMM_SHIFT, COMM_GRADIENT_MOMENT, COMM_GRADIENT_INVERSE };
   int comm_stage;
@@ -131,7 +129,7 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
                           double delz, void *thread);
 
   void update_atom_state();
-  template <int KERNEL, int DIM> void update_gradient_correction();
+  template <int KERNEL> void update_gradient_correction();
   double hold_mean_pressure();
   template <int KERNEL> void eval_kernel(int ifrom, int ito, const Rates &rates);
   template <int KERNEL, int PRESSURE> void eval_pressure(int ifrom, int ito, const Rates &rates);
