@@ -31,6 +31,9 @@
 
 using namespace LAMMPS_NS;
 
+// the layout of the restart settings: raise it when a setting is added
+static constexpr int RESTART_VERSION = 1;
+
 /* ---------------------------------------------------------------------- */
 
 PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
@@ -1102,6 +1105,7 @@ double PairSPHClearyHeat::init_one(int i, int j)
 
 void PairSPHClearyHeat::write_restart_settings(FILE *fp)
 {
+  SPHCheck::write_restart_head(fp, RESTART_VERSION);
   fwrite(&kernel_kind, sizeof(int), 1, fp);
   fwrite(&mean, sizeof(int), 1, fp);
   fwrite(&cut_global, sizeof(double), 1, fp);
@@ -1113,6 +1117,7 @@ void PairSPHClearyHeat::write_restart_settings(FILE *fp)
 
 void PairSPHClearyHeat::read_restart_settings(FILE *fp)
 {
+  SPHCheck::read_restart_head(lmp, fp, "pair sph/cleary/heat", RESTART_VERSION);
   if (comm->me == 0) {
     utils::sfread(FLERR, &kernel_kind, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &mean, sizeof(int), 1, fp, nullptr, error);

@@ -42,6 +42,9 @@ using namespace LAMMPS_NS;
 
 static const char cmd[] = "pair_style sph/harmonic/visc";
 
+// the layout of the restart settings: raise it when a setting is added
+static constexpr int RESTART_VERSION = 1;
+
 /* ---------------------------------------------------------------------- */
 
 PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
@@ -1051,12 +1054,14 @@ void PairSPHHarmonicVisc::write_restart_settings(FILE *fp)
   // xi_given only checks the command line
   const double doubles[9] = {cut_global, xi,         eta_factor, delta,        gravity[0],
                              gravity[1], gravity[2], heating,    mean_pressure};
+  SPHCheck::write_restart_head(fp, RESTART_VERSION);
   fwrite(ints, sizeof(int), 6, fp);
   fwrite(doubles, sizeof(double), 9, fp);
 }
 
 void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
 {
+  SPHCheck::read_restart_head(lmp, fp, "pair sph/harmonic/visc", RESTART_VERSION);
   int ints[6];
   double doubles[9];
   if (comm->me == 0) {

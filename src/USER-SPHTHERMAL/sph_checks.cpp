@@ -14,6 +14,7 @@
 #include "group.h"
 #include "modify.h"
 #include "update.h"
+#include "utils.h"
 
 #include <cmath>
 #include <cstring>
@@ -119,6 +120,40 @@ bigint SPHCheck::group_count(LAMMPS *lmp, int groupbit)
     if (mask[i] & groupbit) local++;
   MPI_Allreduce(&local, &all, 1, MPI_LMP_BIGINT, MPI_SUM, lmp->world);
   return all;
+}
+
+/* ---------------------------------------------------------------------- */
+
+// "SPTH": no setting a head-less file starts with (a kernel or form index)
+static constexpr int RESTART_TAG = 0x53505448;
+
+void SPHCheck::write_restart_head(FILE *fp, int version)
+{
+  const int head[2] = {RESTART_TAG, version};
+  fwrite(head, sizeof(int), 2, fp);
+}
+
+void SPHCheck::read_restart_head(LAMMPS *lmp, FILE *fp, const char *who, int version)
+{
+  int head[2] = {0, 0};
+  if (lmp->comm->me == 0) {
+    // a head-less file's first setting is read as the tag; it cannot match
+    utils::sfread(FLERR, head, sizeof(int), 1, fp, nullptr, lmp->error);
+    if (head[0] == RESTART_TAG)
+      utils::sfread(FLERR, head + 1, sizeof(int), 1, fp, nullptr, lmp->error);
+  }
+  MPI_Bcast(head, 2, MPI_INT, 0, lmp->world);
+  if (head[0] != RESTART_TAG)
+    lmp->error->all(FLERR,
+                    "{}: the restart file's settings have no version head: it was written "
+                    "by a USER-SPHTHERMAL older than this one, whose settings it cannot "
+                    "read; start from a data file (write_data) of that run instead",
+                    who);
+  if (head[1] != version)
+    lmp->error->all(FLERR,
+                    "{}: the restart file's settings are of version {}, this build reads "
+                    "version {}; start from a data file (write_data) of that run instead",
+                    who, head[1], version);
 }
 
 /* ---------------------------------------------------------------------- */

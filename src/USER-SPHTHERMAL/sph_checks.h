@@ -8,6 +8,7 @@
 
 #include "lmptype.h"
 
+#include <cstdio>
 #include <initializer_list>
 #include <string>
 
@@ -52,6 +53,14 @@ namespace SPHCheck {
   int groups_overlap(LAMMPS *lmp, int groupbit1, int groupbit2);
   // number of atoms of a group (collective)
   bigint group_count(LAMMPS *lmp, int groupbit);
+
+  // The head of a style's restart settings: a tag and the version of the
+  // settings' layout, raised whenever a setting is added, so that a file
+  // with another layout is refused instead of misread. write: rank 0's
+  // file only; read: collective, an error naming the style when the file
+  // has no head (written before heads existed) or another version.
+  void write_restart_head(FILE *fp, int version);
+  void read_restart_head(LAMMPS *lmp, FILE *fp, const char *who, int version);
 
 }    // namespace SPHCheck
 }    // namespace LAMMPS_NS
