@@ -15,7 +15,8 @@
 # (background pressure / (rho0 c0^2)), NZ (> 0: quasi-2-D, 3-D with a
 # periodic depth of NZ spacings), CONDUCTION (options of pair
 # sph/cleary/heat, e.g. "correction consistent"), GRADIENT (correction of
-# pair sph/harmonic/visc: none or gradient), MAX_NU_ERROR (exit 1 above it, %).
+# pair sph/harmonic/visc: none or gradient), ACOUSTIC (the acoustic
+# coefficient of fix sph/dt/reset), MAX_NU_ERROR (exit 1 above it, %).
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../common.sh"
@@ -24,7 +25,7 @@ if [ "${1:-}" = air ]; then
   # Reece et al. 2024, section 3.2, in SI units (in.air): Ra = 1.203e5, Pr = 0.705
   $run "$LMP" -in "$here/in.air" -var plugin "$PLUGIN" -var n "${N:-40}" \
     -var tstar "${TSTAR:-0.5}" -var seconds "${END_SECONDS:-0}" \
-    -var delta "${DELTA:-0.1}" -var out air.dump -log log.air | grep -E "^Reece|^at t|final"
+    -var delta "${DELTA:-0.1}" -var acoustic "${ACOUSTIC:-0.1}" -var out air.dump -log log.air | grep -E "^Reece|^at t|final"
   "$PYTHON" "$here/analyse.py" air.dump --log log.air --ra 1.2033e5 --pr 0.7051 \
     --si 0.0386 2.13594e-5 283 20 --png air.png
   exit 0
@@ -39,7 +40,7 @@ TEND=${TEND:-0}
 $run "$LMP" -in "$here/in.cavity" -var plugin "$PLUGIN" -var ra "$RA" -var n "$N" \
   -var tend "$TEND" -var kernel "${KERNEL:-wendland}" -var hdx "${HDX:-2.0}" \
   -var bg "${BG:-0.1}" -var nz "${NZ:-0}" -var conduction "${CONDUCTION:-mean harmonic}" \
-  -var gradient "${GRADIENT:-none}" \
+  -var gradient "${GRADIENT:-none}" -var acoustic "${ACOUSTIC:-0.1}" \
   -var out cavity.dump -log log.cavity | grep -E "^Ra =|final"
 if [ "$RA" = 0 ]; then
   echo "without buoyancy the exact Nu is 1"
