@@ -16,12 +16,11 @@ in the file by its tag. Checked, for each pair:
 import argparse
 import os
 import struct
-import subprocess
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphtest import finish, lammps_arguments  # noqa: E402
+from sphtest import finish, lammps_arguments, run_script  # noqa: E402
 
 WRITE = """plugin load {plugin}
 units si
@@ -39,7 +38,7 @@ sph/set all materials spacing 0.01 temperature 1.0
 pair_style hybrid/overlay sph/harmonic/visc wendland 0.03 sph/cleary/heat wendland 0.03
 pair_coeff * * sph/harmonic/visc
 pair_coeff * * sph/cleary/heat
-write_restart written.restart
+write_restart {path}
 """
 
 READ = """plugin load {plugin}
@@ -51,23 +50,15 @@ PAIRS = ["pair sph/harmonic/visc", "pair sph/cleary/heat"]
 TAG = struct.pack("i", 0x53505448)
 
 
-def run(lmp, text, cwd):
-    path = os.path.join(cwd, "in.script")
-    with open(path, "w") as f:
-        f.write(text)
-    proc = subprocess.run([lmp, "-log", "none", "-in", path], cwd=cwd, capture_output=True,
-                          text=True)
-    return proc.returncode, proc.stdout + proc.stderr
-
-
 def main():
     a = lammps_arguments(argparse.ArgumentParser(description=__doc__), mpi=False).parse_args()
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
-        code, out = run(a.lmp, WRITE.format(plugin=a.plugin), tmp)
+        written = os.path.join(tmp, "written.restart")
+        code, out = run_script(a.lmp, WRITE.format(plugin=a.plugin, path=written))
         if code != 0:
             sys.exit("FAIL: writing the restart:\n" + out[-2000:])
-        data = open(os.path.join(tmp, "written.restart"), "rb").read()
+        data = open(written, "rb").read()
         heads = []
         at = data.find(TAG)
         while at >= 0:
@@ -81,7 +72,7 @@ def main():
             path = os.path.join(tmp, name)
             with open(path, "wb") as f:
                 f.write(content)
-            code, out = run(a.lmp, READ.format(plugin=a.plugin, path=path), tmp)
+            code, out = run_script(a.lmp, READ.format(plugin=a.plugin, path=path))
             if expect is None:
                 ok = code == 0 and "READ BACK" in out
             else:
