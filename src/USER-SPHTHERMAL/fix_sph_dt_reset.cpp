@@ -45,6 +45,9 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
+// the layout of the restart state: raise it when a value is added
+static constexpr int RESTART_VERSION = 1;
+
 static const char cmd[] = "fix sph/dt/reset";
 
 static const char *limit_name(int active)
@@ -454,15 +457,13 @@ void FixSPHDtReset::write_restart(FILE *fp)
     const double elapsed =
         update->atime + (double) (update->ntimestep - update->atimestep) * update->dt;
     const double list[2] = {elapsed, update->dt};
-    int size = 2 * sizeof(double);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), 2, fp);
+    SPHCheck::write_restart_state(fp, RESTART_VERSION, list, 2);
   }
 }
 
 void FixSPHDtReset::restart(char *buf)
 {
-  const double *list = (const double *) buf;
+  const double *list = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION);
   update->atime = list[0];
   update->atimestep = update->ntimestep;
 }

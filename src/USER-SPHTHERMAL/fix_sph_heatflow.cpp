@@ -22,6 +22,9 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
+// the layout of the restart state: raise it when a value is added
+static constexpr int RESTART_VERSION = 1;
+
 static const char cmd[] = "fix sph/heatflow";
 
 /* ----------------------------------------------------------------------
@@ -123,14 +126,10 @@ double FixSPHHeatflow::compute_vector(int n)
 
 void FixSPHHeatflow::write_restart(FILE *fp)
 {
-  if (comm->me == 0) {
-    int size = sizeof(double);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(&energy, sizeof(double), 1, fp);
-  }
+  if (comm->me == 0) SPHCheck::write_restart_state(fp, RESTART_VERSION, &energy, 1);
 }
 
 void FixSPHHeatflow::restart(char *buf)
 {
-  energy = ((double *) buf)[0];
+  energy = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION)[0];
 }

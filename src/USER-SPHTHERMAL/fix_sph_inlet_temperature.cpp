@@ -50,6 +50,9 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
+// the layout of the restart state: raise it when a value is added
+static constexpr int RESTART_VERSION = 1;
+
 static const char cmd[] = "fix sph/inlet/temperature";
 
 /* ----------------------------------------------------------------------
@@ -423,15 +426,13 @@ void FixSPHInletTemperature::write_restart(FILE *fp)
 {
   if (comm->me == 0) {
     const double state[2] = {energy_reset, energy_plane};
-    const int size = sizeof(state);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(state, sizeof(double), 2, fp);
+    SPHCheck::write_restart_state(fp, RESTART_VERSION, state, 2);
   }
 }
 
 void FixSPHInletTemperature::restart(char *buf)
 {
-  const double *state = (const double *) buf;
+  const double *state = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION);
   energy_reset = state[0];
   energy_plane = state[1];
 }

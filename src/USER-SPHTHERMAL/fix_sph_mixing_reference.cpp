@@ -13,11 +13,15 @@
 #include "comm.h"
 #include "error.h"
 #include "memory.h"
+#include "sph_checks.h"
 #include "update.h"
 
 #include <cstring>
 
 using namespace LAMMPS_NS;
+
+// the layout of the restart state: raise it when a value is added
+static constexpr int RESTART_VERSION = 1;
 
 static constexpr int SHIFT_BITS = 10;
 static constexpr int SHIFT_MASK = (1 << SHIFT_BITS) - 1;
@@ -182,14 +186,12 @@ void FixSPHMixingReference::write_restart(FILE *fp)
   if (comm->me != 0) return;
   const double elapsed = restart_pending ? elapsed_restart : now() - time0;
   const double list[5] = {(double) captured, (double) width, elapsed, entropy0[0], entropy0[1]};
-  const int size = sizeof(list);
-  fwrite(&size, sizeof(int), 1, fp);
-  fwrite(list, sizeof(double), 5, fp);
+  SPHCheck::write_restart_state(fp, RESTART_VERSION, list, 5);
 }
 
 void FixSPHMixingReference::restart(char *buf)
 {
-  const double *list = (const double *) buf;
+  const double *list = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION);
   captured = (int) list[0];
   resize((int) list[1]);
   elapsed_restart = list[2];

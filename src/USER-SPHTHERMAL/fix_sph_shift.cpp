@@ -61,6 +61,9 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
+// the layout of the restart state: raise it when a value is added
+static constexpr int RESTART_VERSION = 1;
+
 static const char cmd[] = "fix sph/shift";
 
 // the spacing of a particle of this volume (sqrt and cbrt are cheaper than pow)
@@ -532,16 +535,12 @@ double FixSPHShift::compute_vector(int n)
 
 void FixSPHShift::write_restart(FILE *fp)
 {
-  if (comm->me == 0) {
-    const int size = sizeof(double);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(&energy, sizeof(double), 1, fp);
-  }
+  if (comm->me == 0) SPHCheck::write_restart_state(fp, RESTART_VERSION, &energy, 1);
 }
 
 void FixSPHShift::restart(char *buf)
 {
-  energy = *(double *) buf;
+  energy = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION)[0];
 }
 
 /* ----------------------------------------------------------------------

@@ -23,6 +23,9 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
+// the layout of the restart state: raise it when a value is added
+static constexpr int RESTART_VERSION = 1;
+
 /* ---------------------------------------------------------------------- */
 
 FixSPHSurfaceFlux::FixSPHSurfaceFlux(LAMMPS *lmp, int narg, char **arg) :
@@ -155,14 +158,10 @@ double FixSPHSurfaceFlux::compute_scalar()
 
 void FixSPHSurfaceFlux::write_restart(FILE *fp)
 {
-  if (comm->me == 0) {
-    int size = sizeof(double);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(&energy, sizeof(double), 1, fp);
-  }
+  if (comm->me == 0) SPHCheck::write_restart_state(fp, RESTART_VERSION, &energy, 1);
 }
 
 void FixSPHSurfaceFlux::restart(char *buf)
 {
-  energy = ((double *) buf)[0];
+  energy = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION)[0];
 }

@@ -38,6 +38,9 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
+// the layout of the restart state: raise it when a value is added
+static constexpr int RESTART_VERSION = 1;
+
 static const char cmd[] = "fix sph/wall/adami";
 
 /* ---------------------------------------------------------------------- */
@@ -457,14 +460,12 @@ void FixSPHWallAdami::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
   const double state[2] = {(double) sampled, remaining_sampled};
-  const int size = sizeof(state);
-  fwrite(&size, sizeof(int), 1, fp);
-  fwrite(state, sizeof(double), 2, fp);
+  SPHCheck::write_restart_state(fp, RESTART_VERSION, state, 2);
 }
 
 void FixSPHWallAdami::restart(char *buf)
 {
-  const double *state = (const double *) buf;
+  const double *state = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION);
   sampled = (int) state[0];
   remaining_sampled = state[1];
 }

@@ -14,12 +14,16 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "sph_checks.h"
 #include "update.h"
 
 #include <cmath>
 #include <cstring>
 
 using namespace LAMMPS_NS;
+
+// the layout of the restart state: raise it when a value is added
+static constexpr int RESTART_VERSION = 1;
 
 /* ---------------------------------------------------------------------- */
 
@@ -120,16 +124,12 @@ double FixSPHWallTally::compute_vector(int n)
 
 void FixSPHWallTally::write_restart(FILE *fp)
 {
-  if (comm->me == 0) {
-    int size = sizeof(double);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(&energy, sizeof(double), 1, fp);
-  }
+  if (comm->me == 0) SPHCheck::write_restart_state(fp, RESTART_VERSION, &energy, 1);
 }
 
 void FixSPHWallTally::restart(char *buf)
 {
-  energy = ((double *) buf)[0];
+  energy = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION)[0];
 }
 
 /* ---------------------------------------------------------------------- */

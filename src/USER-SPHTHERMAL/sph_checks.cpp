@@ -133,6 +133,23 @@ void SPHCheck::write_restart_head(FILE *fp, int version)
   fwrite(head, sizeof(int), 2, fp);
 }
 
+// the errors for a head read as (tag, version); collective
+static void check_restart_head(LAMMPS *lmp, const int *head, const std::string &who,
+                               const char *what, int version)
+{
+  if (head[0] != RESTART_TAG)
+    lmp->error->all(FLERR,
+                    "{}: the restart file's {} have no version head: it was written by a "
+                    "USER-SPHTHERMAL older than this one, whose layout it cannot read; "
+                    "start from a data file (write_data) of that run instead",
+                    who, what);
+  if (head[1] != version)
+    lmp->error->all(FLERR,
+                    "{}: the restart file's {} are of version {}, this build reads "
+                    "version {}; start from a data file (write_data) of that run instead",
+                    who, what, head[1], version);
+}
+
 void SPHCheck::read_restart_head(LAMMPS *lmp, FILE *fp, const char *who, int version)
 {
   int head[2] = {0, 0};
@@ -143,17 +160,25 @@ void SPHCheck::read_restart_head(LAMMPS *lmp, FILE *fp, const char *who, int ver
       utils::sfread(FLERR, head + 1, sizeof(int), 1, fp, nullptr, lmp->error);
   }
   MPI_Bcast(head, 2, MPI_INT, 0, lmp->world);
-  if (head[0] != RESTART_TAG)
-    lmp->error->all(FLERR,
-                    "{}: the restart file's settings have no version head: it was written "
-                    "by a USER-SPHTHERMAL older than this one, whose settings it cannot "
-                    "read; start from a data file (write_data) of that run instead",
-                    who);
-  if (head[1] != version)
-    lmp->error->all(FLERR,
-                    "{}: the restart file's settings are of version {}, this build reads "
-                    "version {}; start from a data file (write_data) of that run instead",
-                    who, head[1], version);
+  check_restart_head(lmp, head, who, "settings", version);
+}
+
+void SPHCheck::write_restart_state(FILE *fp, int version, const double *state, int n)
+{
+  const int size = 2 * sizeof(int) + n * sizeof(double);
+  fwrite(&size, sizeof(int), 1, fp);
+  write_restart_head(fp, version);
+  fwrite(state, sizeof(double), n, fp);
+}
+
+const double *SPHCheck::read_restart_state(LAMMPS *lmp, Fix *fix, const char *buf, int version)
+{
+  // every rank holds the same block, so the check needs no communication
+  int head[2];
+  memcpy(head, buf, sizeof(head));
+  check_restart_head(lmp, head, std::string("Fix ") + fix->style + " " + fix->id, "state data",
+                     version);
+  return (const double *) (buf + sizeof(head));
 }
 
 /* ---------------------------------------------------------------------- */

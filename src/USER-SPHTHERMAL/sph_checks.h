@@ -62,6 +62,14 @@ namespace SPHCheck {
   void write_restart_head(FILE *fp, int version);
   void read_restart_head(LAMMPS *lmp, FILE *fp, const char *who, int version);
 
+  // A fix's global restart state (n doubles) behind the same head, as the
+  // one block LAMMPS keeps per fix. write: rank 0's file only; read: the
+  // state after the head, or the same errors naming the fix (its style and
+  // ID); a head-less block holds at least one double, so its first 8 bytes
+  // can be read as a head.
+  void write_restart_state(FILE *fp, int version, const double *state, int n);
+  const double *read_restart_state(LAMMPS *lmp, Fix *fix, const char *buf, int version);
+
 }    // namespace SPHCheck
 }    // namespace LAMMPS_NS
 

@@ -1,16 +1,19 @@
-"""The pairs' restart settings carry a version head, and a file whose head
+"""The restart data of the package's styles carry a version head: the
+settings of the pairs and the global state of the fixes. A file whose head
 is missing (written before heads existed) or of another version is refused
-with an error naming the pair, not misread.
+with an error naming the style, not misread.
 
 usage: test_restart_head.py --lmp LMP --plugin PLUGIN
 
-A restart of pair hybrid/overlay sph/harmonic/visc + sph/cleary/heat is
-written once; the head of each pair (tag "SPTH", then the version) is found
-in the file by its tag. Checked, for each pair:
-- the file as written reads back (the control);
-- the version raised by one: the error names the pair and both versions;
-- the head cut out (the layout of a file from before heads): the error names
-  the pair and says the file has no version head.
+A restart of pair hybrid/overlay sph/harmonic/visc + sph/cleary/heat and of
+every fix of the package that keeps a global state is written once; each
+head (tag "SPTH", then the version) is found in the file by its tag and its
+owner read from the style name written in front of it. Checked, for each:
+- the file as written reads back, the fixes defined again (the control);
+- the version raised by one: the error names the style and both versions;
+- the head cut out (the layout of a file from before heads; for a fix the
+  size of its block shrunk with it): the error names the style and says the
+  file has no version head.
 """
 
 import argparse
@@ -22,32 +25,80 @@ import tempfile
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
 from sphtest import finish, lammps_arguments, run_script  # noqa: E402
 
+# the fixes, defined alike before write_restart and after read_restart (the
+# fix's restart() reads its state when it is defined again)
+FIXES = """fix materials all sph/materials type 1 conductivity constant 1.0 cv 1.0 &
+    viscosity constant 1e-3 eos linear 1.0 rho0 1000
+fix integrate moving sph
+fix held right sph/stationary
+fix adami wall sph/wall/adami
+fix hot wall sph/wall/dirichlet 1.0
+fix dt moving sph/dt/reset 1
+fix into right sph/heatflow wall
+fix flux right sph/surface/flux flux 1.0 spacing 0.01
+fix shift moving sph/shift skillen 2.0
+fix inlet moving sph/inlet/temperature 1.0
+compute mix moving sph/mixing top
+"""
+
 WRITE = """plugin load {plugin}
 units si
 dimension 2
 atom_style sph
 boundary p p p
 lattice sq 0.01
-region box block 0 4 0 4 -0.5 0.5
+region box block 0 8 0 6 -0.5 0.5
 create_box 1 box
 create_atoms 1 box
 mass * 0.1
-fix materials all sph/materials type 1 conductivity constant 1.0 cv 1.0 &
-    viscosity constant 1e-3 eos linear 1.0 rho0 1000
-sph/set all materials spacing 0.01 temperature 1.0
+region left block INF 0.5 INF INF INF INF
+region right block 6.5 INF INF INF INF INF
+region upper block INF INF 3 INF INF INF
+group wall region left
+group right region right
+group top region upper
+group fixed union wall right
+group moving subtract all fixed
+""" + FIXES + """sph/set all materials spacing 0.01 temperature 1.0
 pair_style hybrid/overlay sph/harmonic/visc wendland 0.03 sph/cleary/heat wendland 0.03
 pair_coeff * * sph/harmonic/visc
 pair_coeff * * sph/cleary/heat
+thermo_style custom step c_mix
+run 2
 write_restart {path}
 """
 
 READ = """plugin load {plugin}
 read_restart {path}
-print "READ BACK"
+""" + FIXES + """print "READ BACK"
 """
 
-PAIRS = ["pair sph/harmonic/visc", "pair sph/cleary/heat"]
+# the style names whose data carry a head, as the file spells them
+STYLES = ["sph/harmonic/visc", "sph/cleary/heat", "sph/wall/adami", "sph/wall/dirichlet",
+          "sph/dt/reset", "sph/heatflow", "sph/surface/flux", "sph/shift",
+          "sph/inlet/temperature", "SPH/MIXING/REFERENCE"]
 TAG = struct.pack("i", 0x53505448)
+
+
+def string_before(data, end):
+    """The string LAMMPS wrote (length with its NUL, then the characters)
+    that ends just before 'end', and where its length starts."""
+    for length in range(2, 100):
+        start = end - length
+        if start >= 4 and data[end - 1] == 0 and struct.unpack_from("i", data, start - 4)[0] == length:
+            return data[start:end - 1].decode(), start - 4
+    return None, None
+
+
+def owner(data, at):
+    """'pair STYLE' for a pair's settings (its style name just in front), or
+    'Fix STYLE ID' for a fix's state (id, style, then the block's size)."""
+    style, start = string_before(data, at - 4)
+    if style is not None:
+        fix_id, _ = string_before(data, start)
+        return f"Fix {style} {fix_id}", True
+    style, _ = string_before(data, at)
+    return ("pair " + style if style else None), False
 
 
 def main():
@@ -64,8 +115,10 @@ def main():
         while at >= 0:
             heads.append(at)
             at = data.find(TAG, at + 1)
-        if len(heads) != len(PAIRS):
-            sys.exit(f"FAIL: {len(heads)} heads in the restart file, expected {len(PAIRS)}")
+        owners = [owner(data, at) for at in heads]
+        named = sorted(who.split()[1] if who else "?" for who, _ in owners)
+        if named != sorted(STYLES):
+            sys.exit(f"FAIL: heads in the restart file for {named}, expected {sorted(STYLES)}")
         version = struct.unpack_from("i", data, heads[0] + 4)[0]
 
         def reads(name, content, expect):
@@ -83,15 +136,21 @@ def main():
                 failures.append(name)
 
         reads("unchanged.restart", data, None)
-        for pair, at in zip(PAIRS, heads):
-            short = pair.split("/")[-1]
+        for (who, is_fix), at in zip(owners, heads):
+            short = who.split()[1].replace("/", "_").lower()
+            what = "state data" if is_fix else "settings"
             raised = data[:at + 4] + struct.pack("i", version + 1) + data[at + 8:]
             reads(f"version_{short}.restart", raised,
-                  [f"{pair}: the restart file's settings are of version {version + 1}, "
+                  [f"{who}: the restart file's {what} are of version {version + 1}, "
                    f"this build reads version {version}"])
-            headless = data[:at] + data[at + 8:]
+            if is_fix:
+                # the block's size, in front of the head, shrinks with it
+                size = struct.unpack_from("i", data, at - 4)[0]
+                headless = data[:at - 4] + struct.pack("i", size - 8) + data[at + 8:]
+            else:
+                headless = data[:at] + data[at + 8:]
             reads(f"headless_{short}.restart", headless,
-                  [f"{pair}: the restart file's settings have no version head"])
+                  [f"{who}: the restart file's {what} have no version head"])
     finish(failures)
 
 
