@@ -9,6 +9,6 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 . tools/lammps-release.sh
 tools/bootstrap.sh
-cmake -S cmake -B "$build" -D LAMMPS_RELEASE="$release"
+cmake -S cmake -B "$build" -D LAMMPS_RELEASE="$release" -D LAMMPS_SIZES="$sizes"
 cmake --build "$build" -j"$(nproc)" --target sphthermalplugin lmp-link
 LMP=$root/$build/lmp PLUGIN=$root/$build/sphthermalplugin.so examples/convection-cavity/run.sh

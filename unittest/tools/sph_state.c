@@ -9,14 +9,91 @@
 #include "library.h"
 
 #include <mpi.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-static double *gather(void *lmp, const char *name, int count, int natoms)
+/* The owned atoms' IDs and values, gathered on rank 0 by the driver itself:
+   LAMMPS's lammps_gather_atoms() refuses -DLAMMPS_BIGBIG (its error would
+   only be seen by lammps_has_error), so each rank sends its atoms with their
+   IDs and rank 0 puts every value in the row of its ID. */
+typedef struct {
+  int nlocal, nranks, me, natoms;
+  int *counts, *displs;    /* per rank, in atoms (rank 0) */
+  long long *ids;          /* every atom's ID in the order received (rank 0) */
+} Gathered;
+
+static void gather_ids(void *lmp, Gathered *g)
 {
-  double *data = (double *) malloc(sizeof(double) * (size_t) count * (size_t) natoms);
-  lammps_gather_atoms(lmp, (char *) name, 1, count, data);
-  return data;
+  MPI_Comm_rank(MPI_COMM_WORLD, &g->me);
+  MPI_Comm_size(MPI_COMM_WORLD, &g->nranks);
+  g->nlocal = lammps_extract_setting(lmp, "nlocal");
+  const int tag_bytes = lammps_extract_setting(lmp, "tagint");
+  const void *tag = lammps_extract_atom(lmp, "id");
+  long long *mine = (long long *) malloc(sizeof(long long) * (size_t) (g->nlocal + 1));
+  for (int i = 0; i < g->nlocal; i++)
+    mine[i] = (tag_bytes == 8) ? (long long) ((const int64_t *) tag)[i]
+                               : (long long) ((const int *) tag)[i];
+  g->counts = (int *) malloc(sizeof(int) * (size_t) g->nranks);
+  g->displs = (int *) malloc(sizeof(int) * (size_t) g->nranks);
+  MPI_Gather(&g->nlocal, 1, MPI_INT, g->counts, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  int total = 0;
+  if (g->me == 0)
+    for (int r = 0; r < g->nranks; r++) {
+      g->displs[r] = total;
+      total += g->counts[r];
+    }
+  g->ids = (long long *) malloc(sizeof(long long) * (size_t) (total + 1));
+  MPI_Gatherv(mine, g->nlocal, MPI_LONG_LONG, g->ids, g->counts, g->displs, MPI_LONG_LONG, 0,
+              MPI_COMM_WORLD);
+  free(mine);
+  if (g->me == 0) {
+    if (total != g->natoms) {
+      fprintf(stderr, "sph_state: %d owned atoms, LAMMPS counts %d\n", total, g->natoms);
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    }
+    for (int n = 0; n < total; n++)
+      if (g->ids[n] < 1 || g->ids[n] > total) {
+        fprintf(stderr, "sph_state: atom ID %lld is not in 1..%d (the IDs must be consecutive)\n",
+                g->ids[n], total);
+        MPI_Abort(MPI_COMM_WORLD, 1);
+      }
+  }
+}
+
+/* count values per atom of the per-atom property 'name' (a double vector, a
+   double array, or with count 1 and is_int an int vector), by atom ID */
+static double *gather(void *lmp, const Gathered *g, const char *name, int count, int is_int)
+{
+  const void *data = lammps_extract_atom(lmp, name);
+  if (!data && g->nlocal > 0) {
+    fprintf(stderr, "sph_state: LAMMPS has no per-atom '%s'\n", name);
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  }
+  double *mine = (double *) malloc(sizeof(double) * (size_t) (count * g->nlocal + 1));
+  for (int i = 0; i < g->nlocal; i++)
+    for (int k = 0; k < count; k++)
+      mine[count * i + k] = is_int  ? (double) ((const int *) data)[i]
+          : (count == 1)            ? ((const double *) data)[i]
+                                    : ((double *const *) data)[i][k];
+  int *counts = (int *) malloc(sizeof(int) * (size_t) g->nranks);
+  int *displs = (int *) malloc(sizeof(int) * (size_t) g->nranks);
+  for (int r = 0; g->me == 0 && r < g->nranks; r++) {
+    counts[r] = count * g->counts[r];
+    displs[r] = count * g->displs[r];
+  }
+  double *received = (double *) malloc(sizeof(double) * (size_t) (count * g->natoms + 1));
+  MPI_Gatherv(mine, count * g->nlocal, MPI_DOUBLE, received, counts, displs, MPI_DOUBLE, 0,
+              MPI_COMM_WORLD);
+  double *by_id = (double *) malloc(sizeof(double) * (size_t) (count * g->natoms + 1));
+  for (int n = 0; g->me == 0 && n < g->natoms; n++)
+    for (int k = 0; k < count; k++)
+      by_id[count * (g->ids[n] - 1) + k] = received[count * n + k];
+  free(mine);
+  free(counts);
+  free(displs);
+  free(received);
+  return by_id;
 }
 
 int main(int argc, char **argv)
@@ -54,17 +131,19 @@ int main(int argc, char **argv)
     MPI_Abort(MPI_COMM_WORLD, 1);
   }
 
-  const int natoms = (int) lammps_get_natoms(lmp);
-  int *type = (int *) malloc(sizeof(int) * (size_t) natoms);
-  lammps_gather_atoms(lmp, (char *) "type", 0, 1, type);
-  double *x = gather(lmp, "x", 3, natoms);
-  double *esph = gather(lmp, "esph", 1, natoms);
-  double *cv = gather(lmp, "cv", 1, natoms);
-  double *desph = gather(lmp, "desph", 1, natoms);
-  double *rho = gather(lmp, "rho", 1, natoms);
-  double *drho = gather(lmp, "drho", 1, natoms);
-  double *v = gather(lmp, "v", 3, natoms);
-  double *f = gather(lmp, "f", 3, natoms);
+  Gathered g;
+  g.natoms = (int) lammps_get_natoms(lmp);
+  const int natoms = g.natoms;
+  gather_ids(lmp, &g);
+  double *type = gather(lmp, &g, "type", 1, 1);
+  double *x = gather(lmp, &g, "x", 3, 0);
+  double *esph = gather(lmp, &g, "esph", 1, 0);
+  double *cv = gather(lmp, &g, "cv", 1, 0);
+  double *desph = gather(lmp, &g, "desph", 1, 0);
+  double *rho = gather(lmp, &g, "rho", 1, 0);
+  double *drho = gather(lmp, &g, "drho", 1, 0);
+  double *v = gather(lmp, &g, "v", 3, 0);
+  double *f = gather(lmp, &g, "f", 3, 0);
 
   if (me == 0) {
     FILE *out = fopen(argv[1], "w");
@@ -76,7 +155,7 @@ int main(int argc, char **argv)
     for (int i = 0; i < natoms; i++)
       fprintf(out,
               "%d %d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n",
-              i + 1, type[i], x[3 * i], x[3 * i + 1], x[3 * i + 2], esph[i] / cv[i], desph[i], rho[i],
+              i + 1, (int) type[i], x[3 * i], x[3 * i + 1], x[3 * i + 2], esph[i] / cv[i], desph[i], rho[i],
               drho[i], v[3 * i], v[3 * i + 1], v[3 * i + 2], f[3 * i], f[3 * i + 1], f[3 * i + 2]);
     fclose(out);
   }
