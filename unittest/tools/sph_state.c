@@ -25,6 +25,7 @@ typedef struct {
 
 static void gather_ids(void *lmp, Gathered *g)
 {
+  g->natoms = (int) lammps_get_natoms(lmp);
   MPI_Comm_rank(MPI_COMM_WORLD, &g->me);
   MPI_Comm_size(MPI_COMM_WORLD, &g->nranks);
   g->nlocal = lammps_extract_setting(lmp, "nlocal");
@@ -132,9 +133,8 @@ int main(int argc, char **argv)
   }
 
   Gathered g;
-  g.natoms = (int) lammps_get_natoms(lmp);
-  const int natoms = g.natoms;
   gather_ids(lmp, &g);
+  const int natoms = g.natoms;
   double *type = gather(lmp, &g, "type", 1, 1);
   double *x = gather(lmp, &g, "x", 3, 0);
   double *esph = gather(lmp, &g, "esph", 1, 0);
