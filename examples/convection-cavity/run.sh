@@ -15,7 +15,8 @@
 # (background pressure / (rho0 c0^2)), NZ (> 0: quasi-2-D, 3-D with a
 # periodic depth of NZ spacings), CONDUCTION (options of pair
 # sph/cleary/heat, e.g. "correction consistent"), GRADIENT (correction of
-# pair sph/harmonic/visc: none or gradient), ACOUSTIC (the acoustic
+# pair sph/harmonic/visc: gradient, the default, or none), SHIFT (D of fix
+# sph/shift, 2 by default; 0: no shifting), ACOUSTIC (the acoustic
 # coefficient of fix sph/dt/reset), MAX_NU_ERROR (exit 1 above it, %).
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
@@ -40,7 +41,7 @@ TEND=${TEND:-0}
 $run "$LMP" -in "$here/in.cavity" -var plugin "$PLUGIN" -var ra "$RA" -var n "$N" \
   -var tend "$TEND" -var kernel "${KERNEL:-wendland}" -var hdx "${HDX:-2.0}" \
   -var bg "${BG:-0.1}" -var nz "${NZ:-0}" -var conduction "${CONDUCTION:-mean harmonic}" \
-  -var gradient "${GRADIENT:-none}" -var acoustic "${ACOUSTIC:-0.1}" \
+  -var gradient "${GRADIENT:-gradient}" -var shift "${SHIFT:-2}" -var acoustic "${ACOUSTIC:-0.1}" \
   -var out cavity.dump -log log.cavity | grep -E "^Ra =|final"
 if [ "$RA" = 0 ]; then
   echo "without buoyancy the exact Nu is 1"
