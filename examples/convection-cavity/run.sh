@@ -40,7 +40,7 @@ N=${N:-40}
 TEND=${TEND:-0}
 $run "$LMP" -in "$here/in.cavity" -var plugin "$PLUGIN" -var ra "$RA" -var n "$N" \
   -var tend "$TEND" -var kernel "${KERNEL:-wendland}" -var hdx "${HDX:-2.0}" \
-  -var bg "${BG:-0.1}" -var nz "${NZ:-0}" -var conduction "${CONDUCTION:-mean harmonic}" \
+  -var bg "${BG:-0.1}" -var nz "${NZ:-0}" -var conduction "${CONDUCTION:-correction consistent}" \
   -var gradient "${GRADIENT:-gradient}" -var shift "${SHIFT:-2}" -var acoustic "${ACOUSTIC:-0.1}" \
   -var out cavity.dump -log log.cavity | grep -E "^Ra =|final"
 if [ "$RA" = 0 ]; then
