@@ -1,7 +1,7 @@
 #!/bin/sh
 # Run the differentially heated cavity, compare it with the benchmark and the
 # reference solver, and write cavity.png.
-#   ./run.sh              Ra = 1e4, 40 x 40 fluid particles, to t = 0.3 (about 40 s)
+#   ./run.sh              Ra = 1e4, 40 x 40 fluid particles, to t = 0.3 (about 75 s)
 #                         (t = 1.5 at Ra = 1e3)
 #   ./run.sh quick        the same at 20 x 20 (about 10 s)
 #   ./run.sh conduction   Ra = 0: Nu must be 1 (20 x 20, to t = 0.6)
