@@ -3,7 +3,7 @@
 # reference solver, and write cavity.png.
 #   ./run.sh              Ra = 1e4, 40 x 40 fluid particles, to t = 0.3 (about 75 s)
 #                         (t = 1.5 at Ra = 1e3)
-#   ./run.sh quick        the same at 20 x 20 (about 10 s)
+#   ./run.sh quick        the same at 20 x 20 (about 15 s)
 #   ./run.sh conduction   Ra = 0: Nu must be 1 (20 x 20, to t = 0.6)
 #   ./run.sh air          Reece et al. 2024 section 3.2 in SI units (in.air),
 #                         N = 40 across to t* = 0.5 (TSTAR), about 5 minutes;
@@ -13,10 +13,10 @@
 # Environment: LMP (LAMMPS binary), PLUGIN (sphthermalplugin.so), NP (MPI
 # ranks), OUT (output directory, default ./out), RA, N, TEND, KERNEL, HDX, BG
 # (background pressure / (rho0 c0^2)), NZ (> 0: quasi-2-D, 3-D with a
-# periodic depth of NZ spacings), CONDUCTION (options of pair
-# sph/cleary/heat, e.g. "correction consistent"), GRADIENT (correction of
-# pair sph/harmonic/visc: gradient, the default, or none), SHIFT (D of fix
-# sph/shift, 2 by default; 0: no shifting), ACOUSTIC (the acoustic
+# periodic depth of NZ spacings); CONDUCTION (options of pair
+# sph/cleary/heat), GRADIENT (correction of pair sph/harmonic/visc: gradient
+# or none) and SHIFT (D of fix sph/shift; 0: no shifting), in.cavity's
+# defaults when unset; ACOUSTIC (the acoustic
 # coefficient of fix sph/dt/reset), MAX_NU_ERROR (exit 1 above it, %).
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
@@ -40,8 +40,8 @@ N=${N:-40}
 TEND=${TEND:-0}
 $run "$LMP" -in "$here/in.cavity" -var plugin "$PLUGIN" -var ra "$RA" -var n "$N" \
   -var tend "$TEND" -var kernel "${KERNEL:-wendland}" -var hdx "${HDX:-2.0}" \
-  -var bg "${BG:-0.1}" -var nz "${NZ:-0}" -var conduction "${CONDUCTION:-correction consistent}" \
-  -var gradient "${GRADIENT:-gradient}" -var shift "${SHIFT:-2}" -var acoustic "${ACOUSTIC:-0.1}" \
+  -var bg "${BG:-0.1}" -var nz "${NZ:-0}" ${CONDUCTION:+-var conduction "$CONDUCTION"} \
+  ${GRADIENT:+-var gradient "$GRADIENT"} ${SHIFT:+-var shift "$SHIFT"} -var acoustic "${ACOUSTIC:-0.1}" \
   -var out cavity.dump -log log.cavity | grep -E "^Ra =|final"
 if [ "$RA" = 0 ]; then
   echo "without buoyancy the exact Nu is 1"
