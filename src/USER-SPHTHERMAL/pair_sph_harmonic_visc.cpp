@@ -37,6 +37,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 using namespace LAMMPS_NS;
 
@@ -581,12 +582,49 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
   const int *const numneigh = list->numneigh;
   int **const firstneigh = list->firstneigh;
 
+  // the entries of i's list inside the kernel's support, gathered before
+  // the pair terms: about a third of the entries lie in the skin, and a
+  // branch per entry on the cutoff is mispredicted that often; gathered,
+  // the square roots and kernel derivatives are computed together
+  // (vectorised). One buffer per call: the OpenMP style calls this per thread.
+  std::vector<int> in_j;
+  std::vector<double> in_del, in_rsq, in_dwdr_r;
+
   for (int ii = ifrom; ii < ito; ii++) {
     const int i = ilist[ii];
     const double xtmp = x[i][0], ytmp = x[i][1], ztmp = x[i][2];
     const sphf_particle a = {mass_of[i], density[i], volume[i], pressure[i], viscosity[i]};
     const int *const jlist = firstneigh[i];
     const int jnum = numneigh[i];
+    if ((int) in_j.size() < jnum) {
+      in_j.resize(jnum);
+      in_del.resize(3 * (size_t) jnum);
+      in_rsq.resize(jnum);
+      in_dwdr_r.resize(jnum);
+    }
+    int *const jin = in_j.data();
+    double *const del_in = in_del.data();
+    double *const rsq_in = in_rsq.data();
+    double *const dwdr_r_in = in_dwdr_r.data();
+    int nin = 0;
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double delx = xtmp - x[j][0];
+      const double dely = ytmp - x[j][1];
+      const double delz = (DIM == 3) ? ztmp - x[j][2] : 0.0;
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      // written at every entry, kept (nin advanced) only inside the support
+      jin[nin] = j;
+      del_in[3 * nin] = delx;
+      del_in[3 * nin + 1] = dely;
+      del_in[3 * nin + 2] = delz;
+      rsq_in[nin] = rsq;
+      nin += (rsq < cutsq_kernel);
+    }
+    // dW/dr / r needs r only for q
+    for (int k = 0; k < nin; k++)
+      dwdr_r_in[k] = dwdr_r_scale * sphk_df_over_q(KERNEL, sqrt(rsq_in[k]) * inv_h);
+
     double fx_i = 0.0, fy_i = 0.0, fz_i = 0.0, drho_i = 0.0, desph_i = 0.0, relax_i = 0.0;
     double shift_i[3] = {0.0, 0.0, 0.0};
     // the heat term's state of i (sph/cleary/heat's eval())
@@ -614,16 +652,11 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
       }
     };
 
-    for (int jj = 0; jj < jnum; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const double delx = xtmp - x[j][0];
-      const double dely = ytmp - x[j][1];
-      const double delz = (DIM == 3) ? ztmp - x[j][2] : 0.0;
-      const double rsq = delx * delx + dely * dely + delz * delz;
-      if (rsq >= cutsq_kernel) continue;
-
-      // dW/dr / r needs r only for q: the division below does not wait for the root
-      const double dwdr_r = dwdr_r_scale * sphk_df_over_q(KERNEL, sqrt(rsq) * inv_h);
+    for (int k = 0; k < nin; k++) {
+      const int j = jin[k];
+      const double delx = del_in[3 * k], dely = del_in[3 * k + 1], delz = del_in[3 * k + 2];
+      const double rsq = rsq_in[k];
+      const double dwdr_r = dwdr_r_in[k];
       // between two wall particles the flow changes nothing: fix sph/wall/adami
       // sets their density and velocity every step and they are not
       // integrated with fix sph; heat still flows

@@ -24,89 +24,63 @@
 
 enum sphk_kind { SPHK_LUCY = 0, SPHK_CUBIC, SPHK_QUINTIC, SPHK_WENDLAND, SPHK_NKINDS };
 
-/* shape f(q) and its derivative f'(q); zero outside the support */
+/* shape f(q) and its derivative f'(q); zero outside the support. Selects
+   between values computed unconditionally rather than branches, so that
+   loops over many pairs vectorise (see sphk_df_over_q) */
 
 static inline double sphk_lucy_f(double q)
 {
-  if (q >= 1.0) return 0.0;
   const double u = 1.0 - q;
-  return (1.0 + 3.0 * q) * u * u * u;
+  return q < 1.0 ? (1.0 + 3.0 * q) * u * u * u : 0.0;
 }
 
 static inline double sphk_lucy_df(double q)
 {
-  if (q >= 1.0) return 0.0;
   const double u = 1.0 - q;
-  return -12.0 * q * u * u;
+  return q < 1.0 ? -12.0 * q * u * u : 0.0;
 }
 
 static inline double sphk_cubic_f(double q)
 {
-  if (q >= 2.0) return 0.0;
-  if (q >= 1.0) {
-    const double u = 2.0 - q;
-    return 0.25 * u * u * u;
-  }
-  return 1.0 - 1.5 * q * q + 0.75 * q * q * q;
+  const double u = 2.0 - q;
+  const double outer = 0.25 * u * u * u;
+  return q < 1.0 ? 1.0 - 1.5 * q * q + 0.75 * q * q * q : (q < 2.0 ? outer : 0.0);
 }
 
 static inline double sphk_cubic_df(double q)
 {
-  if (q >= 2.0) return 0.0;
-  if (q >= 1.0) {
-    const double u = 2.0 - q;
-    return -0.75 * u * u;
-  }
-  return -3.0 * q + 2.25 * q * q;
+  const double u = 2.0 - q;
+  const double outer = -0.75 * u * u;
+  return q < 1.0 ? -3.0 * q + 2.25 * q * q : (q < 2.0 ? outer : 0.0);
 }
 
 /* (3-q)^5 - 6 (2-q)^5 + 15 (1-q)^5, each term only while its base is > 0 */
 static inline double sphk_quintic_f(double q)
 {
-  if (q >= 3.0) return 0.0;
-  double u = 3.0 - q, u2 = u * u, f = u2 * u2 * u;
-  if (q < 2.0) {
-    u = 2.0 - q;
-    u2 = u * u;
-    f -= 6.0 * u2 * u2 * u;
-  }
-  if (q < 1.0) {
-    u = 1.0 - q;
-    u2 = u * u;
-    f += 15.0 * u2 * u2 * u;
-  }
-  return f;
+  const double u = 3.0 - q, u2 = u * u, v = 2.0 - q, v2 = v * v, w = 1.0 - q, w2 = w * w;
+  const double f =
+      u2 * u2 * u - (q < 2.0 ? 6.0 * v2 * v2 * v : 0.0) + (q < 1.0 ? 15.0 * w2 * w2 * w : 0.0);
+  return q < 3.0 ? f : 0.0;
 }
 
 static inline double sphk_quintic_df(double q)
 {
-  if (q >= 3.0) return 0.0;
-  double u = 3.0 - q, u2 = u * u, df = -5.0 * u2 * u2;
-  if (q < 2.0) {
-    u = 2.0 - q;
-    u2 = u * u;
-    df += 30.0 * u2 * u2;
-  }
-  if (q < 1.0) {
-    u = 1.0 - q;
-    u2 = u * u;
-    df -= 75.0 * u2 * u2;
-  }
-  return df;
+  const double u = 3.0 - q, u2 = u * u, v = 2.0 - q, v2 = v * v, w = 1.0 - q, w2 = w * w;
+  const double df =
+      -5.0 * u2 * u2 + (q < 2.0 ? 30.0 * v2 * v2 : 0.0) - (q < 1.0 ? 75.0 * w2 * w2 : 0.0);
+  return q < 3.0 ? df : 0.0;
 }
 
 static inline double sphk_wendland_f(double q)
 {
-  if (q >= 2.0) return 0.0;
   const double u = 1.0 - 0.5 * q, u2 = u * u;
-  return u2 * u2 * (2.0 * q + 1.0);
+  return q < 2.0 ? u2 * u2 * (2.0 * q + 1.0) : 0.0;
 }
 
 static inline double sphk_wendland_df(double q)
 {
-  if (q >= 2.0) return 0.0;
   const double u = 1.0 - 0.5 * q;
-  return -5.0 * q * u * u * u;
+  return q < 2.0 ? -5.0 * q * u * u * u : 0.0;
 }
 
 /* Dispatch on the kind. Called with a compile-time constant kind (as the
@@ -147,26 +121,30 @@ static inline double sphk_df(int kind, double q)
 /* f'(q) / q, which pair loops use for dW/dr / r = sigma_d / h^(d+2) f'(q) / q:
    a polynomial without division where f' has the factor q (Lucy, Wendland
    C2, and the cubic and quintic splines for q < 1), f'(q) / q elsewhere
-   (q >= 1 there), so that a loop need not divide by r */
+   (q >= 1 there), so that a loop need not divide by r. Written as selects
+   between values computed unconditionally, without branches, so that a loop
+   over many pairs vectorises (GCC needs -fno-math-errno -fno-trapping-math
+   for that; the values are the same either way) */
 static inline double sphk_df_over_q(int kind, double q)
 {
   switch (kind) {
     case SPHK_LUCY: {
-      if (q >= 1.0) return 0.0;
       const double u = 1.0 - q;
-      return -12.0 * u * u;
+      return q < 1.0 ? -12.0 * u * u : 0.0;
     }
-    case SPHK_CUBIC:
-      if (q >= 1.0) return sphk_cubic_df(q) / q;
-      return -3.0 + 2.25 * q;
-    case SPHK_QUINTIC:
+    case SPHK_CUBIC: {
+      const double u = 2.0 - q;
+      const double outer = -0.75 * u * u / q;
+      return q < 1.0 ? -3.0 + 2.25 * q : (q < 2.0 ? outer : 0.0);
+    }
+    case SPHK_QUINTIC: {
       /* -5 (3-q)^4 + 30 (2-q)^4 - 75 (1-q)^4 = q (-120 + 120 q^2 - 50 q^3) */
-      if (q >= 1.0) return sphk_quintic_df(q) / q;
-      return -120.0 + q * q * (120.0 - 50.0 * q);
+      const double outer = sphk_quintic_df(q) / q;
+      return q < 1.0 ? -120.0 + q * q * (120.0 - 50.0 * q) : (q < 3.0 ? outer : 0.0);
+    }
     case SPHK_WENDLAND: {
-      if (q >= 2.0) return 0.0;
       const double u = 1.0 - 0.5 * q;
-      return -5.0 * u * u * u;
+      return q < 2.0 ? -5.0 * u * u * u : 0.0;
     }
     default:
       return 0.0;

@@ -225,10 +225,20 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
     medium_volume[m] = (rmass ? rmass[j] : mass[type[j]]) / rho[j];
     medium_temperature[m] = esph[j] / cv[j];
   }
-  if (dim == 2)
-    interpolate_points<2>(ghost, how, kernel);
-  else
-    interpolate_points<3>(ghost, how, kernel);
+#define SPH_MIRROR_POINTS(KERNEL)                        \
+  case KERNEL:                                           \
+    if (dim == 2)                                        \
+      interpolate_points<2, KERNEL>(ghost, how, kernel); \
+    else                                                 \
+      interpolate_points<3, KERNEL>(ghost, how, kernel); \
+    break;
+  switch (kernel_kind) {
+    SPH_MIRROR_POINTS(SPHK_LUCY)
+    SPH_MIRROR_POINTS(SPHK_CUBIC)
+    SPH_MIRROR_POINTS(SPHK_QUINTIC)
+    SPH_MIRROR_POINTS(SPHK_WENDLAND)
+  }
+#undef SPH_MIRROR_POINTS
 }
 
 /* ----------------------------------------------------------------------
@@ -236,7 +246,7 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
    moment sums' size known to the compiler, so that they stay in registers
 ------------------------------------------------------------------------- */
 
-template <int DIM>
+template <int DIM, int KERNEL>
 void SPHMirror::interpolate_points(std::vector<double> &ghost, std::vector<int> &how,
                                    const sphk_kernel &kernel)
 {
@@ -251,31 +261,56 @@ void SPHMirror::interpolate_points(std::vector<double> &ghost, std::vector<int> 
     first_neighbour[i] = neighbours.size();
     if (!has_ghost[i]) continue;
     const double *const g = &ghost_at[3 * (size_t) i];
-    sphi_point point;
-    sphi_begin(&point, DIM);
-    double shepard = 0.0;
+    // the candidates inside the support, gathered without a branch per
+    // candidate (a third of them lie in the skin), then their kernel values
+    // together (vectorised), as in the pair loop of sph/harmonic/visc
+    const int ncand = first_candidate[i + 1] - first_candidate[i];
+    if ((int) inside_m.size() < ncand) {
+      inside_m.resize(ncand);
+      inside_d.resize(3 * (size_t) ncand);
+      inside_rsq.resize(ncand);
+      inside_w.resize(ncand);
+      inside_g.resize(ncand);
+    }
+    int *const m_in = inside_m.data();
+    double *const d_in = inside_d.data();
+    double *const rsq_in = inside_rsq.data();
+    double *const w_in = inside_w.data();
+    double *const g_in = inside_g.data();
     const double side = (inlet_axis < 0)
         ? 0.0
         : FixSPHInletTemperature::periodic_cell(domain, g[inlet_axis], inlet_axis);
-    const size_t start = neighbours.size();
+    int nin = 0;
     for (int n = first_candidate[i]; n < first_candidate[i + 1]; n++) {
       const int m = candidates[n];
       const int j = medium_atoms[m];
-      if (inlet_axis >= 0 &&
-          FixSPHInletTemperature::periodic_cell(domain, x[j][inlet_axis], inlet_axis) != side)
-        continue;
       const double d[3] = {x[j][0] - g[0], x[j][1] - g[1], x[j][2] - g[2]};
       const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-      if (rsq >= cutsq) continue;
-      const double q = sqrt(rsq) * kernel.inv_h;
-      const double w = kernel.w_scale * sphk_f(kernel.kind, q);
+      m_in[nin] = m;
+      for (int k = 0; k < 3; k++) d_in[3 * nin + k] = d[k];
+      rsq_in[nin] = rsq;
+      nin += (rsq < cutsq) &&
+          (inlet_axis < 0 ||
+           FixSPHInletTemperature::periodic_cell(domain, x[j][inlet_axis], inlet_axis) == side);
+    }
+    for (int k = 0; k < nin; k++) {
+      const double q = sqrt(rsq_in[k]) * kernel.inv_h;
+      w_in[k] = kernel.w_scale * sphk_f(KERNEL, q);
+      g_in[k] = minus_dwdr_r_scale * sphk_df_over_q(KERNEL, q);
+    }
+
+    sphi_point point;
+    sphi_begin(&point, DIM);
+    double shepard = 0.0;
+    const size_t start = neighbours.size();
+    for (int k = 0; k < nin; k++) {
+      const int m = m_in[k];
       const double volume = medium_volume[m];
-      sphi_add_g(&point, d, w, minus_dwdr_r_scale * sphk_df_over_q(kernel.kind, q), volume,
-                 medium_temperature[m]);
+      sphi_add_g(&point, &d_in[3 * k], w_in[k], g_in[k], volume, medium_temperature[m]);
       if (returns_heat) {
-        neighbours.push_back(j);
-        weights.push_back(w * volume);
-        shepard += w * volume;
+        neighbours.push_back(medium_atoms[m]);
+        weights.push_back(w_in[k] * volume);
+        shepard += w_in[k] * volume;
       }
     }
     for (size_t n = start; n < weights.size(); n++) weights[n] /= shepard;

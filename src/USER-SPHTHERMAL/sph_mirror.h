@@ -104,7 +104,10 @@ class SPHMirror : protected Pointers {
 
   int ghost_point(const double *x, double *ghost, double *depth = nullptr);
   void find_candidates();
-  template <int DIM>
+  // the candidates of one ghost point inside the kernel's support
+  std::vector<int> inside_m;
+  std::vector<double> inside_d, inside_rsq, inside_w, inside_g;
+  template <int DIM, int KERNEL>
   void interpolate_points(std::vector<double> &ghost, std::vector<int> &how,
                           const sphk_kernel &kernel);
 };

@@ -143,6 +143,12 @@ static void check_over_q(void)
            sphk_name(kind), "f'(q)/q at q = 0 against f''(0)", sphk_df_over_q(kind, 0.0), second);
     expect(sphk_df_over_q(kind, support) == 0.0, sphk_name(kind), "f'(q)/q at the support",
            sphk_df_over_q(kind, support), 0.0);
+    /* beyond it (the selects must not let a piece's polynomial through) */
+    for (int i = 1; i <= 4; i++) {
+      const double q = support * (1.0 + 0.5 * i);
+      expect(sphk_df_over_q(kind, q) == 0.0, sphk_name(kind), "f'(q)/q beyond the support",
+             sphk_df_over_q(kind, q), 0.0);
+    }
   }
 }
 
