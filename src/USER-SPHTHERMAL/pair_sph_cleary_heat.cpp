@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 using namespace LAMMPS_NS;
 
@@ -796,6 +797,11 @@ void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_ra
   // the correction's pairs are stored in list order: only the whole list
   // (one thread) reads them
   size_t npair = 0;
+  // the entries of i's list inside the support, gathered before the pair
+  // terms without a branch per entry, then their kernels together
+  // (vectorised); one buffer per call, as the OpenMP style calls this per thread
+  std::vector<int> in_j;
+  std::vector<double> in_rsq, in_r_dwdr;
 
   for (int ii = ifrom; ii < ito; ii++) {
     const int i = ilist[ii];
@@ -814,18 +820,35 @@ void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_ra
     const int jnum = numneigh[i];
     double desph_i = 0.0, relax_i = 0.0;
 
+    if ((int) in_j.size() < jnum) {
+      in_j.resize(jnum);
+      in_rsq.resize(jnum);
+      in_r_dwdr.resize(jnum);
+    }
+    int *const jin = in_j.data();
+    double *const rsq_in = in_rsq.data();
+    double *const r_dwdr_in = in_r_dwdr.data();
+    int nin = 0;
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const double delx = xtmp - x[j][0];
       const double dely = ytmp - x[j][1];
       const double delz = ztmp - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
-      if (rsq >= cutsq_kernel) continue;
+      jin[nin] = j;
+      rsq_in[nin] = rsq;
+      nin += (rsq < cutsq_kernel);
+    }
+    for (int k = 0; k < nin; k++) {
+      const double r = sqrt(rsq_in[k]);
+      r_dwdr_in[k] = r * dw_scale * sphk_df(KERNEL, r * inv_h);
+    }
 
+    for (int k = 0; k < nin; k++) {
+      const int j = jin[k];
+      const double rsq = rsq_in[k];
       const int jtype = type[j];
-      // the division below does not wait for the root
-      const double r = sqrt(rsq);
-      const double r_dwdr = r * dw_scale * sphk_df(KERNEL, r * inv_h);
+      const double r_dwdr = r_dwdr_in[k];
       double conductance_ij =
           VARYING_K ? sphc_conductance(MEAN, k_i, conductivity[j]) : conductance_i[jtype];
       if (MEAN == SPHC_INTERFACE && interface_i[jtype])
