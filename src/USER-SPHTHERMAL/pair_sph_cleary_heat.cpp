@@ -23,12 +23,12 @@
 #include "sph_compat.h"
 #include "sph_conduction.h"
 #include "sph_consistent.h"
+#include "sph_support.h"
 #include "update.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <vector>
 
 using namespace LAMMPS_NS;
 
@@ -797,11 +797,8 @@ void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_ra
   // the correction's pairs are stored in list order: only the whole list
   // (one thread) reads them
   size_t npair = 0;
-  // the entries of i's list inside the support, gathered before the pair
-  // terms without a branch per entry, then their kernels together
-  // (vectorised); one buffer per call, as the OpenMP style calls this per thread
-  std::vector<int> in_j;
-  std::vector<double> in_rsq, in_r_dwdr;
+  // the entries of each list inside the support (sph_support.h)
+  SPHSupport support;
 
   for (int ii = ifrom; ii < ito; ii++) {
     const int i = ilist[ii];
@@ -820,14 +817,10 @@ void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_ra
     const int jnum = numneigh[i];
     double desph_i = 0.0, relax_i = 0.0;
 
-    if ((int) in_j.size() < jnum) {
-      in_j.resize(jnum);
-      in_rsq.resize(jnum);
-      in_r_dwdr.resize(jnum);
-    }
-    int *const jin = in_j.data();
-    double *const rsq_in = in_rsq.data();
-    double *const r_dwdr_in = in_r_dwdr.data();
+    support.fit(jnum);
+    int *const jin = support.index;
+    double *const rsq_in = support.rsq;
+    double *const r_dwdr_in = support.a;
     int nin = 0;
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;

@@ -33,11 +33,11 @@
 #include "sph_conduction.h"
 #include "sph_consistent.h"
 #include "sph_flow.h"
+#include "sph_support.h"
 #include "update.h"
 
 #include <cmath>
 #include <cstring>
-#include <vector>
 
 using namespace LAMMPS_NS;
 
@@ -582,13 +582,8 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
   const int *const numneigh = list->numneigh;
   int **const firstneigh = list->firstneigh;
 
-  // the entries of i's list inside the kernel's support, gathered before
-  // the pair terms: about a third of the entries lie in the skin, and a
-  // branch per entry on the cutoff is mispredicted that often; gathered,
-  // the square roots and kernel derivatives are computed together
-  // (vectorised). One buffer per call: the OpenMP style calls this per thread.
-  std::vector<int> in_j;
-  std::vector<double> in_del, in_rsq, in_dwdr_r;
+  // the entries of each list inside the support (sph_support.h)
+  SPHSupport support;
 
   for (int ii = ifrom; ii < ito; ii++) {
     const int i = ilist[ii];
@@ -596,16 +591,11 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
     const sphf_particle a = {mass_of[i], density[i], volume[i], pressure[i], viscosity[i]};
     const int *const jlist = firstneigh[i];
     const int jnum = numneigh[i];
-    if ((int) in_j.size() < jnum) {
-      in_j.resize(jnum);
-      in_del.resize(3 * (size_t) jnum);
-      in_rsq.resize(jnum);
-      in_dwdr_r.resize(jnum);
-    }
-    int *const jin = in_j.data();
-    double *const del_in = in_del.data();
-    double *const rsq_in = in_rsq.data();
-    double *const dwdr_r_in = in_dwdr_r.data();
+    support.fit(jnum);
+    int *const jin = support.index;
+    double *const del_in = support.del;
+    double *const rsq_in = support.rsq;
+    double *const dwdr_r_in = support.a;
     int nin = 0;
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;

@@ -261,22 +261,13 @@ void SPHMirror::interpolate_points(std::vector<double> &ghost, std::vector<int> 
     first_neighbour[i] = neighbours.size();
     if (!has_ghost[i]) continue;
     const double *const g = &ghost_at[3 * (size_t) i];
-    // the candidates inside the support, gathered without a branch per
-    // candidate (a third of them lie in the skin), then their kernel values
-    // together (vectorised), as in the pair loop of sph/harmonic/visc
-    const int ncand = first_candidate[i + 1] - first_candidate[i];
-    if ((int) inside_m.size() < ncand) {
-      inside_m.resize(ncand);
-      inside_d.resize(3 * (size_t) ncand);
-      inside_rsq.resize(ncand);
-      inside_w.resize(ncand);
-      inside_g.resize(ncand);
-    }
-    int *const m_in = inside_m.data();
-    double *const d_in = inside_d.data();
-    double *const rsq_in = inside_rsq.data();
-    double *const w_in = inside_w.data();
-    double *const g_in = inside_g.data();
+    // the candidates inside the support (sph_support.h)
+    support.fit(first_candidate[i + 1] - first_candidate[i]);
+    int *const m_in = support.index;
+    double *const d_in = support.del;
+    double *const rsq_in = support.rsq;
+    double *const w_in = support.a;
+    double *const g_in = support.b;
     const double side = (inlet_axis < 0)
         ? 0.0
         : FixSPHInletTemperature::periodic_cell(domain, g[inlet_axis], inlet_axis);

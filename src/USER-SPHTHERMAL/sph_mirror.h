@@ -9,6 +9,7 @@
 #include "pointers.h"
 #include "sph_cells.h"
 #include "sph_kernels.h"
+#include "sph_support.h"
 
 #include <string>
 #include <vector>
@@ -104,9 +105,7 @@ class SPHMirror : protected Pointers {
 
   int ghost_point(const double *x, double *ghost, double *depth = nullptr);
   void find_candidates();
-  // the candidates of one ghost point inside the kernel's support
-  std::vector<int> inside_m;
-  std::vector<double> inside_d, inside_rsq, inside_w, inside_g;
+  SPHSupport support;    // the candidates of one ghost point inside the support
   template <int DIM, int KERNEL>
   void interpolate_points(std::vector<double> &ghost, std::vector<int> &how,
                           const sphk_kernel &kernel);
