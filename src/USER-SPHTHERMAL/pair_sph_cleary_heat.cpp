@@ -803,9 +803,6 @@ void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_ra
   for (int ii = ifrom; ii < ito; ii++) {
     const int i = ilist[ii];
     const int itype = type[i];
-    const double xtmp = x[i][0];
-    const double ytmp = x[i][1];
-    const double ztmp = x[i][2];
     const double temp_i = temperature[i];
     const double rho_i = rho[i];
     const double mass_i = RMASS ? rmass[i] : mass[itype];
@@ -817,21 +814,11 @@ void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_ra
     const int jnum = numneigh[i];
     double desph_i = 0.0, relax_i = 0.0;
 
-    support.fit(jnum);
-    int *const jin = support.index;
-    double *const rsq_in = support.rsq;
+    // 3-D distances, as the loop always took them (z = 0 in 2-D)
+    const int nin = support.gather<3, false>(x[i], x, jlist, jnum, cutsq_kernel);
+    const int *const jin = support.index;
+    const double *const rsq_in = support.rsq;
     double *const r_dwdr_in = support.a;
-    int nin = 0;
-    for (int jj = 0; jj < jnum; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const double delx = xtmp - x[j][0];
-      const double dely = ytmp - x[j][1];
-      const double delz = ztmp - x[j][2];
-      const double rsq = delx * delx + dely * dely + delz * delz;
-      jin[nin] = j;
-      rsq_in[nin] = rsq;
-      nin += (rsq < cutsq_kernel);
-    }
     for (int k = 0; k < nin; k++) {
       const double r = sqrt(rsq_in[k]);
       r_dwdr_in[k] = r * dw_scale * sphk_df(KERNEL, r * inv_h);

@@ -587,30 +587,14 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
 
   for (int ii = ifrom; ii < ito; ii++) {
     const int i = ilist[ii];
-    const double xtmp = x[i][0], ytmp = x[i][1], ztmp = x[i][2];
     const sphf_particle a = {mass_of[i], density[i], volume[i], pressure[i], viscosity[i]};
     const int *const jlist = firstneigh[i];
     const int jnum = numneigh[i];
-    support.fit(jnum);
-    int *const jin = support.index;
-    double *const del_in = support.del;
-    double *const rsq_in = support.rsq;
+    const int nin = support.gather<DIM, true>(x[i], x, jlist, jnum, cutsq_kernel);
+    const int *const jin = support.index;
+    const double *const del_in = support.del;
+    const double *const rsq_in = support.rsq;
     double *const dwdr_r_in = support.a;
-    int nin = 0;
-    for (int jj = 0; jj < jnum; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const double delx = xtmp - x[j][0];
-      const double dely = ytmp - x[j][1];
-      const double delz = (DIM == 3) ? ztmp - x[j][2] : 0.0;
-      const double rsq = delx * delx + dely * dely + delz * delz;
-      // written at every entry, kept (nin advanced) only inside the support
-      jin[nin] = j;
-      del_in[3 * nin] = delx;
-      del_in[3 * nin + 1] = dely;
-      del_in[3 * nin + 2] = delz;
-      rsq_in[nin] = rsq;
-      nin += (rsq < cutsq_kernel);
-    }
     // dW/dr / r needs r only for q
     for (int k = 0; k < nin; k++)
       dwdr_r_in[k] = dwdr_r_scale * sphk_df_over_q(KERNEL, sqrt(rsq_in[k]) * inv_h);

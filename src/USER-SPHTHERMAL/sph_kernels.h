@@ -133,14 +133,13 @@ static inline double sphk_df_over_q(int kind, double q)
       return q < 1.0 ? -12.0 * u * u : 0.0;
     }
     case SPHK_CUBIC: {
-      const double u = 2.0 - q;
-      const double outer = -0.75 * u * u / q;
-      return q < 1.0 ? -3.0 + 2.25 * q : (q < 2.0 ? outer : 0.0);
+      const double outer = sphk_cubic_df(q) / q; /* zero beyond the support */
+      return q < 1.0 ? -3.0 + 2.25 * q : outer;
     }
     case SPHK_QUINTIC: {
       /* -5 (3-q)^4 + 30 (2-q)^4 - 75 (1-q)^4 = q (-120 + 120 q^2 - 50 q^3) */
       const double outer = sphk_quintic_df(q) / q;
-      return q < 1.0 ? -120.0 + q * q * (120.0 - 50.0 * q) : (q < 3.0 ? outer : 0.0);
+      return q < 1.0 ? -120.0 + q * q * (120.0 - 50.0 * q) : outer;
     }
     case SPHK_WENDLAND: {
       const double u = 1.0 - 0.5 * q;

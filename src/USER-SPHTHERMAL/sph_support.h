@@ -6,6 +6,8 @@
 #ifndef LMP_SPH_SUPPORT_H
 #define LMP_SPH_SUPPORT_H
 
+#include "lmptype.h"
+
 #include <cstddef>
 #include <vector>
 
@@ -26,6 +28,35 @@ class SPHSupport {
   double *rsq = nullptr;    // its square
   double *a = nullptr;      // two kernel values per entry, as the loop
   double *b = nullptr;      // needs them
+
+  // the entries j of a neighbour list with |x_i - x_j|^2 < cutsq: their
+  // index and rsq, and x_i - x_j when DEL; returns how many
+  template <int DIM, bool DEL>
+  int gather(const double *xi, const double *const *x, const int *jlist, int jnum, double cutsq)
+  {
+    fit(jnum);
+    int *const j_of = index;
+    double *const del_of = del;
+    double *const rsq_of = rsq;
+    int n = 0;
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double delx = xi[0] - x[j][0];
+      const double dely = xi[1] - x[j][1];
+      const double delz = (DIM == 3) ? xi[2] - x[j][2] : 0.0;
+      const double r2 = delx * delx + dely * dely + delz * delz;
+      // written at every entry, kept (n advanced) only inside the support
+      j_of[n] = j;
+      if (DEL) {
+        del_of[3 * n] = delx;
+        del_of[3 * n + 1] = dely;
+        del_of[3 * n + 2] = delz;
+      }
+      rsq_of[n] = r2;
+      n += (r2 < cutsq);
+    }
+    return n;
+  }
 
   // room for n entries
   void fit(int n)
