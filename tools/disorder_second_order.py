@@ -46,7 +46,7 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 import disorder_prototype as dp
-from disorder_prototype import Slab, disorder, fv1d
+from disorder_prototype import Slab, disorder
 
 SIGN = np.array([-1, -1, 1, 1, 1])
 
@@ -120,23 +120,9 @@ def run(a):
         factor = dp.consistent_factors(s)
     else:
         factor = 1.0
-    coefficient = dp.conductance(s, a.conductance) * factor * s.r * s.dw / \
-        (s.rho[s.A] * s.rho[s.B] * (s.r**2 + s.eta2)) * s.m[s.B]
-    t1 = disorder.t1_of(layers, nx)
-    dt = 0.1 * dx * dx / max(disorder.diffusivities(layers))
-    e, t, out = s.cv * s.T, 0.0, []
-    for target in (t1, 10 * t1):
-        steps = int(round((target - t) / dt))
-        for _ in range(steps):
-            T = e / s.cv
-            e = e + dt * s.sum_b(coefficient * (T[s.A] - T[s.B]))
-        t += steps * dt
-        out.append(e / s.cv)
-    x_fv, T_fv = fv1d.solve(layers, 1.0, 1000, [t1, 10 * t1])
-    errs = [np.abs(T - np.interp(p[:, 0], x_fv, ref)) for T, ref in zip(out, T_fv)]
+    errs, _, drift = dp.evolve(s, factor, a.conductance, layers, nx)
     errors = [100 * e_.max() for e_ in errs]
     i0 = np.argmax(errs[0]); i1 = np.argmax(errs[1])
-    drift = np.sum(s.m * e) / np.sum(s.m * s.cv * s.T) - 1
     print(f"{a.weights}, {a.conductance}, {a.interior}, jitter {a.jitter} angle {a.angle} k2 {a.k2}: t1 {errors[0]:.3f} % (x={p[i0,0]:.3f}), 10 t1 {errors[1]:.3f} % (x={p[i1,0]:.3f}), energy {drift:.1e}")
 
 ap = argparse.ArgumentParser()
