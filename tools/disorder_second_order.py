@@ -125,16 +125,22 @@ def run(a):
     i0 = np.argmax(errs[0]); i1 = np.argmax(errs[1])
     print(f"{a.weights}, {a.conductance}, {a.interior}, jitter {a.jitter} angle {a.angle} k2 {a.k2}: t1 {errors[0]:.3f} % (x={p[i0,0]:.3f}), 10 t1 {errors[1]:.3f} % (x={p[i1,0]:.3f}), energy {drift:.1e}")
 
-ap = argparse.ArgumentParser()
-ap.add_argument("--jitter", type=float, default=0.0)
-ap.add_argument("--angle", type=float, default=0.0)
-ap.add_argument("--seed", type=int, default=1)
-ap.add_argument("--k2", type=float, default=3.0)
-ap.add_argument("--rhocv2", type=float, default=0.5)
-ap.add_argument("--weights", default="second")
-ap.add_argument("--conductance", default="exact")
-ap.add_argument("--interior", default="geometric")
-ap.add_argument("--margin", type=float, default=2.0)
-ap.add_argument("-v", action="store_true")
-ap.add_argument("--c4", type=float, default=0.0)
-run(ap.parse_args())
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--jitter", type=float, default=0.0)
+    ap.add_argument("--angle", type=float, default=0.0)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--k2", type=float, default=3.0)
+    ap.add_argument("--rhocv2", type=float, default=0.5)
+    ap.add_argument("--weights", default="second")
+    ap.add_argument("--conductance", default="exact")
+    ap.add_argument("--interior", default="geometric")
+    ap.add_argument("--margin", type=float, default=2.0)
+    ap.add_argument("-v", action="store_true")
+    ap.add_argument("--c4", type=float, default=0.0)
+    run(ap.parse_args())
+
+
+if __name__ == "__main__":
+    main()
