@@ -54,7 +54,7 @@ void ComputeSPHCorrectionAtom::init()
   const int *const mean = (int *) pair->extract("mean", dim);
   if (interface ? (*mean != SPHC_INTERFACE) : !*correct)
     error->all(FLERR, "Compute sph/correction/atom: pair style sph/cleary/heat runs without '{}'",
-               interface ? "mean interface" : "correction consistent");
+               interface ? "mean interface" : "correction consistent or second");
   pair_state =
       (double **) pair->extract(interface ? "interface_distance" : "correction_state", dim);
 }

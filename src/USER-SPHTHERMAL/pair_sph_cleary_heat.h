@@ -13,7 +13,9 @@ PairStyle(sph/cleary/heat,PairSPHClearyHeat);
 #define LMP_PAIR_SPH_CLEARY_HEAT_H
 
 #include "pair_sph_kernel.h"
+#include "sph_second_moment.h"
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -102,12 +104,30 @@ class PairSPHClearyHeat : public PairSPHKernel {
   // 'correction consistent' (sph_consistent.h): per atom (owned and ghost)
   // the second-moment normaliser S (6), the first-moment vector lambda (3)
   // and whether the atom is corrected (1) or keeps the plain term (0,
-  // incomplete support); work arrays for the Jacobi sweeps
+  // incomplete support); work arrays for the Jacobi sweeps.
+  // 'correction second' (sph_second_moment.h): the same state flag, the
+  // multipliers nu of every owned and ghost atom and the solver's pairs,
+  // per-atom input and work space
+  enum { CORRECT_NONE = 0, CORRECT_CONSISTENT = 1, CORRECT_SECOND = 2 };
   int correct;
   int sweeps;
   int nmax_correct;
   double **corr_s, **corr_kinv, **corr_lambda, **corr_deficit, **corr_coupling;
   double *corr_state;
+  std::vector<double> second_nu, second_work, second_volume;
+  std::vector<int> second_constrained;
+  std::vector<sphs_pair> second_pairs;
+  sphs_result second_result;    // of the last solve, for report_setup()
+  int second_warned;
+  void solve_second();
+  // the solver's communication (sph_second_moment.h's sphs_exchange): n
+  // values per atom of the array comm_values
+  double *comm_values;
+  int comm_count;
+  static void second_forward(void *context, double *values, int n);
+  static void second_reverse(void *context, double *values, int n);
+  static double second_sum(void *context, double value);
+  static double second_max(void *context, double value);
   enum {
     COMM_RELAX,
     COMM_MOMENT,
@@ -115,6 +135,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
     COMM_STATE,
     COMM_LAMBDA,
     COMM_COUPLING,
+    COMM_SECOND,    // comm_count values per atom of comm_values
     COMM_IFACE_MOMENT,
     COMM_IFACE_VECTOR,
     COMM_IFACE_SMOOTH,
@@ -136,6 +157,11 @@ class PairSPHClearyHeat : public PairSPHKernel {
   double *iface_distance;
   double **iface_moment, **iface_vector, **iface_normal, **iface_sum;
   double *iface_near;    // 1: an atom of another material within the support
+  // 'distance d_name': the distances given per atom (fix property/atom)
+  // instead of the estimate; its index in atom->dvector (-1: estimated)
+  std::string distance_name;
+  int distance_index;
+  void given_interface();
   // the pairs within the support, in the order of the neighbour list, with
   // their plain weight g (sph_consistent.h), r_ij, dW/dr and W, gathered by
   // the first pass and read by the others, and their factor w_ij
