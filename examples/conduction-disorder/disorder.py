@@ -137,7 +137,9 @@ def errors(a):
 
 # the operators of run.sh: label suffix, name in the table and the plot, marker
 OPERATORS = [("none", "plain", "o--"), ("consistent", "consistent", "s-"),
-             ("consistent+interface", "consistent + interface", "^-")]
+             ("consistent+interface", "consistent + interface", "^-"),
+             ("consistent+given", "consistent + given distance", "v-"),
+             ("second+given", "second + given distance", "D-")]
 
 
 def report(path, png):
@@ -182,7 +184,8 @@ def report(path, png):
         ax.grid(alpha=0.3)
     axes[0].legend(fontsize=7)
     fig.suptitle("two-material slab, 80 x 20, cubic kernel, h = 1.3 dx: pair sph/cleary/heat "
-                 "plain, with correction consistent, and with mean interface too", fontsize=9)
+                 "plain, with correction consistent or second, with mean interface estimated "
+                 "or given", fontsize=9)
     fig.tight_layout()
     fig.savefig(png, dpi=110)
     print("plot:", os.path.abspath(png))
