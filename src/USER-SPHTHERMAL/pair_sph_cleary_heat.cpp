@@ -500,9 +500,11 @@ template <int KERNEL> void PairSPHClearyHeat::update_correction()
 
 // the regularisation epsilon of sph_second_moment.h: measured on the
 // two-material slab jittered by 0.2 spacings (examples/conduction-disorder,
-// distances given), largest error at t1 / 10 t1 and run time: 1e-4
-// 0.588 / 0.111 %, 2.5 s; 1e-5 0.577 / 0.085 %, 4.4 s; 1e-6 0.611 / 0.064 %,
-// 7.2 s; exact 0.657 / 0.061 %, 108 s; the lattice 0.444 / 0.046 %
+// distances given), largest error at t1 / 10 t1 and run time (tolerance
+// 1e-10): 1e-4 0.588 / 0.111 %, 2.5 s; 1e-5 0.577 / 0.085 %, 4.4 s; 1e-6
+// 0.611 / 0.064 %, 7.2 s; unregularised 0.657 / 0.061 % (the numpy model,
+// tools/disorder_second_order.py), a 108 s solve here; the lattice 0.444 /
+// 0.046 %
 static constexpr double SECOND_REGULARIZATION = 1e-6;
 // the solver's limits: residual of Phi's gradient relative to V / h^2, and
 // step counts far above what converging cases take (15 Newton steps;
@@ -572,22 +574,28 @@ void PairSPHClearyHeat::solve_second()
   if (!second_result.converged) second_warned = 1;
 }
 
-void PairSPHClearyHeat::second_forward(void *context, double *values, int n)
+// n values per atom of 'values': the owners' to their ghosts (forward) or
+// the ghosts' added to their owners' (reverse)
+void PairSPHClearyHeat::second_exchange(void *context, double *values, int n, bool reverse)
 {
   auto self = static_cast<PairSPHClearyHeat *>(context);
   self->comm_stage = COMM_SECOND;
   self->comm_values = values;
   self->comm_count = n;
-  SPHCompat::forward_comm(self->comm, self);
+  if (reverse)
+    SPHCompat::reverse_comm(self->comm, self);
+  else
+    SPHCompat::forward_comm(self->comm, self);
+}
+
+void PairSPHClearyHeat::second_forward(void *context, double *values, int n)
+{
+  second_exchange(context, values, n, false);
 }
 
 void PairSPHClearyHeat::second_reverse(void *context, double *values, int n)
 {
-  auto self = static_cast<PairSPHClearyHeat *>(context);
-  self->comm_stage = COMM_SECOND;
-  self->comm_values = values;
-  self->comm_count = n;
-  SPHCompat::reverse_comm(self->comm, self);
+  second_exchange(context, values, n, true);
 }
 
 double PairSPHClearyHeat::second_sum(void *context, double value)

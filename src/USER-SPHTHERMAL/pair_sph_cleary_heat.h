@@ -124,6 +124,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   // values per atom of the array comm_values
   double *comm_values;
   int comm_count;
+  static void second_exchange(void *context, double *values, int n, bool reverse);
   static void second_forward(void *context, double *values, int n);
   static void second_reverse(void *context, double *values, int n);
   static double second_sum(void *context, double value);
