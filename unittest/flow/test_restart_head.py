@@ -119,7 +119,6 @@ def main():
         named = sorted(who.split()[1] if who else "?" for who, _ in owners)
         if named != sorted(STYLES):
             sys.exit(f"FAIL: heads in the restart file for {named}, expected {sorted(STYLES)}")
-        version = struct.unpack_from("i", data, heads[0] + 4)[0]
 
         def reads(name, content, expect):
             path = os.path.join(tmp, name)
@@ -139,6 +138,8 @@ def main():
         for (who, is_fix), at in zip(owners, heads):
             short = who.split()[1].replace("/", "_").lower()
             what = "state data" if is_fix else "settings"
+            # each style's own layout version
+            version = struct.unpack_from("i", data, at + 4)[0]
             raised = data[:at + 4] + struct.pack("i", version + 1) + data[at + 8:]
             reads(f"version_{short}.restart", raised,
                   [f"{who}: the restart file's {what} are of version {version + 1}, "
