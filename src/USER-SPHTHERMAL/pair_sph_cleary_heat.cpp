@@ -822,17 +822,30 @@ void PairSPHClearyHeat::given_interface()
 {
   const double *const given = atom->dvector[distance_index];
   const double *const near = iface_near;
+  // the lowest ID of an atom with a bad distance, on every rank (error->all:
+  // error->one's message can be lost with the abort)
+  tagint bad = MAXTAGINT;
+  double bad_value = 0.0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (near[i] == 0.0) {
       iface_distance[i] = NO_INTERFACE;
       continue;
     }
-    if (!(given[i] > 0.0) || !std::isfinite(given[i]))
-      error->one(FLERR,
-                 "Pair style sph/cleary/heat: atom {} has an atom of another conductivity within "
-                 "the kernel support, but its distance {} from the interface is {} (must be > 0)",
-                 atom->tag[i], distance_name, given[i]);
+    if ((!(given[i] > 0.0) || !std::isfinite(given[i])) && atom->tag[i] < bad) {
+      bad = atom->tag[i];
+      bad_value = given[i];
+    }
     iface_distance[i] = given[i];
+  }
+  tagint bad_all = MAXTAGINT;
+  MPI_Allreduce(&bad, &bad_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (bad_all != MAXTAGINT) {
+    double value = (bad == bad_all) ? bad_value : 0.0, value_all = 0.0;
+    MPI_Allreduce(&value, &value_all, 1, MPI_DOUBLE, MPI_SUM, world);
+    error->all(FLERR,
+               "Pair style sph/cleary/heat: atom {} has an atom of another conductivity within "
+               "the kernel support, but its distance {} from the interface is {} (must be > 0)",
+               bad_all, distance_name, value_all);
   }
   comm_stage = COMM_IFACE_DISTANCE;
   SPHCompat::forward_comm(comm, this);
