@@ -220,6 +220,26 @@ static inline int sphs_gather_j(const sphs_problem *p, int j)
   return p->newton || j < p->nlocal;
 }
 
+/* V_a / h^2: the target's diagonal, the unit of the residuals and of the
+   regularisation */
+static inline double sphs_scale(const sphs_problem *p, int a)
+{
+  return p->volume[a] / (p->h * p->h);
+}
+
+/* out_i += s F(r_ij) and, where this rank gathers j's side, out_j += s F(r_ji) */
+static inline void sphs_scatter(const sphs_problem *p, const sphs_pair *pair, const double *f,
+                                double s, double *out)
+{
+  const int n = sphs_count(p->dim);
+  double *oi = out + (size_t) pair->i * n, *oj = out + (size_t) pair->j * n;
+  const int to_j = sphs_gather_j(p, pair->j);
+  for (int k = 0; k < n; k++) {
+    oi[k] += s * f[k];
+    if (to_j) oj[k] += s * (k < p->dim ? -f[k] : f[k]);
+  }
+}
+
 /* Phi at nu (nu's ghosts current); with gradient: its gradient on the
    owned atoms (0 where unconstrained), the active flags and the arguments */
 static inline double sphs_phi(const sphs_problem *p, const double *nu, const double *basis,
@@ -237,21 +257,14 @@ static inline double sphs_phi(const sphs_problem *p, const double *nu, const dou
     phi += sphs_share(p, pair->j) * 0.5 * pair->g * w * w;
     if (grad) {
       arg[q] = a;
-      double *gi = grad + (size_t) pair->i * n, *gj = grad + (size_t) pair->j * n;
-      const int to_j = sphs_gather_j(p, pair->j);
-      for (int k = 0; k < n; k++) {
-        gi[k] += pair->g * w * f[k];
-        if (to_j) gj[k] += pair->g * w * (k < p->dim ? -f[k] : f[k]);
-      }
+      sphs_scatter(p, pair, f, pair->g * w, grad);
     }
   }
   for (int a = 0; a < p->nlocal; a++)
     if (p->constrained[a])
       for (int k = 0; k < n; k++) {
         const double v = nu[(size_t) a * n + k];
-        phi += v *
-            (0.5 * p->regularization * p->volume[a] / (p->h * p->h) * v -
-             target[(size_t) a * n + k]);
+        phi += v * (0.5 * p->regularization * sphs_scale(p, a) * v - target[(size_t) a * n + k]);
       }
   if (grad) {
     if (p->newton) p->exchange.reverse(p->exchange.context, grad, n);
@@ -259,7 +272,7 @@ static inline double sphs_phi(const sphs_problem *p, const double *nu, const dou
       for (int k = 0; k < n; k++)
         grad[(size_t) a * n + k] = p->constrained[a]
             ? grad[(size_t) a * n + k] - target[(size_t) a * n + k] +
-                p->regularization * p->volume[a] / (p->h * p->h) * nu[(size_t) a * n + k]
+                p->regularization * sphs_scale(p, a) * nu[(size_t) a * n + k]
             : 0.0;
   }
   return p->exchange.sum(p->exchange.context, phi);
@@ -278,14 +291,9 @@ static inline void sphs_hessian_apply(const sphs_problem *p, const double *basis
     if (!(arg[q] > 0.0)) continue;
     const sphs_pair *pair = &p->pairs[q];
     const double *f = basis + (size_t) q * n;
-    const double s =
-        pair->g * sphs_linear(p->dim, f, v + (size_t) pair->i * n, v + (size_t) pair->j * n);
-    double *oi = out + (size_t) pair->i * n, *oj = out + (size_t) pair->j * n;
-    const int to_j = sphs_gather_j(p, pair->j);
-    for (int k = 0; k < n; k++) {
-      oi[k] += s * f[k];
-      if (to_j) oj[k] += s * (k < p->dim ? -f[k] : f[k]);
-    }
+    sphs_scatter(
+        p, pair, f,
+        pair->g * sphs_linear(p->dim, f, v + (size_t) pair->i * n, v + (size_t) pair->j * n), out);
   }
   if (p->newton) p->exchange.reverse(p->exchange.context, out, n);
   for (int a = 0; a < p->nlocal; a++)
@@ -333,7 +341,7 @@ static inline sphs_result sphs_solve(const sphs_problem *p, double *nu, double *
     /* the largest residual relative to each atom's V / h^2 */
     double worst = 0.0;
     for (int a = 0; a < p->nlocal; a++) {
-      const double scale = p->volume[a] * inv_h * inv_h;
+      const double scale = sphs_scale(p, a);
       for (int k = 0; k < n; k++) worst = fmax(worst, fabs(grad[(size_t) a * n + k]) / scale);
     }
     result.residual = p->exchange.max(p->exchange.context, worst);
@@ -380,8 +388,8 @@ static inline sphs_result sphs_solve(const sphs_problem *p, double *nu, double *
       double trace = 0.0;
       for (int k = 0; k < n; k++) trace += b[k * n + k];
       for (int k = 0; k < n; k++) {
-        shift[(size_t) a * n + k] = damping * b[k * n + k] + 1e-12 * trace +
-            p->regularization * p->volume[a] * inv_h * inv_h;
+        shift[(size_t) a * n + k] =
+            damping * b[k * n + k] + 1e-12 * trace + p->regularization * sphs_scale(p, a);
         b[k * n + k] += shift[(size_t) a * n + k];
       }
       if (!sphs_cholesky(n, b)) {
@@ -446,7 +454,7 @@ static inline sphs_result sphs_solve(const sphs_problem *p, double *nu, double *
   for (int q = 0; q < p->npairs; q++) result.clipped += !(arg[q] > 0.0);
   double worst = 0.0;
   for (int a = 0; a < p->nlocal; a++) {
-    const double scale = p->volume[a] * inv_h * inv_h;
+    const double scale = sphs_scale(p, a);
     if (!p->constrained[a]) continue;
     for (int k = 0; k < n; k++) {
       const size_t m = (size_t) a * n + k;
