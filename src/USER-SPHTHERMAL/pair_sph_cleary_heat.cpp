@@ -53,9 +53,9 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
 {
   // S and the state of the correction; the interface's estimate; nu of 'correction second'
   comm_forward = SPHS_MAX;
-  // the moments of the correction and the interface; relax_rate; the
-  // blocks of the Hessian of 'correction second'
-  comm_reverse = SPHS_MAX * SPHS_MAX;
+  // the moments of the correction and the interface; relax_rate (init_style()
+  // makes room for the Hessian blocks of 'correction second')
+  comm_reverse = 9;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -1278,6 +1278,9 @@ void PairSPHClearyHeat::init_style()
     error->warning(FLERR,
                    "Pair style sph/cleary/heat: mean interface has no effect: every atom type has "
                    "the same conductivity law in fix sph/materials");
+  // the Hessian blocks of 'correction second' are the largest reverse
+  // communication; Comm sizes its buffers after this (LAMMPS::init)
+  comm_reverse = (correct == CORRECT_SECOND) ? SPHS_MAX * SPHS_MAX : 9;
   relax_wanted = 0;    // set again by the styles that want it, at their init
   corr_valid = 0;      // the correction's factors are made anew at the first step
   second_warned = 0;
