@@ -129,6 +129,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   static void second_reverse(void *context, double *values, int n);
   static double second_sum(void *context, double value);
   static double second_max(void *context, double value);
+  static void second_sum_array(void *context, double *values, int n);
   enum {
     COMM_RELAX,
     COMM_MOMENT,
