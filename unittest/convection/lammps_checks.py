@@ -12,7 +12,7 @@ from cavity_fv import DE_VAHL_DAVIS  # noqa: E402,F401
 from lammps_log import late_rows, longest_thermo_table, thermo_tables  # noqa: E402,F401
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphtest import lammps_arguments, mpi_env, mpi_prefix  # noqa: E402,F401
+from sphtest import Checks, lammps_arguments, mpi_env, mpi_prefix  # noqa: E402,F401
 
 
 def run_input(lmp, input_file, variables, cwd, np_=1, mpirun="mpirun", log="none"):

@@ -16,7 +16,7 @@ import re
 import sys
 import tempfile
 
-from lammps_checks import lammps_arguments, read_dump, run_input
+from lammps_checks import Checks, lammps_arguments, read_dump, run_input
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 IN_AIR = os.path.join(HERE, "..", "..", "examples", "convection-cavity", "in.air")
@@ -39,12 +39,7 @@ def main():
     p = argparse.ArgumentParser(description=__doc__)
     lammps_arguments(p, ranks=False)
     a = p.parse_args()
-    failures = []
-
-    def check(ok, message):
-        print(("ok   " if ok else "FAIL ") + message)
-        if not ok:
-            failures.append(message)
+    check = Checks()
 
     with tempfile.TemporaryDirectory() as tmp:
         heat_2d, gradient_2d, count_2d = run(a, tmp, 0)
@@ -54,7 +49,7 @@ def main():
         off = (three - two) / two
         check(abs(off) < 0.02, f"Nu from the {name}: 3-D {three:.6f}, 2-D {two:.6f} "
               f"({100 * off:+.3f} %, within 2 %)")
-    if failures:
+    if check.failures:
         sys.exit(1)
     print("PASS")
 

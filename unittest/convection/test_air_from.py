@@ -20,7 +20,7 @@ import tempfile
 
 import numpy as np
 
-from lammps_checks import lammps_arguments, read_dump, run_input
+from lammps_checks import Checks, lammps_arguments, read_dump, run_input
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 IN_AIR = os.path.join(HERE, "..", "..", "examples", "convection-cavity", "in.air")
@@ -36,12 +36,7 @@ def main():
     p = argparse.ArgumentParser(description=__doc__)
     lammps_arguments(p, ranks=False)
     a = p.parse_args()
-    failures = []
-
-    def check(ok, message):
-        print(("ok   " if ok else "FAIL ") + message)
-        if not ok:
-            failures.append(message)
+    check = Checks()
 
     with tempfile.TemporaryDirectory() as tmp:
         run(a, tmp, {"seconds": 3.0, "every": 10000, "out": "first.dump"})
@@ -73,7 +68,7 @@ def main():
           "average)")
     dT = np.abs(T2 - T1).mean()
     check(dT < 0.2, f"... with its temperatures ({dT:.4f} K apart on average)")
-    return 1 if failures else 0
+    return 1 if check.failures else 0
 
 
 if __name__ == "__main__":

@@ -46,6 +46,18 @@ def lammps_arguments(parser, mpi=True, ranks=True):
     return parser
 
 
+class Checks:
+    """check(ok, message): prints each check and keeps the failed ones."""
+
+    def __init__(self):
+        self.failures = []
+
+    def __call__(self, ok, message):
+        print(("ok   " if ok else "FAIL ") + message)
+        if not ok:
+            self.failures.append(message)
+
+
 def finish(failures):
     """Exit with the failed checks named, or print ok."""
     if failures:
