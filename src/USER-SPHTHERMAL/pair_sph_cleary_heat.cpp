@@ -55,7 +55,7 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
   comm_forward = SPHS_MAX;
   // the moments of the correction and the interface; relax_rate (init_style()
   // makes room for the Hessian blocks of 'correction second')
-  comm_reverse = 9;
+  comm_reverse = COMM_REVERSE_MOMENTS;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -514,9 +514,11 @@ static constexpr int SECOND_NEWTON_STEPS = 50;
 static constexpr int SECOND_CG_STEPS = 100000;
 // the coarse space of the two-level preconditioner: grid spacing in h and
 // the largest coarse dimension (a dense factor of that many rows). The
-// slab of 80 x 20 jittered by 0.2 spacings, h = 1.3 spacings (CG steps,
-// solve and one step, one core): one level 20,348, 9.9 s; grid of 4 h
-// 4,050, 9.9 s; 3 h 2,055, 5.5 s; 2 h 733, 3.7 s; 1.5 h 325, 4.5 s
+// slab of 80 x 20 jittered by 0.2 spacings, h = 1.3 spacings, CG steps
+// with the coarse matrix made anew each Newton step (a loaded machine:
+// the times compare only with each other): one level 20,348, 9.9 s; grid
+// of 4 h 4,050, 9.9 s; 3 h 2,055, 5.5 s; 2 h 733, 3.7 s; 1.5 h 325, 4.5 s.
+// Made once per solve, as now, 2 h takes 546 steps, 2.3 s on an idle core.
 static constexpr double SECOND_COARSE_SPACING = 2.0;
 static constexpr int SECOND_COARSE_SIZE = 2000;
 
@@ -1297,7 +1299,7 @@ void PairSPHClearyHeat::init_style()
                    "the same conductivity law in fix sph/materials");
   // the Hessian blocks of 'correction second' are the largest reverse
   // communication; Comm sizes its buffers after this (LAMMPS::init)
-  comm_reverse = (correct == CORRECT_SECOND) ? SPHS_MAX * SPHS_MAX : 9;
+  comm_reverse = (correct == CORRECT_SECOND) ? SPHS_MAX * SPHS_MAX : COMM_REVERSE_MOMENTS;
   relax_wanted = 0;    // set again by the styles that want it, at their init
   corr_valid = 0;      // the correction's factors are made anew at the first step
   second_warned = 0;

@@ -124,6 +124,9 @@ class PairSPHClearyHeat : public PairSPHKernel {
   // values per atom of the array comm_values
   double *comm_values;
   int comm_count;
+  // values per atom of the largest reverse communication but that of
+  // 'correction second': the moments of the correction (6 and 3)
+  static constexpr int COMM_REVERSE_MOMENTS = 9;
   static void second_exchange(void *context, double *values, int n, bool reverse);
   static void second_forward(void *context, double *values, int n);
   static void second_reverse(void *context, double *values, int n);

@@ -342,12 +342,14 @@ static inline double sphs_dot(const sphs_problem *p, const double *u, const doub
 typedef struct {
   int dim, n;
   int count[3];
-  int size;       /* nodes x dim: the coarse dimension (0: one level) */
-  double *grid;   /* nall x (dim + 1): the grid coordinates of each atom (of
+  int size;          /* nodes x dim: the coarse dimension (0: one level) */
+  double spacing[3]; /* the grid's spacing per direction */
+  double h;          /* the kernel's h, which scales the columns' second-moment part */
+  double *grid;      /* nall x (dim + 1): the grid coordinates of each atom (of
                      its owner, so that periodic images agree) and whether it
                      is constrained */
-  double *matrix; /* size x size: P^T H P, factored */
-  double *vector; /* size */
+  double *matrix;    /* size x size: P^T H P, factored */
+  double *vector;    /* size */
 } sphs_coarse;
 
 /* the quadratic B-spline of unit knot spacing centred on 0, and its
@@ -424,8 +426,7 @@ static inline void sphs_coarse_column(int dim, double h, double phi, const doubl
 
 /* An atom's coarse columns: for each of its nodes and each direction, the
    column index and the column (n values); returns how many */
-static inline int sphs_coarse_columns(const sphs_coarse *c, const double *spacing, double h, int a,
-                                      int *index, double *columns)
+static inline int sphs_coarse_columns(const sphs_coarse *c, int a, int *index, double *columns)
 {
   const double *t = c->grid + (size_t) a * (c->dim + 1);
   if (!(t[c->dim] > 0.0)) return 0;
@@ -435,10 +436,10 @@ static inline int sphs_coarse_columns(const sphs_coarse *c, const double *spacin
   int m = 0;
   for (int q = 0; q < corners; q++) {
     double grad[3];
-    for (int e = 0; e < 3; e++) grad[e] = dphi[q][e] / spacing[e];
+    for (int e = 0; e < 3; e++) grad[e] = dphi[q][e] / c->spacing[e];
     for (int k = 0; k < c->dim; k++, m++) {
       index[m] = node[q] * c->dim + k;
-      sphs_coarse_column(c->dim, h, phi[q], grad, k, columns + (size_t) m * c->n);
+      sphs_coarse_column(c->dim, c->h, phi[q], grad, k, columns + (size_t) m * c->n);
     }
   }
   return m;
@@ -446,8 +447,8 @@ static inline int sphs_coarse_columns(const sphs_coarse *c, const double *spacin
 
 /* the grid over the constrained atoms, each atom's grid coordinates and the
    coarse arrays; returns 0 (one level) without positions or constrained
-   atoms. spacing[]: the grid's spacing per direction. */
-static inline int sphs_coarse_setup(const sphs_problem *p, sphs_coarse *c, double spacing[3])
+   atoms */
+static inline int sphs_coarse_setup(const sphs_problem *p, sphs_coarse *c)
 {
   const int dim = p->dim;
   c->dim = dim;
@@ -483,7 +484,8 @@ static inline int sphs_coarse_setup(const sphs_problem *p, sphs_coarse *c, doubl
   }
   for (int d = dim; d < 3; d++) c->count[d] = 1;
   for (int d = 0; d < 3; d++)
-    spacing[d] = (d < dim && c->count[d] > 3) ? (hi[d] - lo[d]) / (c->count[d] - 3) : 1.0;
+    c->spacing[d] = (d < dim && c->count[d] > 3) ? (hi[d] - lo[d]) / (c->count[d] - 3) : 1.0;
+  c->h = p->h;
   const size_t width = (size_t) dim + 1;
   c->grid = (double *) malloc((size_t) p->nall * width * sizeof(double));
   c->matrix = (double *) malloc((size_t) c->size * c->size * sizeof(double));
@@ -499,7 +501,7 @@ static inline int sphs_coarse_setup(const sphs_problem *p, sphs_coarse *c, doubl
   for (int a = 0; a < p->nlocal; a++) {
     double *t = c->grid + (size_t) a * width;
     for (int d = 0; d < dim; d++)
-      t[d] = (c->count[d] > 3) ? (p->x[3 * a + d] - lo[d]) / spacing[d] : 0.0;
+      t[d] = (c->count[d] > 3) ? (p->x[3 * a + d] - lo[d]) / c->spacing[d] : 0.0;
     t[dim] = p->constrained[a] ? 1.0 : 0.0;
   }
   p->exchange.forward(p->exchange.context, c->grid, (int) width);
@@ -516,8 +518,8 @@ static inline void sphs_coarse_free(sphs_coarse *c)
 
 /* P^T (H + diag(shift)) P at the arguments arg, summed over the ranks and
    factored; 0 if it is not positive definite */
-static inline int sphs_coarse_assemble(const sphs_problem *p, sphs_coarse *c, const double *spacing,
-                                       const double *basis, const double *arg, const double *shift)
+static inline int sphs_coarse_assemble(const sphs_problem *p, sphs_coarse *c, const double *basis,
+                                       const double *arg, const double *shift)
 {
   enum { MAX_COLUMNS = 27 * 3 };
   const int n = c->n, size = c->size, dim = p->dim;
@@ -528,8 +530,8 @@ static inline int sphs_coarse_assemble(const sphs_problem *p, sphs_coarse *c, co
   for (int q = 0; q < p->npairs; q++) {
     if (!(arg[q] > 0.0)) continue;
     const sphs_pair *pair = &p->pairs[q];
-    const int ni = sphs_coarse_columns(c, spacing, p->h, pair->i, index_i, col_i);
-    const int nj = sphs_coarse_columns(c, spacing, p->h, pair->j, index_j, col_j);
+    const int ni = sphs_coarse_columns(c, pair->i, index_i, col_i);
+    const int nj = sphs_coarse_columns(c, pair->j, index_j, col_j);
     if (ni + nj == 0) continue;
     /* t = P_i^T F(r_ij) + P_j^T F(r_ji), the columns the pair's row of H reaches;
        a column both atoms share is summed into one entry */
@@ -561,7 +563,7 @@ static inline int sphs_coarse_assemble(const sphs_problem *p, sphs_coarse *c, co
     }
   }
   for (int a = 0; a < p->nlocal; a++) {
-    const int na = sphs_coarse_columns(c, spacing, p->h, a, index_i, col_i);
+    const int na = sphs_coarse_columns(c, a, index_i, col_i);
     const double *s = shift + (size_t) a * n;
     for (int u = 0; u < na; u++)
       for (int v = 0; v < na; v++) {
@@ -583,8 +585,8 @@ static inline int sphs_coarse_assemble(const sphs_problem *p, sphs_coarse *c, co
 }
 
 /* z += P (P^T H P)^-1 P^T r on the owned atoms */
-static inline void sphs_coarse_apply(const sphs_problem *p, sphs_coarse *c, const double *spacing,
-                                     const double *r, double *z)
+static inline void sphs_coarse_apply(const sphs_problem *p, sphs_coarse *c, const double *r,
+                                     double *z)
 {
   enum { MAX_COLUMNS = 27 * 3 };
   const int n = c->n;
@@ -592,7 +594,7 @@ static inline void sphs_coarse_apply(const sphs_problem *p, sphs_coarse *c, cons
   double columns[MAX_COLUMNS * SPHS_MAX];
   for (int k = 0; k < c->size; k++) c->vector[k] = 0.0;
   for (int a = 0; a < p->nlocal; a++) {
-    const int na = sphs_coarse_columns(c, spacing, p->h, a, index, columns);
+    const int na = sphs_coarse_columns(c, a, index, columns);
     const double *ra = r + (size_t) a * n;
     for (int u = 0; u < na; u++) {
       double s = 0.0;
@@ -603,7 +605,7 @@ static inline void sphs_coarse_apply(const sphs_problem *p, sphs_coarse *c, cons
   p->exchange.sum_array(p->exchange.context, c->vector, c->size);
   sphs_cholesky_solve(c->size, c->matrix, c->vector, c->vector);
   for (int a = 0; a < p->nlocal; a++) {
-    const int na = sphs_coarse_columns(c, spacing, p->h, a, index, columns);
+    const int na = sphs_coarse_columns(c, a, index, columns);
     double *za = z + (size_t) a * n;
     for (int u = 0; u < na; u++) {
       const double y = c->vector[index[u]];
@@ -635,8 +637,7 @@ static inline sphs_result sphs_solve(const sphs_problem *p, double *nu, double *
   for (int q = 0; q < p->npairs; q++) sphs_basis(dim, p->pairs[q].r, inv_h, basis + (size_t) q * n);
   p->exchange.forward(p->exchange.context, nu, n);
   sphs_coarse coarse;
-  double coarse_spacing[3];
-  sphs_coarse_setup(p, &coarse, coarse_spacing);
+  sphs_coarse_setup(p, &coarse);
   result.coarse_size = coarse.size;
   int two_level = 0;
 
@@ -707,7 +708,7 @@ static inline sphs_result sphs_solve(const sphs_problem *p, double *nu, double *
        steps: the 80 x 20 slab jittered by 0.2 spacings took 546 CG steps
        with it, 733 with a new one each Newton step (and the factoring) */
     if (coarse.size && result.newton_steps == 1)
-      two_level = sphs_coarse_assemble(p, &coarse, coarse_spacing, basis, arg, shift);
+      two_level = sphs_coarse_assemble(p, &coarse, basis, arg, shift);
 
     /* H dir = -grad by preconditioned conjugate gradients, to a relative
        residual that shrinks with the gradient (inexact Newton) */
@@ -727,7 +728,7 @@ static inline sphs_result sphs_solve(const sphs_problem *p, double *nu, double *
         else
           for (int k = 0; k < n; k++) z[k] = 0.0;
       }
-      if (two_level) sphs_coarse_apply(p, &coarse, coarse_spacing, cg_r, cg_z);
+      if (two_level) sphs_coarse_apply(p, &coarse, cg_r, cg_z);
       const double rz_next = sphs_dot(p, cg_r, cg_z);
       if (it == 0)
         for (int k = 0; k < p->nlocal * n; k++) cg_p[k] = cg_z[k];

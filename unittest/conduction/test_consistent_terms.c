@@ -822,8 +822,7 @@ static void check_coarse(int dim)
   }
   const sphs_problem problem = second_problem(p, 0.0, 2.0);
   sphs_coarse coarse;
-  double spacing[3];
-  if (!sphs_coarse_setup(&problem, &coarse, spacing)) {
+  if (!sphs_coarse_setup(&problem, &coarse)) {
     expect(0, "a coarse grid", 0.0, 1.0);
     return;
   }
@@ -839,7 +838,7 @@ static void check_coarse(int dim)
   static double columns[27 * 3 * SPHS_MAX];
   for (int a = 0; a < p->n; a++) {
     for (int l = 0; l < n; l++) nu[a * n + l] = bare[a * n + l] = 0.0;
-    const int na = sphs_coarse_columns(&coarse, spacing, problem.h, a, index, columns);
+    const int na = sphs_coarse_columns(&coarse, a, index, columns);
     for (int u = 0; u < na; u++) {
       const int node = index[u] / dim, k = index[u] % dim;
       const int at[3] = {node % coarse.count[0], (node / coarse.count[0]) % coarse.count[1],
