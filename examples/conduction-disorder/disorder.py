@@ -120,8 +120,15 @@ def errors(a):
     errs = []
     for (t, c), T_ref in zip(picked, T_fv):
         errs.append(100.0 * np.max(np.abs(c["c_T"] - np.interp(c["x"], x_fv, T_ref))))
+    # for scale: the same finite-volume scheme (second order, the interface on a cell face)
+    # with one cell per particle spacing
+    x_nx, T_nx = fv1d.solve(layers, 1.0, a.nx, [t for t, _ in picked])
+    errs_nx = [100.0 * np.max(np.abs(T - np.interp(x_nx, x_fv, T_ref)))
+               for T, T_ref in zip(T_nx, T_fv)]
     drift = float(np.max(np.abs(energy[:, 1] / energy[0, 1] - 1.0)))
     print(f"finite-volume reference: {a.cells} cells, own error {fv_error:.4f} % of the jump")
+    print(f"finite volumes on {a.nx} cells (one per spacing): max error at t1 {errs_nx[0]:.3f} %, "
+          f"at 10 t1 {errs_nx[1]:.3f} %")
     print(f"{a.label}: max error at t1 = {picked[0][0]:g} s: {errs[0]:.3f} %, at 10 t1: "
           f"{errs[1]:.3f} %; largest change of sum(m esph): {drift:.1e}")
     if a.results:
