@@ -45,7 +45,7 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     relax_wanted(0), relax_rate(nullptr), nmax_relax(0), correct(CORRECT_NONE), sweeps(5),
     nmax_correct(0), corr_s(nullptr), corr_kinv(nullptr), corr_lambda(nullptr),
     corr_deficit(nullptr), corr_coupling(nullptr), corr_state(nullptr), second_result(),
-    second_warned(0), comm_values(nullptr), comm_count(0), comm_stage(COMM_RELAX),
+    second_warned(0), second_solved_at(-1), comm_values(nullptr), comm_count(0), comm_stage(COMM_RELAX),
     interface_types(nullptr), type_conductivity(nullptr), nmax_interface(0),
     iface_distance(nullptr), iface_moment(nullptr), iface_vector(nullptr), iface_normal(nullptr),
     iface_sum(nullptr), iface_near(nullptr), distance_index(-1), nmax_pairs(0), corr_x(nullptr),
@@ -493,9 +493,13 @@ template <int KERNEL> void PairSPHClearyHeat::update_correction()
 
 /* ----------------------------------------------------------------------
    'correction second': the multipliers nu of sph_second_moment.h for this
-   step's pairs, from nu = 0 (so that a run split by a restart repeats the
-   factors exactly), and each pair's factor; the atoms of incomplete
-   support (corr_state 0) keep nu = 0
+   step's pairs, and each pair's factor; the atoms of incomplete support
+   (corr_state 0) keep nu = 0. The solve starts from the last solution
+   while the atoms keep their indices (no neighbour-list build since; for
+   moving particles), else from nu = 0, which every run's setup does: the
+   start is the same on any number of ranks, and a run split by a restart
+   repeats the factors exactly where the split falls on a build and to
+   the solver's tolerance elsewhere
 ------------------------------------------------------------------------- */
 
 // the regularisation epsilon of sph_second_moment.h: measured on the
@@ -569,8 +573,11 @@ void PairSPHClearyHeat::solve_second()
   problem.coarse = SECOND_COARSE_SPACING;
   problem.max_coarse = SECOND_COARSE_SIZE;
   second_work.resize(sphs_work_size(&problem));
-  second_nu.assign((size_t) nall * n, 0.0);
+  const int warm = neighbor->ago > 0 && second_solved_at >= neighbor->lastcall &&
+      second_nu.size() == (size_t) nall * n;
+  if (!warm) second_nu.assign((size_t) nall * n, 0.0);
   second_result = sphs_solve(&problem, second_nu.data(), second_work.data());
+  second_solved_at = update->ntimestep;
 
   for (auto &p : support_pairs) {
     double f[SPHS_MAX];

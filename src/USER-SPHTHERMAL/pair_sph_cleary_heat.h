@@ -119,6 +119,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   std::vector<sphs_pair> second_pairs;
   sphs_result second_result;    // of the last solve, for report_setup()
   int second_warned;
+  bigint second_solved_at;    // step of the last solve, -1 before the first
   void solve_second();
   // the solver's communication (sph_second_moment.h's sphs_exchange): n
   // values per atom of the array comm_values
