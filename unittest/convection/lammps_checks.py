@@ -1,6 +1,7 @@
 """Shared by the convection checks: run an input script through LAMMPS and
 read what it wrote (the readers of tools/)."""
 
+import argparse
 import os
 import subprocess
 import sys
@@ -13,6 +14,13 @@ from lammps_log import late_rows, longest_thermo_table, thermo_tables  # noqa: E
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
 from sphtest import Checks, lammps_arguments, mpi_env, mpi_prefix  # noqa: E402,F401
+
+
+def serial_check(doc):
+    """The arguments of a serial check (--lmp, --plugin) and its Checks."""
+    parser = argparse.ArgumentParser(description=doc)
+    lammps_arguments(parser, ranks=False)
+    return parser.parse_args(), Checks()
 
 
 def run_input(lmp, input_file, variables, cwd, np_=1, mpirun="mpirun", log="none"):

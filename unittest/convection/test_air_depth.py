@@ -10,13 +10,12 @@ L^2, the heat's number would be 17 % low. The 3-D dump must hold nz times the 2-
 
 Usage: test_air_depth.py --lmp LMP --plugin PLUGIN
 """
-import argparse
 import os
 import re
 import sys
 import tempfile
 
-from lammps_checks import Checks, lammps_arguments, read_dump, run_input
+from lammps_checks import read_dump, run_input, serial_check
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 IN_AIR = os.path.join(HERE, "..", "..", "examples", "convection-cavity", "in.air")
@@ -36,10 +35,7 @@ def run(a, cwd, nz):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__)
-    lammps_arguments(p, ranks=False)
-    a = p.parse_args()
-    check = Checks()
+    a, check = serial_check(__doc__)
 
     with tempfile.TemporaryDirectory() as tmp:
         heat_2d, gradient_2d, count_2d = run(a, tmp, 0)

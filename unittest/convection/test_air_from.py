@@ -13,14 +13,13 @@ without the dump's state the second run would start on the lattice at
 
 Usage: test_air_from.py --lmp LMP --plugin PLUGIN
 """
-import argparse
 import os
 import sys
 import tempfile
 
 import numpy as np
 
-from lammps_checks import Checks, lammps_arguments, read_dump, run_input
+from lammps_checks import read_dump, run_input, serial_check
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 IN_AIR = os.path.join(HERE, "..", "..", "examples", "convection-cavity", "in.air")
@@ -33,10 +32,7 @@ def run(a, cwd, variables):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__)
-    lammps_arguments(p, ranks=False)
-    a = p.parse_args()
-    check = Checks()
+    a, check = serial_check(__doc__)
 
     with tempfile.TemporaryDirectory() as tmp:
         run(a, tmp, {"seconds": 3.0, "every": 10000, "out": "first.dump"})

@@ -13,7 +13,6 @@ state set again on resuming, the dumps were 3 K and 2.5 spacings apart.
 
 Usage: test_air_resume.py --lmp LMP --plugin PLUGIN
 """
-import argparse
 import os
 import re
 import sys
@@ -21,7 +20,7 @@ import tempfile
 
 import numpy as np
 
-from lammps_checks import Checks, lammps_arguments, read_dump, run_input
+from lammps_checks import read_dump, run_input, serial_check
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 IN_AIR = os.path.join(HERE, "..", "..", "examples", "convection-cavity", "in.air")
@@ -39,10 +38,7 @@ def run(a, cwd, name, variables):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__)
-    lammps_arguments(p, ranks=False)
-    a = p.parse_args()
-    check = Checks()
+    a, check = serial_check(__doc__)
 
     with tempfile.TemporaryDirectory() as tmp:
         whole, nu_whole = run(a, tmp, "whole", {"seconds": 1.0})
