@@ -45,8 +45,8 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     relax_wanted(0), relax_rate(nullptr), nmax_relax(0), correct(CORRECT_NONE), sweeps(5),
     nmax_correct(0), corr_s(nullptr), corr_kinv(nullptr), corr_lambda(nullptr),
     corr_deficit(nullptr), corr_coupling(nullptr), corr_state(nullptr), second_result(),
-    second_warned(0), second_solved_at(-1), comm_values(nullptr), comm_count(0), comm_stage(COMM_RELAX),
-    interface_types(nullptr), type_conductivity(nullptr), nmax_interface(0),
+    second_warned(0), second_solved_at(-1), comm_values(nullptr), comm_count(0),
+    comm_stage(COMM_RELAX), interface_types(nullptr), type_conductivity(nullptr), nmax_interface(0),
     iface_distance(nullptr), iface_moment(nullptr), iface_vector(nullptr), iface_normal(nullptr),
     iface_sum(nullptr), iface_near(nullptr), distance_index(-1), nmax_pairs(0), corr_x(nullptr),
     corr_rho(nullptr), corr_valid(0), refresh_pairs(0)
