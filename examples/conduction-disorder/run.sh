@@ -9,7 +9,7 @@
 #   ./run.sh quick    jitter 0.2, k ratio 3, rho cv ratio 0.5, four operators (the CI
 #                     test, 30 seconds)
 #   ./run.sh steel-water  the steel/water lattice with h = dx, plain (the CI test,
-#                     about 40 seconds, most of it the reference)
+#                     about a minute, most of it the reference)
 # Environment: LMP, PLUGIN, NP (MPI ranks), OUT (default ./out), PYTHON,
 # OPERATORS (default: none consistent consistent+interface consistent+given
 # second+given).
