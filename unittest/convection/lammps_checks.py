@@ -3,6 +3,7 @@ read what it wrote (the readers of tools/)."""
 
 import argparse
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -21,6 +22,19 @@ def serial_check(doc):
     parser = argparse.ArgumentParser(description=doc)
     lammps_arguments(parser, ranks=False)
     return parser.parse_args(), Checks()
+
+
+def final_nusselt(out):
+    """The last Nusselt numbers the cavity inputs print at their end, from
+    their log or screen text: {"heat": (hot, cold), "gradient": (hot, cold),
+    "time": t}; stops the check when they are missing."""
+    heat = re.findall(r"^final: Nu_hot = (\S+) Nu_cold = (\S+) at t = (\S+)", out, re.M)
+    gradient = re.findall(r"^final, from the wall gradient: Nu_hot = (\S+) Nu_cold = (\S+)",
+                          out, re.M)
+    if not heat or not gradient:
+        sys.exit("FAIL: no final Nusselt numbers in the run's output")
+    hot, cold, time = (float(v) for v in heat[-1])
+    return {"heat": (hot, cold), "gradient": tuple(float(v) for v in gradient[-1]), "time": time}
 
 
 def run_input(lmp, input_file, variables, cwd, np_=1, mpirun="mpirun", log="none"):

@@ -11,11 +11,10 @@ L^2, the heat's number would be 17 % low. The 3-D dump must hold nz times the 2-
 Usage: test_air_depth.py --lmp LMP --plugin PLUGIN
 """
 import os
-import re
 import sys
 import tempfile
 
-from lammps_checks import read_dump, run_input, serial_check
+from lammps_checks import final_nusselt, read_dump, run_input, serial_check
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 IN_AIR = os.path.join(HERE, "..", "..", "examples", "convection-cavity", "in.air")
@@ -26,12 +25,9 @@ def run(a, cwd, nz):
     out = run_input(a.lmp, IN_AIR, {"plugin": os.path.abspath(a.plugin), "n": N, "nz": nz,
                                     "seconds": 1.0, "every": 100000, "out": f"air{nz}.dump"},
                     cwd)
-    heat = re.findall(r"^final: Nu_hot = (\S+)", out, re.M)
-    gradient = re.findall(r"^final, from the wall gradient: Nu_hot = (\S+)", out, re.M)
-    if not heat or not gradient:
-        sys.exit(f"FAIL: no final Nusselt numbers from the run with nz = {nz}")
+    final = final_nusselt(out)
     count = len(read_dump(os.path.join(cwd, f"air{nz}.dump"))["id"])
-    return float(heat[-1]), float(gradient[-1]), count
+    return final["heat"][0], final["gradient"][0], count
 
 
 def main():

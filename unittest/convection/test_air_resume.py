@@ -14,13 +14,12 @@ state set again on resuming, the dumps were 3 K and 2.5 spacings apart.
 Usage: test_air_resume.py --lmp LMP --plugin PLUGIN
 """
 import os
-import re
 import sys
 import tempfile
 
 import numpy as np
 
-from lammps_checks import read_dump, run_input, serial_check
+from lammps_checks import final_nusselt, read_dump, run_input, serial_check
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 IN_AIR = os.path.join(HERE, "..", "..", "examples", "convection-cavity", "in.air")
@@ -28,13 +27,12 @@ N = 12
 
 
 def run(a, cwd, name, variables):
-    run_input(a.lmp, IN_AIR, {"plugin": os.path.abspath(a.plugin), "n": N, "every": 10000,
-                              "out": name, **variables}, cwd, log="log." + name)
-    with open(os.path.join(cwd, "log." + name)) as f:
-        final = re.findall(r"^final: Nu_hot = (\S+) Nu_cold = (\S+) at t = (\S+)", f.read(), re.M)
+    out = run_input(a.lmp, IN_AIR, {"plugin": os.path.abspath(a.plugin), "n": N, "every": 10000,
+                                    "out": name, **variables}, cwd)
+    final = final_nusselt(out)
     dump = read_dump(os.path.join(cwd, name))
     order = np.argsort(dump["id"])
-    return {key: np.asarray(dump[key])[order] for key in dump}, [float(v) for v in final[-1]]
+    return {key: np.asarray(dump[key])[order] for key in dump}, [*final["heat"], final["time"]]
 
 
 def main():
