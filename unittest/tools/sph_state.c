@@ -53,12 +53,21 @@ static void gather_ids(void *lmp, Gathered *g)
       fprintf(stderr, "sph_state: %d owned atoms, LAMMPS counts %d\n", total, g->natoms);
       MPI_Abort(MPI_COMM_WORLD, 1);
     }
-    for (int n = 0; n < total; n++)
+    /* every row is written once: an ID out of range or given twice would
+       leave a row of uninitialised values */
+    char *seen = (char *) calloc((size_t) total + 1, 1);
+    for (int n = 0; n < total; n++) {
       if (g->ids[n] < 1 || g->ids[n] > total) {
         fprintf(stderr, "sph_state: atom ID %lld is not in 1..%d (the IDs must be consecutive)\n",
                 g->ids[n], total);
         MPI_Abort(MPI_COMM_WORLD, 1);
       }
+      if (seen[g->ids[n]]++) {
+        fprintf(stderr, "sph_state: atom ID %lld is given to more than one atom\n", g->ids[n]);
+        MPI_Abort(MPI_COMM_WORLD, 1);
+      }
+    }
+    free(seen);
   }
 }
 
