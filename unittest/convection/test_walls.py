@@ -32,14 +32,13 @@ Usage: test_walls.py CHECK --lmp LMP --plugin PLUGIN [--tolerance T]
 import argparse
 import os
 import re
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
 
-from lammps_checks import (DE_VAHL_DAVIS, lammps_arguments, late_rows, longest_thermo_table, mpi_env,
-                           mpi_prefix, read_dump, run_lammps)
+from lammps_checks import (DE_VAHL_DAVIS, final_nusselt, lammps_arguments, late_rows,
+                           longest_thermo_table, read_dump, run_input, run_lammps)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -181,23 +180,14 @@ def check_conserve(a, work):
 def run_cavity(a, work, np_=1, **variables):
     """examples/convection-cavity/in.cavity with these -var values on np_
     ranks; its screen output (the check stops if the run fails)."""
-    cmd = mpi_prefix(np_, a.mpirun) + [
-        a.lmp, "-log", "none", "-in", os.path.join(ROOT, "examples/convection-cavity/in.cavity"),
-        "-var", "plugin", a.plugin]
-    for name, value in variables.items():
-        cmd += ["-var", name, str(value)]
-    proc = subprocess.run(cmd, cwd=work, text=True, capture_output=True, env=mpi_env())
-    if proc.returncode != 0 or "final:" not in proc.stdout:
-        sys.stdout.write(proc.stdout + proc.stderr)
-        sys.exit(f"FAIL: cavity run ({' '.join(cmd)}) failed")
-    return proc.stdout
+    return run_input(a.lmp, os.path.join(ROOT, "examples/convection-cavity/in.cavity"),
+                     dict(plugin=a.plugin, **variables), work, np_, a.mpirun)
 
 
 def cavity_nu(a, work, thermal, n):
     out = run_cavity(a, work, ra=0, n=n, tend=a.tend if a.nz else 0.6, thermal=thermal, nz=a.nz,
                      out="cavity.dump")
-    m = re.search(r"final: Nu_hot = (\S+) Nu_cold = (\S+)", out)
-    return float(m.group(1)), float(m.group(2))
+    return final_nusselt(out, gradient=(thermal == "mirror"))["heat"]
 
 
 def check_cavity(a, work):
