@@ -41,6 +41,38 @@ def l2(sph, ref):
     return np.sqrt(((sph - ref) ** 2).sum() / (ref ** 2).sum())
 
 
+def final_state(dump, si):
+    """The last frame of a dump, in the cavity's units (x / L, v L / alpha,
+    theta) when si = (L, alpha, T_C, dT) is given."""
+    c = read_frames(dump)[-1][1]
+    state = {k: c[k] for k in ("x", "y", "z", "vx", "vy", "c_T") if k in c}
+    if si:
+        length, alpha, t_cold, t_diff = si
+        for k in ("x", "y", "z"):
+            if k in state:
+                state[k] = state[k] / length
+        for k in ("vx", "vy"):
+            state[k] = state[k] * length / alpha
+        state["c_T"] = (state["c_T"] - t_cold) / t_diff
+    return state
+
+
+def centre_lines(s, line, dx, keep=None):
+    """theta and v on y = 0.5, theta and u on x = 0.5 (Shepard averages at
+    the points of line) of the particles in keep (all if None)."""
+    x, y, vx, vy, T = (s[k] if keep is None else s[k][keep] for k in ("x", "y", "vx", "vy", "c_T"))
+    half = np.full(len(line), 0.5)
+    return (shepard(line, half, x, y, T, 2 * dx), shepard(line, half, x, y, vy, 2 * dx),
+            shepard(half, line, x, y, T, 2 * dx), shepard(half, line, x, y, vx, 2 * dx))
+
+
+def print_profile_differences(what, a, b):
+    """L2 differences (eqs 35-36, b as the reference) of two sets of centre
+    lines; what names them and ends with the line y = 0.5."""
+    print(f"{what}: theta {l2(a[0], b[0]):.4f}, v {l2(a[1], b[1]):.4f}; "
+          f"on x = 0.5: theta {l2(a[2], b[2]):.4f}, u {l2(a[3], b[3]):.4f}")
+
+
 def final_nu(log):
     text = open(log).read()
     heat = re.findall(r"final: Nu_hot = (\S+) Nu_cold = (\S+) at t = (\S+)", text)
@@ -65,6 +97,9 @@ def main():
                         "(T - T_C) / DT")
     p.add_argument("--average-from", type=float, default=2.0 / 3.0,
                    help="average Nu over the thermo rows from this fraction of the run's time on")
+    p.add_argument("--compare", metavar="DUMP",
+                   help="another run's final dump (e.g. the 2-D run beside a quasi-2-D one): "
+                        "L2 differences of the centre lines, that run as the reference")
     p.add_argument("--max-nu-error", type=float, help="fail (exit 1) above this error of mean Nu, %%")
     args = p.parse_args()
 
@@ -75,14 +110,8 @@ def main():
     late = late_rows(table, args.average_from)
     mean = {k: table[k][late].mean() for k in table if k.startswith("c_nu_")}
     spread = {k: table[k][late].std() for k in table if k.startswith("c_nu_")}
-    frames = list(read_frames(args.dump))
-    c = frames[-1][1]
-    x, y, vx, vy, T = c["x"], c["y"], c["vx"], c["vy"], c["c_T"]
-    if args.si:
-        length, alpha, t_cold, t_diff = args.si
-        x, y = x / length, y / length
-        vx, vy = vx * length / alpha, vy * length / alpha
-        T = (T - t_cold) / t_diff
+    state = final_state(args.dump, args.si)
+    x, y, vx, vy, T = (state[k] for k in ("x", "y", "vx", "vy", "c_T"))
     n = int(round(np.sqrt(len(x) / max(args.nz, 1))))
     dx = 1.0 / n
 
@@ -115,16 +144,28 @@ def main():
 
     # centre lines: y = 0.5 (theta, v) and x = 0.5 (theta, u)
     line = np.linspace(0.5 * dx, 1.0 - 0.5 * dx, n)
-    half = np.full(n, 0.5)
-    th_h = shepard(line, half, x, y, T, 2 * dx)
-    v_h = shepard(line, half, x, y, vy, 2 * dx)
-    th_v = shepard(half, line, x, y, T, 2 * dx)
-    u_v = shepard(half, line, x, y, vx, 2 * dx)
+    lines = centre_lines(state, line, dx)
+    th_h, v_h = lines[0], lines[1]
     rth_h, rv_h = cavity_fv.profiles_at(ref, line)
     rth_v, ru_v = cavity_fv.vertical_profiles_at(ref, line)
-    print(f"L2 errors on y = 0.5 (Reece et al. 2024, eqs 35-36): theta {l2(th_h, rth_h):.4f}, "
-          f"v {l2(v_h, rv_h):.4f}; on x = 0.5: theta {l2(th_v, rth_v):.4f}, u {l2(u_v, ru_v):.4f}")
+    print_profile_differences("L2 errors on y = 0.5 (Reece et al. 2024, eqs 35-36)", lines,
+                              (rth_h, rv_h, rth_v, ru_v))
     print(f"largest v on y = 0.5: {v_h.max():.3f} (reference {rv_h.max():.3f})")
+    if args.nz and "z" in state:
+        # a quasi-2-D flow is the same in every slice of the depth: the
+        # front and back halves of the particles against each other
+        depth = args.nz * dx
+        front = (state["z"] % depth) < 0.5 * depth
+        print_profile_differences(f"quasi-2-D, z < {args.nz / 2:g} spacings against the rest: "
+                                  "L2 on y = 0.5",
+                                  centre_lines(state, line, dx, front),
+                                  centre_lines(state, line, dx, ~front))
+    if args.compare:
+        other = final_state(args.compare, args.si)
+        n_other = int(round(np.sqrt(len(other["x"]))))
+        print_profile_differences(f"against {args.compare} ({n_other} x {n_other}): L2 on y = 0.5",
+                                  lines,
+                                  centre_lines(other, line, 1.0 / n_other))
 
     import matplotlib
     matplotlib.use("Agg")
@@ -142,7 +183,7 @@ def main():
                   linewidths=0.8, linestyles="--")
     cs = ax[0].contour(gx, gy, tg, levels, cmap="coolwarm")
     ax[0].clabel(cs, fmt="%.1f", fontsize=7)
-    ax[0].set_title(f"isotherms: SPH (colour), cavity_fv.py (dashed)")
+    ax[0].set_title("isotherms: SPH (colour), cavity_fv.py (dashed)")
     speed = np.hypot(ug, vg)
     ax[1].streamplot(gx, gy, ug, vg, color=speed, cmap="viridis", density=1.2, linewidth=0.8)
     ax[1].set_title("streamlines of SPH (colour: speed)")
@@ -158,7 +199,9 @@ def main():
     ax[2].set_xlabel("x (y = 0.5)")
     ax[2].legend(fontsize=8)
     ax[2].set_title(f"Nu {nu:.3f} (heat) vs {nu_ref:.4g} ({err:+.1f} %)")
-    fig.suptitle(f"differentially heated cavity, Ra = {args.ra:g}, Pr = {args.pr}, {n} x {n} particles")
+    depth = f" x {args.nz} (quasi-2-D, averaged over the depth)" if args.nz else ""
+    fig.suptitle(f"differentially heated cavity, Ra = {args.ra:g}, Pr = {args.pr}, "
+                 f"{n} x {n}{depth} particles")
     fig.tight_layout()
     fig.savefig(args.png, dpi=110)
     print(f"wrote {os.path.abspath(args.png)}")
