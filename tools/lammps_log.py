@@ -1,4 +1,7 @@
-"""Read the thermo tables of a LAMMPS log or screen output."""
+"""Read the thermo tables of a LAMMPS log or screen output, and the final
+Nusselt numbers the cavity inputs print."""
+
+import re
 
 import numpy as np
 
@@ -45,3 +48,19 @@ def late_rows(table, fraction=2.0 / 3.0):
     """The rows at Time >= fraction of the last row's Time (the steady end
     of a run), as a boolean mask."""
     return table["Time"] >= fraction * table["Time"][-1]
+
+
+def final_nusselt(text):
+    """The last Nusselt numbers the cavity inputs (in.cavity, in.air) print
+    at their end: {"heat": (hot, cold), "time": t, "gradient": (hot, cold),
+    or None when the run printed no gradient estimate}; None when there is
+    no 'final:' line. Anchored at line starts: a log also echoes the print
+    commands."""
+    heat = re.findall(r"^final: Nu_hot = (\S+) Nu_cold = (\S+) at t = (\S+)", text, re.M)
+    gradient = re.findall(r"^final, from the wall gradient: Nu_hot = (\S+) Nu_cold = (\S+)",
+                          text, re.M)
+    if not heat:
+        return None
+    hot, cold, time = (float(v) for v in heat[-1])
+    return {"heat": (hot, cold), "time": time,
+            "gradient": tuple(float(v) for v in gradient[-1]) if gradient else None}

@@ -15,7 +15,6 @@ sqrt(sum (f_SPH - f_ref)^2 / sum f_ref^2) over the points.
 
 import argparse
 import os
-import re
 import sys
 
 import numpy as np
@@ -23,7 +22,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
 from lammps_dump import read_frames  # noqa: E402
-from lammps_log import late_rows, longest_thermo_table  # noqa: E402
+from lammps_log import final_nusselt, late_rows, longest_thermo_table  # noqa: E402
 import cavity_fv  # noqa: E402
 
 
@@ -73,15 +72,6 @@ def print_profile_differences(what, a, b):
           f"on x = 0.5: theta {l2(a[2], b[2]):.4f}, u {l2(a[3], b[3]):.4f}")
 
 
-def final_nu(log):
-    text = open(log).read()
-    heat = re.findall(r"final: Nu_hot = (\S+) Nu_cold = (\S+) at t = (\S+)", text)
-    grad = re.findall(r"final, from the wall gradient: Nu_hot = (\S+) Nu_cold = (\S+)", text)
-    if not heat:
-        sys.exit(f"analyse: no 'final:' line in {log}")
-    return [float(v) for v in heat[-1]], [float(v) for v in grad[-1]] if grad else None
-
-
 def main():
     p = argparse.ArgumentParser(description=__doc__)
     p.add_argument("dump", nargs="?", default="cavity.dump")
@@ -103,7 +93,10 @@ def main():
     p.add_argument("--max-nu-error", type=float, help="fail (exit 1) above this error of mean Nu, %%")
     args = p.parse_args()
 
-    (nu_hot, nu_cold, t_end), grad = final_nu(args.log)
+    final = final_nusselt(open(args.log).read())
+    if final is None:
+        sys.exit(f"analyse: no 'final:' line in {args.log}")
+    (nu_hot, nu_cold), t_end, grad = final["heat"], final["time"], final["gradient"]
     table = longest_thermo_table(open(args.log).read())
     if table is None or "Time" not in table:
         sys.exit(f"analyse: no thermo table with Time in {args.log}")

@@ -3,7 +3,6 @@ read what it wrote (the readers of tools/)."""
 
 import argparse
 import os
-import re
 import subprocess
 import sys
 import tempfile
@@ -11,6 +10,7 @@ import tempfile
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 from lammps_dump import read_frames  # noqa: E402
 from cavity_fv import DE_VAHL_DAVIS  # noqa: E402,F401
+import lammps_log  # noqa: E402
 from lammps_log import late_rows, longest_thermo_table, thermo_tables  # noqa: E402,F401
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
@@ -25,18 +25,13 @@ def serial_check(doc):
 
 
 def final_nusselt(out, gradient=True):
-    """The last Nusselt numbers the cavity inputs print at their end, from
-    their log or screen text: {"heat": (hot, cold), "gradient": (hot, cold),
-    "time": t}; stops the check when they are missing. gradient=False for a
-    run that has no gradient estimate (in.cavity's zero-order walls)."""
-    heat = re.findall(r"^final: Nu_hot = (\S+) Nu_cold = (\S+) at t = (\S+)", out, re.M)
-    from_gradient = re.findall(
-        r"^final, from the wall gradient: Nu_hot = (\S+) Nu_cold = (\S+)", out, re.M)
-    if not heat or (gradient and not from_gradient):
+    """tools/lammps_log.final_nusselt of a run's output; stops the check when
+    the numbers are missing. gradient=False for a run that has no gradient
+    estimate (in.cavity's zero-order walls)."""
+    final = lammps_log.final_nusselt(out)
+    if final is None or (gradient and final["gradient"] is None):
         sys.exit("FAIL: no final Nusselt numbers in the run's output")
-    hot, cold, time = (float(v) for v in heat[-1])
-    return {"heat": (hot, cold), "time": time,
-            "gradient": tuple(float(v) for v in from_gradient[-1]) if gradient else None}
+    return final
 
 
 def run_input(lmp, input_file, variables, cwd, np_=1, mpirun="mpirun", log="none"):
