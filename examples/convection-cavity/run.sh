@@ -16,7 +16,8 @@
 # periodic depth of NZ spacings); CONDUCTION (options of pair
 # sph/cleary/heat), GRADIENT (correction of pair sph/harmonic/visc: gradient
 # or none) and SHIFT (D of fix sph/shift; 0: no shifting), in.cavity's
-# defaults when unset; ACOUSTIC (the acoustic
+# defaults when unset; SQUEEZE (the largest compression by the buoyancy,
+# g beta dT L / c0^2: sets the least speed of sound), ACOUSTIC (the acoustic
 # coefficient of fix sph/dt/reset), MAX_NU_ERROR (exit 1 above it, %).
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
@@ -41,7 +42,8 @@ TEND=${TEND:-0}
 $run "$LMP" -in "$here/in.cavity" -var plugin "$PLUGIN" -var ra "$RA" -var n "$N" \
   -var tend "$TEND" -var kernel "${KERNEL:-wendland}" -var hdx "${HDX:-2.0}" \
   -var bg "${BG:-0.1}" -var nz "${NZ:-0}" ${CONDUCTION:+-var conduction "$CONDUCTION"} \
-  ${GRADIENT:+-var gradient "$GRADIENT"} ${SHIFT:+-var shift "$SHIFT"} -var acoustic "${ACOUSTIC:-0.1}" \
+  ${GRADIENT:+-var gradient "$GRADIENT"} ${SHIFT:+-var shift "$SHIFT"} \
+  ${SQUEEZE:+-var squeeze "$SQUEEZE"} -var acoustic "${ACOUSTIC:-0.1}" \
   -var out cavity.dump -log log.cavity | grep -E "^Ra =|final"
 if [ "$RA" = 0 ]; then
   echo "without buoyancy the exact Nu is 1"
