@@ -1,9 +1,9 @@
 #!/bin/sh
 # Run the differentially heated cavity, compare it with the benchmark and the
 # reference solver, and write cavity.png.
-#   ./run.sh              Ra = 1e4, 40 x 40 fluid particles, to t = 0.3 (about 75 s)
+#   ./run.sh              Ra = 1e4, 40 x 40 fluid particles, to t = 0.3 (about 3 minutes)
 #                         (t = 1.5 at Ra = 1e3)
-#   ./run.sh quick        the same at 20 x 20 (about 15 s)
+#   ./run.sh quick        the same at 20 x 20 (about 40 s)
 #   ./run.sh conduction   Ra = 0: Nu must be 1 (20 x 20, to t = 0.6)
 #   ./run.sh air          Reece et al. 2024 section 3.2 in SI units (in.air),
 #                         N = 40 across to t* = 0.5 (TSTAR), about 5 minutes;
