@@ -93,11 +93,13 @@ def main():
     p.add_argument("--max-nu-error", type=float, help="fail (exit 1) above this error of mean Nu, %%")
     args = p.parse_args()
 
-    final = final_nusselt(open(args.log).read())
+    with open(args.log) as f:
+        log_text = f.read()
+    final = final_nusselt(log_text)
     if final is None:
         sys.exit(f"analyse: no 'final:' line in {args.log}")
     (nu_hot, nu_cold), t_end, grad = final["heat"], final["time"], final["gradient"]
-    table = longest_thermo_table(open(args.log).read())
+    table = longest_thermo_table(log_text)
     if table is None or "Time" not in table:
         sys.exit(f"analyse: no thermo table with Time in {args.log}")
     late = late_rows(table, args.average_from)
