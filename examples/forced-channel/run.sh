@@ -16,10 +16,11 @@
 #                       depend on it; PLATECP), about 25 minutes each
 # Environment: LMP, PLUGIN, NP, OUT as in the other examples; N (particles
 # across), TEND (s), RE, KSK, SHIFT (yes|no), START (developed|rest),
-# DTFAC (dt = DTFAC h / c0), CONTINUITY (auto|yes|no: hold the fluid's
-# mean density under shifting; auto = yes below Re = 100), CONDUCTION (options of pair sph/cleary/heat,
-# e.g. "correction consistent mean interface"), MAX_T_ERROR (exit 1 above
-# it, % of T_w - T_in), MAX_VY (exit 1 above it, % of u_max).
+# DTFAC (dt = DTFAC h / c0), CONTINUITY (yes|no: hold the fluid's mean
+# density under shifting; unset, in.channel's auto), CONDUCTION (options
+# of pair sph/cleary/heat, e.g. "correction consistent mean interface"),
+# MAX_T_ERROR (exit 1 above it, % of T_w - T_in), MAX_VY (exit 1 above it,
+# % of u_max).
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../common.sh"
@@ -49,7 +50,7 @@ name=channel-$WALLS
 rm -f "$name.dump"
 $run "$LMP" -in "$here/in.channel" -var plugin "$PLUGIN" -var n "$N" -var tend "$TEND" \
   -var re "$RE" -var walls "$WALLS" -var ksk "$KSK" -var shift "${SHIFT:-yes}" \
-  -var continuity "${CONTINUITY:-auto}" \
+  ${CONTINUITY:+-var continuity "$CONTINUITY"} \
   -var start "${START:-developed}" -var dtfac "${DTFAC:-0.15}" -var every "$TEND" \
   -var conduction "${CONDUCTION:-mean harmonic}" -var out "$name" -log "log.$name" |
   grep -E "^u_max|Loop time|sph/cleary/heat:"
