@@ -138,7 +138,7 @@ void FixSPHBoussinesq::init()
                    "Fix sph/boussinesq: atom type(s) {} of group {} have no expansion coefficient "
                    "and feel no buoyancy",
                    without, group->names[igroup]);
-  SPHCheck::atom_state(lmp, "Fix sph/boussinesq", groupbit, SPHCheck::CV);
+  SPHCheck::atom_state(lmp, FLERR, "Fix sph/boussinesq", groupbit, SPHCheck::CV);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -417,8 +417,7 @@ void FixSPHDtReset::bad_limit(int k)
                           atom->rho[i], atom->cv[i]);
     }
     if (!(dt > 0.0))
-      SPHCheck::stop(lmp,
-                     fmt::format("Fix sph/dt/reset: {} limit of atom {} (type {}) is {} at step {} "
+      SPHCheck::stop(lmp, FLERR, fmt::format("Fix sph/dt/reset: {} limit of atom {} (type {}) is {} at step {} "
                                  "({})",
                                  limit_name(k + 1), atom->tag[i], itype, dt, update->ntimestep,
                                  state));

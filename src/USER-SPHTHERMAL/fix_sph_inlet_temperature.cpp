@@ -157,7 +157,7 @@ void FixSPHInletTemperature::init()
       error->all(FLERR, "Fix {} {}: group {} shares atoms with group {} of fix {}", id, style,
                  group->names[igroup], group->names[other->igroup], other->id);
   }
-  SPHCheck::atom_state(lmp, cmd, groupbit, SPHCheck::CV | SPHCheck::ESPH);
+  SPHCheck::atom_state(lmp, FLERR, cmd, groupbit, SPHCheck::CV | SPHCheck::ESPH);
   // the inlet side's particles see all their neighbours, on both sides
   SPHCompat::request_full_list(neighbor, this, instance_me);
 

@@ -161,8 +161,7 @@ void FixSPHMaterials::out_of_range(MaterialLaw &slot, int type, double T, double
 {
   const char *law = sphm_law_name(slot.law.kind);
   if (!sphm_value_valid(value))
-    SPHCheck::stop(lmp,
-                   fmt::format("{}: {} of atom type {} is {} at T = {} ({} law of fix "
+    SPHCheck::stop(lmp, FLERR, fmt::format("{}: {} of atom type {} is {} at T = {} ({} law of fix "
                                "sph/materials); it must be finite and >= 0",
                                who, property, type, value, T, law));
   if (!slot.warned) {

@@ -183,7 +183,7 @@ void FixSPHShift::init()
   int dim;
   kernel_kind = *(int *) flow->extract("kernel_kind", dim);
   cutoff = *(double *) flow->extract("cutoff", dim);
-  SPHCheck::atom_state(lmp, cmd, 0, SPHCheck::RHO | (correct ? SPHCheck::CV : 0));
+  SPHCheck::atom_state(lmp, FLERR, cmd, 0, SPHCheck::RHO | (correct ? SPHCheck::CV : 0));
   const int was_from_pair = from_pair;
   // the pair loop makes the skillen sum alone, when it sees every pair of the group
   from_pair = !loop_own && form == SKILLEN && !correct && !continuity &&

@@ -102,7 +102,7 @@ void FixSPHSurfaceFlux::reset_dt()
 void FixSPHSurfaceFlux::init()
 {
   SPHCheck::group_of_kind(lmp, this, {"sph/wall/dirichlet", "sph/wall/adiabatic"}, true, true);
-  SPHCheck::atom_state(lmp, "Fix sph/surface/flux", groupbit, SPHCheck::CV | SPHCheck::ESPH);
+  SPHCheck::atom_state(lmp, FLERR, "Fix sph/surface/flux", groupbit, SPHCheck::CV | SPHCheck::ESPH);
   reset_dt();
   area = pow(spacing, domain->dimension - 1);
 }

@@ -124,7 +124,7 @@ void FixSPHWallAdami::init()
     if ((atom->mask[i] & groupbit) && solid_type[atom->type[i]]) {
       local_solid = 1;
       if (!(materials->rho0(atom->type[i]) > 0.0))
-        SPHCheck::stop(lmp, fmt::format("Fix sph/wall/adami: atom type {} of wall atom {} has no "
+        SPHCheck::stop(lmp, FLERR, fmt::format("Fix sph/wall/adami: atom type {} of wall atom {} has no "
                                         "equation of state, so it is a solid, but no rho0 in fix "
                                         "sph/materials",
                                         atom->type[i], atom->tag[i]));
@@ -132,7 +132,7 @@ void FixSPHWallAdami::init()
   MPI_Allreduce(&local_solid, &any_solid, 1, MPI_INT, MPI_MAX, world);
   // rho and vest, and with solids their pressure, density and viscosity
   comm_forward = any_solid ? 8 : 4;
-  if (any_solid) SPHCheck::atom_state(lmp, "Fix sph/wall/adami", groupbit, SPHCheck::RHO);
+  if (any_solid) SPHCheck::atom_state(lmp, FLERR, "Fix sph/wall/adami", groupbit, SPHCheck::RHO);
   // with thermal expansion the wall's density follows its temperature (the
   // pair, which this fix requires, checks every atom's cv and esph then)
   thermal_expansion = materials->thermal_expansion();
@@ -193,6 +193,8 @@ void FixSPHWallAdami::find_fluid_near()
 
 void FixSPHWallAdami::setup_pre_force(int /*vflag*/)
 {
+  // the atoms' own state before the walls extrapolate from it
+  SPHCheck::particles(lmp, FLERR, "Fix sph/wall/adami", SPHCheck::RHO | SPHCheck::ESPH);
   // at setup v is the full-step velocity: the sample of this step
   if (moving) sample_acceleration(0.0);
   pre_force_walls();
@@ -200,6 +202,7 @@ void FixSPHWallAdami::setup_pre_force(int /*vflag*/)
 
 void FixSPHWallAdami::pre_force(int /*vflag*/)
 {
+  SPHCheck::particles(lmp, FLERR, "Fix sph/wall/adami", SPHCheck::RHO | SPHCheck::ESPH);
   // in a step v is the half-step velocity of fix rigid, move and sph
   if (moving) sample_acceleration(0.5 * update->dt);
   pre_force_walls();

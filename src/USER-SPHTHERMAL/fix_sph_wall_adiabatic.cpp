@@ -124,6 +124,8 @@ void FixSPHWallAdiabatic::setup_pre_force(int vflag)
 
 void FixSPHWallAdiabatic::pre_force(int /*vflag*/)
 {
+  // the atoms' own state before the wall mirrors it
+  SPHCheck::particles(lmp, FLERR, "Fix sph/wall/adiabatic", SPHCheck::RHO | SPHCheck::ESPH);
   mirror->interpolate(t_ghost, ghost_how);
   const double *const cv = atom->cv;
   const int *const mask = atom->mask;

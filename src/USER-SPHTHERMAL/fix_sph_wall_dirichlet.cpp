@@ -103,7 +103,7 @@ void FixSPHWallDirichlet::init()
                           {"sph/wall/isothermal", "sph/wall/dirichlet", "sph/wall/adiabatic",
                            "sph/surface/flux"},
                           false, false);
-  SPHCheck::atom_state(lmp, "Fix sph/wall/dirichlet", groupbit, SPHCheck::CV);
+  SPHCheck::atom_state(lmp, FLERR, "Fix sph/wall/dirichlet", groupbit, SPHCheck::CV);
   if (mirror) mirror->init(groupbit, kernel_kind, cutoff);
 
   dummy_groupbit = 0;
@@ -130,6 +130,8 @@ void FixSPHWallDirichlet::setup_pre_force(int vflag)
 
 void FixSPHWallDirichlet::pre_force(int /*vflag*/)
 {
+  // the atoms' own state before the wall mirrors it
+  SPHCheck::particles(lmp, FLERR, "Fix sph/wall/dirichlet", SPHCheck::RHO | SPHCheck::ESPH);
   if (mirror)
     dummies_mirrored();
   else

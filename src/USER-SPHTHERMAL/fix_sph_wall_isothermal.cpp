@@ -57,7 +57,7 @@ int FixSPHWallIsothermal::setmask()
 void FixSPHWallIsothermal::init()
 {
   SPHCheck::group_of_kind(lmp, this, {"sph/wall/isothermal", "sph/wall/dirichlet", "sph/wall/adiabatic"}, false, true);
-  SPHCheck::atom_state(lmp, "Fix sph/wall/isothermal", groupbit, SPHCheck::CV);
+  SPHCheck::atom_state(lmp, FLERR, "Fix sph/wall/isothermal", groupbit, SPHCheck::CV);
   // the wall is at its temperature before the first force evaluation
   const double *const cv = atom->cv;
   const int *const mask = atom->mask;

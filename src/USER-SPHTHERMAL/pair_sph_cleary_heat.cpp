@@ -105,6 +105,7 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
 
 void PairSPHClearyHeat::begin_compute()
 {
+  SPHCheck::particles(lmp, FLERR, "Pair style sph/cleary/heat", SPHCheck::RHO | SPHCheck::ESPH);
   if (conductivity_varies) update_conductivity();
   if (update->setupflag) check_neighbours();
   update_temperature();
@@ -1312,7 +1313,7 @@ void PairSPHClearyHeat::init_style()
   second_warned = 0;
   // the per-atom state exists from here on, for compute sph/correction/atom
   if (correct) grow_correction();
-  SPHCheck::atom_state(lmp, "Pair style sph/cleary/heat", 0,
+  SPHCheck::atom_state(lmp, FLERR, "Pair style sph/cleary/heat", 0,
                        SPHCheck::RHO | SPHCheck::CV | SPHCheck::ESPH);
 
   dummy_walls.clear();

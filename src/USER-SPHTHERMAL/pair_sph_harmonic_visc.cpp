@@ -103,6 +103,7 @@ void PairSPHHarmonicVisc::compute(int eflag, int vflag)
 
 void PairSPHHarmonicVisc::begin_compute()
 {
+  SPHCheck::particles(lmp, FLERR, "Pair style sph/harmonic/visc", SPHCheck::RHO | SPHCheck::ESPH);
   // fix sph sets vest = v on owned atoms at setup without updating their
   // ghosts: refresh them, or results depend on newton and the rank count
   if (update->setupflag) {
@@ -481,9 +482,7 @@ void PairSPHHarmonicVisc::update_atom_state()
       const double t = esph[i] / cv[i];
       const double rho_ref = sphe_reference_density(eos, t);
       if (!(rho_ref > 0.0) || !std::isfinite(rho_ref))
-        SPHCheck::stop(
-            lmp,
-            fmt::format(
+        SPHCheck::stop(lmp, FLERR, fmt::format(
                 "Pair style sph/harmonic/visc: atom {} (type {}) at T = {} has no reference "
                 "density: 1 + beta (T - T0) = {} of its equation of state's thermal "
                 "expansion must be > 0",
@@ -1005,8 +1004,7 @@ void PairSPHHarmonicVisc::init_style()
     thermal_expansion = materials->thermal_expansion();
     nmax = 0;
   }
-  SPHCheck::atom_state(
-      lmp, "Pair style sph/harmonic/visc", 0,
+  SPHCheck::atom_state(lmp, FLERR, "Pair style sph/harmonic/visc", 0,
       SPHCheck::RHO |
           ((viscosity_varies || thermal_expansion) ? SPHCheck::CV | SPHCheck::ESPH : 0));
 

@@ -198,7 +198,7 @@ void PairSPHKernel::check_rates(const double *rate, const char *quantity)
 {
   const int i = SPHCheck::first_nonfinite(rate, atom->nlocal);
   if (i >= 0)
-    SPHCheck::nonfinite(lmp, fmt::format("Pair style {}", style).c_str(), quantity, i, rate[i],
+    SPHCheck::nonfinite(lmp, FLERR, fmt::format("Pair style {}", style).c_str(), quantity, i, rate[i],
                         diagnose(i));
 }
 
@@ -206,7 +206,7 @@ void PairSPHKernel::check_rates3(double *const *rate, const char *quantity)
 {
   const int i = SPHCheck::first_nonfinite3(rate, atom->nlocal);
   if (i >= 0)
-    SPHCheck::nonfinite(lmp, fmt::format("Pair style {}", style).c_str(), quantity, i,
+    SPHCheck::nonfinite(lmp, FLERR, fmt::format("Pair style {}", style).c_str(), quantity, i,
                         rate[i][0] + rate[i][1] + rate[i][2], diagnose(i));
 }
 

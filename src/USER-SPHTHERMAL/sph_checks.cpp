@@ -23,7 +23,8 @@ using namespace LAMMPS_NS;
 
 /* ---------------------------------------------------------------------- */
 
-void SPHCheck::atom_state(LAMMPS *lmp, const char *who, int groupbit, int needs)
+void SPHCheck::atom_state(LAMMPS *lmp, const char *file, int line, const char *who, int groupbit,
+                          int needs)
 {
   Atom *atom = lmp->atom;
   const int *const mask = atom->mask;
@@ -59,8 +60,36 @@ void SPHCheck::atom_state(LAMMPS *lmp, const char *who, int groupbit, int needs)
   static const char *const names[] = {"", "rho", "cv", "esph"};
   static const char *const wants[] = {"", "finite and > 0", "finite and > 0", "finite"};
   const int quantity = (int) all[0];
-  lmp->error->all(FLERR, "{}: {} of atom {} (type {}) is {}; it must be {}", who, names[quantity],
-                  first, (int) all[1], all[2], wants[quantity]);
+  lmp->error->all(file, line, "{}: {} of atom {} (type {}) is {}; it must be {}", who,
+                  names[quantity], first, (int) all[1], all[2], wants[quantity]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void SPHCheck::particles(LAMMPS *lmp, const char *file, int line, const char *who, int needs)
+{
+  Atom *atom = lmp->atom;
+  double *const *const x = atom->x;
+  double *const *const v = atom->v;
+  const double *const rho = (needs & RHO) ? atom->rho : nullptr;
+  const double *const esph = (needs & ESPH) ? atom->esph : nullptr;
+  const int nlocal = atom->nlocal;
+  // one sum per atom and quantity: a NaN or inf anywhere makes it non-finite
+  for (int i = 0; i < nlocal; i++) {
+    const double sum = x[i][0] + x[i][1] + x[i][2] + v[i][0] + v[i][1] + v[i][2] +
+        (rho ? rho[i] : 0.0) + (esph ? esph[i] : 0.0);
+    if (std::isfinite(sum) && (!rho || rho[i] > 0.0)) continue;
+    const char *quantity = "position";
+    double value = x[i][0] + x[i][1] + x[i][2];
+    if (std::isfinite(value)) quantity = "velocity", value = v[i][0] + v[i][1] + v[i][2];
+    if (std::isfinite(value) && rho)
+      quantity = "rho", value = rho[i];
+    if (std::isfinite(value) && (!rho || rho[i] > 0.0) && esph) quantity = "esph", value = esph[i];
+    stop(lmp, file, line,
+         fmt::format("{}: {} of atom {} (type {}) is {} at step {}{}", who, quantity,
+                     atom->tag[i], atom->type[i], value, lmp->update->ntimestep,
+                     strcmp(quantity, "rho") == 0 ? "; it must be finite and > 0" : ""));
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -81,20 +110,20 @@ int SPHCheck::first_nonfinite3(double *const *values, int n)
 
 /* ---------------------------------------------------------------------- */
 
-void SPHCheck::stop(LAMMPS *lmp, const std::string &message)
+void SPHCheck::stop(LAMMPS *lmp, const char *file, int line, const std::string &message)
 {
   // one rank: a clean stop with the output flushed
-  if (lmp->comm->nprocs == 1) lmp->error->all(FLERR, message);
+  if (lmp->comm->nprocs == 1) lmp->error->all(file, line, message);
   // error->one prints on rank 0 only and may abort before stdout is
   // flushed: stderr is unbuffered
   fmt::print(stderr, "ERROR on proc {}: {}\n", lmp->comm->me, message);
-  lmp->error->one(FLERR, message);
+  lmp->error->one(file, line, message);
 }
 
-void SPHCheck::nonfinite(LAMMPS *lmp, const char *who, const char *quantity, int i, double value,
-                         const std::string &why)
+void SPHCheck::nonfinite(LAMMPS *lmp, const char *file, int line, const char *who,
+                         const char *quantity, int i, double value, const std::string &why)
 {
-  stop(lmp,
+  stop(lmp, file, line,
        fmt::format("{}: {} of atom {} (type {}) is {} at step {}{}{}", who, quantity,
                    lmp->atom->tag[i], lmp->atom->type[i], value, lmp->update->ntimestep,
                    why.empty() ? "" : ": ", why));

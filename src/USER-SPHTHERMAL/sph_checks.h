@@ -22,15 +22,28 @@ class Fix;
 // a run, rates after they are computed, and overlapping groups of styles.
 namespace SPHCheck {
 
+  // The checks that stop a run take the caller's FLERR (file, line): the
+  // error names the line of the style that asked, and the test of error
+  // branches (unittest, robust.error_branches) maps each case to that line.
+
   // what a style needs of every owned atom of a group: finite esph, and a
   // finite positive rho and cv when asked; a collective error naming the
   // first offending atom (lowest ID), its type and the quantity
   enum { RHO = 1, CV = 2, ESPH = 4 };
-  void atom_state(LAMMPS *lmp, const char *who, int groupbit, int needs);
+  void atom_state(LAMMPS *lmp, const char *file, int line, const char *who, int groupbit,
+                  int needs);
 
   // stop for a problem this rank alone has found (no communication): the
   // message reaches the output whichever rank finds it
-  void stop(LAMMPS *lmp, const std::string &message);
+  void stop(LAMMPS *lmp, const char *file, int line, const std::string &message);
+
+  // every step, before anything is derived from it: the own state of each
+  // owned atom (position and velocity finite; rho finite and > 0, esph
+  // finite when asked), so that a fault is named at the atom it arose on;
+  // a stop (on this rank: no communication) naming the atom, its type, the
+  // quantity and the step. A NaN position never triggers a neighbour-list
+  // rebuild, so LAMMPS's own checks of coordinates would not see it.
+  void particles(LAMMPS *lmp, const char *file, int line, const char *who, int needs);
 
   // the first owned atom whose value of 'values' is not finite, or -1
   int first_nonfinite(const double *values, int n);
@@ -38,8 +51,8 @@ namespace SPHCheck {
 
   // stop (on this rank: no communication) naming the owned atom i, its type,
   // the quantity and the step; 'why' says what made it so, may be empty
-  void nonfinite(LAMMPS *lmp, const char *who, const char *quantity, int i,
-                 double value, const std::string &why);
+  void nonfinite(LAMMPS *lmp, const char *file, int line, const char *who, const char *quantity,
+                 int i, double value, const std::string &why);
 
   // the group of a fix that stands for particles of a kind (a wall, a
   // heated surface), at its init: an error when it is empty, or holds every

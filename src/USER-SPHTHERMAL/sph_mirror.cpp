@@ -65,7 +65,7 @@ void SPHMirror::init(int groupbit_in, int kind, double cut)
                command, region_name);
 
   // the interpolation reads the volume and temperature of the medium
-  SPHCheck::atom_state(lmp, command.c_str(), 0, SPHCheck::RHO | SPHCheck::CV);
+  SPHCheck::atom_state(lmp, FLERR, command.c_str(), 0, SPHCheck::RHO | SPHCheck::CV);
 
   inlet_axis = -1;
   for (Fix *inlet : SPHCompat::fixes_of_style(modify, "sph/inlet/temperature")) {

@@ -32,7 +32,10 @@ using namespace LAMMPS_NS;
 static const char cmd[] = "sph/set";
 
 /* ----------------------------------------------------------------------
-   sph/set group-ID keyword args ...: the keywords act in the order given
+   sph/set group-ID keyword args ...: whatever their order on the line, the
+   keywords act in the order of their physics: materials (rho, cv, mass),
+   then temperature (e = cv T needs the material's cv), then hydrostatic
+   (the densities that materials would otherwise overwrite)
 ------------------------------------------------------------------------- */
 
 void SPHSet::command(int narg, char **arg)
@@ -51,11 +54,18 @@ void SPHSet::command(int narg, char **arg)
     error->all(FLERR, "Illegal {} command: group {} has no atoms", cmd, group_name);
   materials = FixSPHMaterials::find(lmp, "sph/set command");
 
+  bool set_mat = false, set_temp = false, set_hydro = false, move = true;
+  double volume = 0.0, level = 0.0;
+  std::string temperature;
+  auto once = [&](bool &given, const std::string &keyword) {
+    if (given) error->all(FLERR, "Illegal {} command: keyword '{}' given twice", cmd, keyword);
+    given = true;
+  };
   int iarg = 1;
   while (iarg < narg) {
     const std::string keyword = arg[iarg];
     if (keyword == "materials") {
-      double volume = 0.0;
+      once(set_mat, keyword);
       iarg++;
       if (iarg < narg && (strcmp(arg[iarg], "spacing") == 0 || strcmp(arg[iarg], "volume") == 0)) {
         if (iarg + 1 >= narg)
@@ -66,32 +76,34 @@ void SPHSet::command(int narg, char **arg)
         volume = (strcmp(arg[iarg], "spacing") == 0) ? pow(value, domain->dimension) : value;
         iarg += 2;
       }
-      set_materials(volume);
     } else if (keyword == "temperature") {
+      once(set_temp, keyword);
       if (iarg + 1 >= narg)
         error->all(FLERR, "Illegal {} command: missing value after 'temperature'", cmd);
-      set_temperature(arg[iarg + 1]);
+      temperature = arg[iarg + 1];
       iarg += 2;
     } else if (keyword == "hydrostatic") {
+      once(set_hydro, keyword);
       if (iarg + 1 >= narg)
         error->all(FLERR,
                    "Illegal {} command: missing level after 'hydrostatic' (the height of the "
                    "free surface, along -g)",
                    cmd);
-      const double level = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      level = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       iarg += 2;
-      bool move = true;
       if (iarg < narg && strcmp(arg[iarg], "move") == 0) {
         if (iarg + 1 >= narg) error->all(FLERR, "Illegal {} command: missing value after 'move'", cmd);
         move = SPHCompat::yes_no(error, FLERR, cmd, "move", arg[iarg + 1]);
         iarg += 2;
       }
-      set_hydrostatic(level, move);
     } else
       error->all(FLERR,
                  "Illegal {} command: unknown keyword '{}' (materials, temperature or hydrostatic)",
                  cmd, keyword);
   }
+  if (set_mat) set_materials(volume);
+  if (set_temp) set_temperature(temperature);
+  if (set_hydro) set_hydrostatic(level, move);
 }
 
 /* ----------------------------------------------------------------------
@@ -202,16 +214,31 @@ void SPHSet::set_temperature(const std::string &value)
   if (bad_all != MAXTAGINT) {
     if (bad_tag == bad_all) {
       if (bad_kind == 1)
-        SPHCheck::stop(lmp,
-                       fmt::format("{} temperature {}: atom {} gets T = {}; it must be finite", cmd,
+        SPHCheck::stop(lmp, FLERR, fmt::format("{} temperature {}: atom {} gets T = {}; it must be finite", cmd,
                                    value, bad_tag, bad_value));
-      SPHCheck::stop(lmp,
-                     fmt::format("{} temperature {}: atom {} has cv = {}; e = cv T needs cv > 0 "
+      SPHCheck::stop(lmp, FLERR, fmt::format("{} temperature {}: atom {} has cv = {}; e = cv T needs cv > 0 "
                                  "(set it first: sph/set materials, or set sph/cv)",
                                  cmd, value, bad_tag, bad_value));
     }
     MPI_Barrier(world);    // the rank that found it stops the run
   }
+
+  // LAMMPS creates every atom with cv = 1: a type whose material has no cv
+  // and whose atoms all still have that value was probably never given one
+  const int ntypes = atom->ntypes;
+  std::vector<int> unset(ntypes + 1, 0), unset_all(ntypes + 1, 0), present(ntypes + 1, 0);
+  for (int t = 1; t <= ntypes; t++) unset[t] = (materials->cv(t) > 0.0) ? 0 : 1;
+  for (int i = 0; i < nlocal; i++)
+    if ((mask[i] & groupbit) && atom->cv[i] != 1.0) unset[atom->type[i]] = 0;
+  MPI_Allreduce(unset.data(), unset_all.data(), ntypes + 1, MPI_INT, MPI_MIN, world);
+  types_in_group(present.data());
+  for (int t = 1; t <= ntypes; t++)
+    if (present[t] && unset_all[t] && comm->me == 0)
+      error->warning(FLERR,
+                     "{} temperature {}: the atoms of type {} have cv = 1, atom style sph's "
+                     "default, and fix sph/materials gives their type no cv: e = cv T uses "
+                     "cv = 1 (give cv in fix sph/materials, or set sph/cv, if that is not meant)",
+                     cmd, value, t);
 
   double range[2] = {-INFINITY, -INFINITY};    // -(lowest T), highest T
   for (int i = 0; i < nlocal; i++) {

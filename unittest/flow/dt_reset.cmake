@@ -35,16 +35,4 @@ foreach(np 2 4)
 endforeach()
 
 # bad input: each a LAMMPS ERROR naming the command and the argument
-set(dt_reset_error_cases ${CMAKE_CURRENT_SOURCE_DIR}/flow/dt_reset_errors.in)
-execute_process(COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_SOURCE_DIR}/tools/sphtest.py error --list
-                        --cases ${dt_reset_error_cases} --lmp x --plugin x
-                OUTPUT_VARIABLE dt_reset_error_names OUTPUT_STRIP_TRAILING_WHITESPACE)
-set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${dt_reset_error_cases})
-string(REPLACE "\n" ";" dt_reset_error_names "${dt_reset_error_names}")
-foreach(name ${dt_reset_error_names})
-  add_test(NAME flow.dt_reset.error.${name}
-    COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_SOURCE_DIR}/tools/sphtest.py error
-            --lmp ${SPHTHERMAL_LMP} --plugin ${SPHTHERMAL_PLUGIN}
-            --cases ${dt_reset_error_cases} --name ${name})
-  set_tests_properties(flow.dt_reset.error.${name} PROPERTIES LABELS unit)
-endforeach()
+add_error_cases(flow.dt_reset ${CMAKE_CURRENT_SOURCE_DIR}/flow/dt_reset_errors.in)

@@ -3,7 +3,9 @@
 usage: test_short_form.py --lmp LMP --plugin PLUGIN --potentials DIR --case materials|hydrostatic
 
 materials:   in.short_form: masses, densities, specific heats and energies of
-             a steel block in water, by hand or with sph/set, equal to 1e-15.
+             a steel block in water, by hand or with sph/set, equal to 1e-15;
+             also with sph/set's keywords in the other order (temperature
+             before materials: sph/set applies materials first).
 hydrostatic: in.hydrostatic_start: the column of examples/flow-hydrostatic
              started by hand or with 'sph/set all hydrostatic H': the same
              positions (up to the translation of the whole tank: the long form
@@ -61,12 +63,14 @@ def main():
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
         if a.case == "materials":
-            short, long_ = (state(a, "in.short_form", f, tmp) for f in ("short", "long"))
-            for column in ("type", "mass", "x", "y", "c_rho", "c_cv", "c_e"):
-                err = relative(short[column], long_[column])
-                print(f"{column:6s} largest relative difference {err:.2e}")
-                if err > 1e-15:
-                    failures.append(column)
+            short, reversed_, long_ = (state(a, "in.short_form", f, tmp)
+                                       for f in ("short", "reversed", "long"))
+            for form, got in (("short", short), ("reversed", reversed_)):
+                for column in ("type", "mass", "x", "y", "c_rho", "c_cv", "c_e"):
+                    err = relative(got[column], long_[column])
+                    print(f"{form:8s} {column:6s} largest relative difference {err:.2e}")
+                    if err > 1e-15:
+                        failures.append(f"{form} {column}")
             # fix sph/materials exposes the properties of the material file
             want = [276.1e-6, -1.0, 14.9, 1652e-6]
             print(f"properties {PRINTED.get('properties')}, expected {want}")

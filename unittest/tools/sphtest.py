@@ -5,8 +5,8 @@
   same    run an input through two drivers (or rank counts) and compare them
   error   run one case of an error-case file and expect its LAMMPS error
           (or, with '## warning:', its WARNING and a run that goes on)
-  branches  the error cases are at least as many as the error and warning
-          branches of the package's sources
+  branches  every error and warning call of the package's sources is raised
+          by an error case (the sites the cases recorded)
   styles  load the plugin and check that 'plugin list' shows every style
           the package's headers declare
   exports check that the plugin exports lammpsplugin_init and no LAMMPS symbol
@@ -195,7 +195,22 @@ def cmd_error(a):
         proc = subprocess.run([a.lmp, "-log", "none", "-echo", "screen", "-in", f.name], text=True,
                               capture_output=True, env=mpi_env())
     output = proc.stdout + proc.stderr
-    errors = [line for line in output.splitlines() if line.startswith("ERROR")]
+    lines = output.splitlines()
+    errors = [line for line in lines if line.startswith("ERROR")]
+    record = record_path(a.record, a.cases, a.name) if a.record else None
+    if record and os.path.exists(record):
+        os.remove(record)
+
+    def passed(line):
+        # the package's call site that raised the expected message
+        site = message_site(output, lines.index(line))
+        if record and site:
+            os.makedirs(os.path.dirname(record), exist_ok=True)
+            with open(record, "w") as f:
+                f.write(f"{site[0]} {site[1]}\n")
+        print(f"ok {a.name}: {line}")
+        return 0
+
     if case["warning"]:
         # a misuse that can be legitimate: the run goes on, with this warning
         warnings = [line for line in output.splitlines() if line.startswith("WARNING")]
@@ -204,8 +219,7 @@ def cmd_error(a):
             print(output)
             print(f"FAIL {a.name}: expected a WARNING /{case['warning']}/ and a run without error")
             return 1
-        print(f"ok {a.name}: {found[0]}")
-        return 0
+        return passed(found[0])
     if not errors:
         print(output)
         print(f"FAIL {a.name}: no LAMMPS error, expected /{case['expect']}/")
@@ -214,22 +228,77 @@ def cmd_error(a):
         print(output)
         print(f"FAIL {a.name}: first error is\n  {errors[0]}\nexpected /{case['expect']}/")
         return 1
-    print(f"ok {a.name}: {errors[0]}")
-    return 0
+    return passed(errors[0])
+
+
+# the place in the package's sources where a message was raised: LAMMPS ends
+# every ERROR and WARNING with "(path/file.cpp:line)", the FLERR of the call
+SITE = re.compile(r"\(([^()\s:]+\.(?:cpp|h)):(\d+)\)")
+
+
+def message_site(output, first_line):
+    """The site (file name, line) at the end of the message that starts at
+    output line first_line (a message may span lines), or None."""
+    lines = output.splitlines()
+    for k in range(first_line, len(lines)):
+        if k > first_line and re.match(r"(ERROR|WARNING)", lines[k]):
+            break
+        m = SITE.search(lines[k])
+        if m:
+            return os.path.basename(m.group(1)), int(m.group(2))
+    return None
+
+
+# the calls of the package that stop a run or warn, each with the FLERR of
+# its line: LAMMPS's error->all/one/warning and the package's own helpers
+# that raise with the caller's FLERR (SPHCheck::..., SPHCompat::...)
+CALL = re.compile(r"(?:error->(?:all|one|warning)|SPHCheck::\w+|SPHCompat::\w+)\s*\(\s*"
+                  r"(?:(?:lmp|error)\s*,\s*)?FLERR\b")
+
+
+def error_sites(package):
+    """Every (file name, line) of an error or warning call in the package's
+    sources, with the text of that line."""
+    sites = {}
+    for name in sorted(os.listdir(package)):
+        if not name.endswith((".cpp", ".h")):
+            continue
+        with open(os.path.join(package, name)) as f:
+            text = f.read()
+        lines = text.splitlines()
+        for m in CALL.finditer(text):
+            line = text.count("\n", 0, m.end()) + 1    # the line of FLERR
+            sites[(name, line)] = lines[line - 1].strip()
+    return sites
+
+
+def record_path(records, cases, name):
+    area = os.path.basename(os.path.dirname(os.path.abspath(cases)))
+    stem = os.path.splitext(os.path.basename(cases))[0]
+    return os.path.join(records, f"{area}.{stem}.{name}.site")
 
 
 def cmd_branches(a):
-    """Every error and warning branch of the package's sources has a test:
-    the error cases of the case files are at least as many."""
-    calls = 0
-    for name in sorted(os.listdir(a.package)):
-        if name.endswith(".cpp"):
-            with open(os.path.join(a.package, name)) as f:
-                calls += len(re.findall(r"error->(?:all|one|warning)\(", f.read()))
-    cases = sum(len(read_error_cases(path)[1]) for path in a.cases)
-    ok = calls > 0 and cases >= calls
-    print(f"{'ok' if ok else 'FAIL'}: {cases} error and warning cases in {len(a.cases)} files for "
-          f"{calls} error and warning branches in {a.package}")
+    """Every error and warning call of the package's sources is raised by
+    one of the error cases at least: the sites (file:line) the cases'
+    messages were raised at, recorded by 'error --record', cover every
+    call site. A case that failed or did not run records nothing."""
+    sites = error_sites(a.package)
+    covered = {}
+    for path in a.cases:
+        for name in read_error_cases(path)[1]:
+            try:
+                with open(record_path(a.records, path, name)) as f:
+                    fname, line = f.read().split()
+                covered.setdefault((fname, int(line)), []).append(name)
+            except (OSError, ValueError):
+                pass
+    missing = sorted(set(sites) - set(covered))
+    for fname, line in missing:
+        print(f"no case raises {fname}:{line}: {sites[(fname, line)]}")
+    ok = bool(sites) and not missing
+    print(f"{'ok' if ok else 'FAIL'}: {len(sites) - len(missing)} of {len(sites)} error and warning "
+          f"calls of {a.package} raised by the {sum(map(len, covered.values()))} recorded cases")
     return 0 if ok else 1
 
 
@@ -371,6 +440,7 @@ def main():
                                                         "..", "..", "potentials"))
     s.add_argument("--name")
     s.add_argument("--list", action="store_true")
+    s.add_argument("--record", help="write the site (file line) of the expected message here")
 
     s = sub.add_parser("styles")
     s.add_argument("--lmp", required=True)
@@ -392,6 +462,7 @@ def main():
 
     s = sub.add_parser("branches")
     s.add_argument("--package", required=True)
+    s.add_argument("--records", required=True)
     s.add_argument("--cases", nargs="+", required=True)
 
     a = p.parse_args()
