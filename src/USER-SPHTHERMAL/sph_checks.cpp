@@ -69,25 +69,44 @@ void SPHCheck::atom_state(LAMMPS *lmp, const char *file, int line, const char *w
 void SPHCheck::particles(LAMMPS *lmp, const char *file, int line, const char *who, int needs)
 {
   Atom *atom = lmp->atom;
-  double *const *const x = atom->x;
-  double *const *const v = atom->v;
+  const int nlocal = atom->nlocal;
+  if (nlocal == 0) return;
+  const double *const x = atom->x[0];
+  const double *const v = atom->v[0];
   const double *const rho = (needs & RHO) ? atom->rho : nullptr;
   const double *const esph = (needs & ESPH) ? atom->esph : nullptr;
-  const int nlocal = atom->nlocal;
-  // one sum per atom and quantity: a NaN or inf anywhere makes it non-finite
+
+  // the fast pass, every step: a NaN or inf anywhere makes a sum non-finite
+  // (independent sums, so that the adds do not wait for each other), and
+  // the smallest rho; the slow pass below only once something is wrong
+  double sum[4] = {0.0, 0.0, 0.0, 0.0};
+  double rho_min = INFINITY;
   for (int i = 0; i < nlocal; i++) {
-    const double sum = x[i][0] + x[i][1] + x[i][2] + v[i][0] + v[i][1] + v[i][2] +
-        (rho ? rho[i] : 0.0) + (esph ? esph[i] : 0.0);
-    if (std::isfinite(sum) && (!rho || rho[i] > 0.0)) continue;
-    const char *quantity = "position";
-    double value = x[i][0] + x[i][1] + x[i][2];
-    if (std::isfinite(value)) quantity = "velocity", value = v[i][0] + v[i][1] + v[i][2];
-    if (std::isfinite(value) && rho)
+    sum[0] += x[3 * i] + x[3 * i + 1] + x[3 * i + 2];
+    sum[1] += v[3 * i] + v[3 * i + 1] + v[3 * i + 2];
+    if (rho) {
+      sum[2] += rho[i];
+      rho_min = fmin(rho_min, rho[i]);
+    }
+    if (esph) sum[3] += esph[i];
+  }
+  if (std::isfinite(sum[0] + sum[1] + sum[2] + sum[3]) && rho_min > 0.0) return;
+
+  for (int i = 0; i < nlocal; i++) {
+    const char *quantity = nullptr;
+    double value = 0.0;
+    if (!std::isfinite(x[3 * i] + x[3 * i + 1] + x[3 * i + 2]))
+      quantity = "position", value = x[3 * i] + x[3 * i + 1] + x[3 * i + 2];
+    else if (!std::isfinite(v[3 * i] + v[3 * i + 1] + v[3 * i + 2]))
+      quantity = "velocity", value = v[3 * i] + v[3 * i + 1] + v[3 * i + 2];
+    else if (rho && !(std::isfinite(rho[i]) && rho[i] > 0.0))
       quantity = "rho", value = rho[i];
-    if (std::isfinite(value) && (!rho || rho[i] > 0.0) && esph) quantity = "esph", value = esph[i];
+    else if (esph && !std::isfinite(esph[i]))
+      quantity = "esph", value = esph[i];
+    if (!quantity) continue;
     stop(lmp, file, line,
-         fmt::format("{}: {} of atom {} (type {}) is {} at step {}{}", who, quantity,
-                     atom->tag[i], atom->type[i], value, lmp->update->ntimestep,
+         fmt::format("{}: {} of atom {} (type {}) is {} at step {}{}", who, quantity, atom->tag[i],
+                     atom->type[i], value, lmp->update->ntimestep,
                      strcmp(quantity, "rho") == 0 ? "; it must be finite and > 0" : ""));
   }
 }
