@@ -68,9 +68,8 @@ FixSPHInletTemperature::FixSPHInletTemperature(LAMMPS *lmp, int narg, char **arg
   if (!atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Fix sph/inlet/temperature requires atom style sph (esph, cv)");
   if (narg < 4) error->all(FLERR, "Illegal {} command: expected <T_inlet>", cmd);
+  // utils::numeric refuses a value that is not finite
   t_inlet = utils::numeric(FLERR, arg[3], false, lmp);
-  if (!std::isfinite(t_inlet))
-    error->all(FLERR, "Illegal {} command: T_inlet {} is not finite", cmd, arg[3]);
   int iarg = 4;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "flow") == 0) {
@@ -157,7 +156,8 @@ void FixSPHInletTemperature::init()
       error->all(FLERR, "Fix {} {}: group {} shares atoms with group {} of fix {}", id, style,
                  group->names[igroup], group->names[other->igroup], other->id);
   }
-  SPHCheck::atom_state(lmp, FLERR, cmd, groupbit, SPHCheck::CV | SPHCheck::ESPH);
+  // (cv and esph: pair sph/cleary/heat, which this fix requires, has checked
+  // every atom's at its init, which comes before the fixes')
   // the inlet side's particles see all their neighbours, on both sides
   SPHCompat::request_full_list(neighbor, this, instance_me);
 

@@ -132,7 +132,8 @@ void FixSPHWallAdami::init()
   MPI_Allreduce(&local_solid, &any_solid, 1, MPI_INT, MPI_MAX, world);
   // rho and vest, and with solids their pressure, density and viscosity
   comm_forward = any_solid ? 8 : 4;
-  if (any_solid) SPHCheck::atom_state(lmp, FLERR, "Fix sph/wall/adami", groupbit, SPHCheck::RHO);
+  // (the solids' rho: pair sph/harmonic/visc, which this fix requires, has
+  // checked every atom's at its init, which comes before the fixes')
   // with thermal expansion the wall's density follows its temperature (the
   // pair, which this fix requires, checks every atom's cv and esph then)
   thermal_expansion = materials->thermal_expansion();

@@ -103,7 +103,8 @@ void FixSPHWallDirichlet::init()
                           {"sph/wall/isothermal", "sph/wall/dirichlet", "sph/wall/adiabatic",
                            "sph/surface/flux"},
                           false, false);
-  SPHCheck::atom_state(lmp, FLERR, "Fix sph/wall/dirichlet", groupbit, SPHCheck::CV);
+  // (the cv of its group: the pair, required above, has checked every atom's
+  // at its init, which comes before the fixes')
   if (mirror) mirror->init(groupbit, kernel_kind, cutoff);
 
   dummy_groupbit = 0;

@@ -64,8 +64,9 @@ void SPHMirror::init(int groupbit_in, int kind, double cut)
                "{}: surface region {} moves or changes shape; the wall surface must be fixed",
                command, region_name);
 
-  // the interpolation reads the volume and temperature of the medium
-  SPHCheck::atom_state(lmp, FLERR, command.c_str(), 0, SPHCheck::RHO | SPHCheck::CV);
+  // the interpolation reads the volume and temperature of the medium: pair
+  // sph/cleary/heat, which the mirror walls require, has checked every
+  // atom's rho, cv and esph at its init, which comes before the fixes'
 
   inlet_axis = -1;
   for (Fix *inlet : SPHCompat::fixes_of_style(modify, "sph/inlet/temperature")) {

@@ -23,7 +23,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphtest import finish, lammps_arguments, run_script  # noqa: E402
+from sphtest import finish, lammps_arguments, record_site, run_script  # noqa: E402
 
 # the fixes, defined alike before write_restart and after read_restart (the
 # fix's restart() reads its state when it is defined again)
@@ -102,7 +102,9 @@ def owner(data, at):
 
 
 def main():
-    a = lammps_arguments(argparse.ArgumentParser(description=__doc__), mpi=False).parse_args()
+    p = lammps_arguments(argparse.ArgumentParser(description=__doc__), mpi=False)
+    p.add_argument("--record", help="directory for the sites of the messages (robust.error_branches)")
+    a = p.parse_args()
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
         written = os.path.join(tmp, "written.restart")
@@ -129,6 +131,9 @@ def main():
                 ok = code == 0 and "READ BACK" in out
             else:
                 ok = code != 0 and all(e in out for e in expect)
+                if ok and a.record:
+                    record_site(os.path.join(a.record, f"flow.restart_head.{name}.site"), a.plugin,
+                                out, expect[0])
             print(f"{name}: exit {code}, {'as expected' if ok else 'NOT as expected'}")
             if not ok:
                 print(out[-1500:])
