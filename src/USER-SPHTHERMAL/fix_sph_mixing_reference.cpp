@@ -32,8 +32,7 @@ static constexpr int SHIFT_ZERO = 1 << (SHIFT_BITS - 1);
 
 FixSPHMixingReference::FixSPHMixingReference(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), captured(0), width(0), time0(0.0), tag0(nullptr), count(nullptr),
-    tags(nullptr),
-    shifts(nullptr), distance0(nullptr), restart_pending(0), elapsed_restart(0.0)
+    tags(nullptr), shifts(nullptr), distance0(nullptr), restart_pending(0), elapsed_restart(0.0)
 {
   if (narg != 3)
     error->all(FLERR, "Illegal fix SPH/MIXING/REFERENCE command: it is created by compute sph/mixing");

@@ -271,9 +271,9 @@ void FixSPHShift::check_capped()
   warned_cap = 1;
   if (comm->me == 0)
     error->warning(FLERR,
-                   "{}: the cap ({} of the spacing) shortened the shifts of {} of the {} atoms of "
-                   "group {} at step {}: the coefficient {} {} {}is too large for this flow, and the "
-                   "shifts are the cap's whatever it is; lower it (warned once per run)",
+                   "{}: the cap ({} of the spacing) shortened the shifts of {} of the {} atoms "
+                   "of group {} at step {}: the coefficient {} {} {}is too large for this flow, "
+                   "and the shifts are the cap's whatever it is; lower it (warned once per run)",
                    who, cap, all[0], all[1], group->names[igroup], update->ntimestep,
                    form == DELTAPLUS ? "C" : "D", coefficient,
                    form == DELTAPLUS ? fmt::format("(with U {}) ", speed) : "");
@@ -328,8 +328,7 @@ void FixSPHShift::displacement(int i, const double *sum, double spacing, double 
   const double along[3] = {sum[0], sum[1], dim == 2 ? 0.0 : sum[2]};
   capped_local += sphs_cap_along(factor, along, cap * spacing, dr);
   if (!std::isfinite(dr[0] + dr[1] + dr[2])) stop_nonfinite(i, along, factor, spacing, dr);
-  largest_local =
-      MAX(largest_local, sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]) / spacing);
+  largest_local = MAX(largest_local, sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]) / spacing);
 }
 
 /* ----------------------------------------------------------------------
@@ -345,17 +344,16 @@ void FixSPHShift::stop_nonfinite(int i, const double *sum, double factor, double
   if (!std::isfinite(sum[0] + sum[1] + sum[2])) {
     why = fmt::format("its sum over the neighbours is ({}, {}, {})", sum[0], sum[1], sum[2]);
     if (!(atom->rho[i] > 0.0) || !std::isfinite(atom->rho[i]))
-      why += fmt::format(": its rho {} is not a density (it must be finite and > 0)",
-                         atom->rho[i]);
+      why += fmt::format(": its rho {} is not a density (it must be finite and > 0)", atom->rho[i]);
     else if (form == DELTAPLUS && i < (int) w_spacing.size() && !(w_spacing[i] > 0.0))
       why += fmt::format(
           ": W(dx) of the anti-pairing term (R {}, n {}) is 0 at its spacing (m/rho)^(1/d) = {}, "
           "beyond the kernel's support {} (its rho {} is too low for the kernel)",
           r_coeff, r_power, spacing, cutoff, atom->rho[i]);
     else
-      why += fmt::format(" (a neighbour's volume m/rho or position is not finite{})",
-                         form == DELTAPLUS ? fmt::format(", or R {} n {} overflow", r_coeff, r_power)
-                                           : "");
+      why += fmt::format(
+          " (a neighbour's volume m/rho or position is not finite{})",
+          form == DELTAPLUS ? fmt::format(", or R {} n {} overflow", r_coeff, r_power) : "");
   } else
     why = fmt::format("the factor of its shift, {} = {}, is not finite: the coefficient {} {}{} "
                       "is too large; lower it",
