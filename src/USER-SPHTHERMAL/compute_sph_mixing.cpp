@@ -219,19 +219,22 @@ void ComputeSPHMixing::component_fraction(double &f_all, double &n_group)
 }
 
 /* ----------------------------------------------------------------------
-   every rank gets the group's unwrapped positions, sorted by tag: an
-   initial neighbour may be anywhere by now
+   every rank gets the group's unwrapped positions, sorted by the atoms'
+   tags at the reference (which the neighbour lists hold; an atom keeps its
+   own, so tags renumbered since change nothing): an initial neighbour may
+   be anywhere by now. An atom created since the reference is no one's.
 ------------------------------------------------------------------------- */
 
 void ComputeSPHMixing::gather_positions()
 {
   const int nlocal = atom->nlocal;
+  const tagint *const tag0 = reference->tag0;
   std::vector<double> mine;
   for (int i = 0; i < nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
+    if (!(atom->mask[i] & groupbit) || tag0[i] == 0) continue;
     double xu[3];
     domain->unmap(atom->x[i], atom->image[i], xu);
-    mine.push_back(ubuf(atom->tag[i]).d);
+    mine.push_back(ubuf(tag0[i]).d);
     mine.insert(mine.end(), xu, xu + 3);
   }
   const int nprocs = comm->nprocs;
@@ -283,6 +286,8 @@ void ComputeSPHMixing::separation(const double *xu, tagint tag, int packed_shift
 
 void ComputeSPHMixing::capture()
 {
+  // each atom keeps its tag of now: the neighbour lists name their atoms by it
+  for (int i = 0; i < atom->nlocal; i++) reference->tag0[i] = atom->tag[i];
   std::vector<double> fraction(atom->nlocal);
   volume_fractions(fraction.data());    // also refreshes the ghosts and builds the list
   gather_positions();

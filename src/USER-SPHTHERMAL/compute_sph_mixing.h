@@ -49,7 +49,7 @@ class ComputeSPHMixing : public Compute {
   int nmax;
   double **measures;                 // per atom: F, FTLE, Robinson, VF-FTLE
 
-  // the whole group's unwrapped positions by tag, gathered on every rank
+  // the whole group's unwrapped positions by tag at the reference, gathered on every rank
   struct Position {
     tagint tag;
     double x[3];

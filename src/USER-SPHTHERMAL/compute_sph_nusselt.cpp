@@ -25,6 +25,7 @@
 #include "group.h"
 #include "memory.h"
 #include "modify.h"
+#include "sph_checks.h"
 #include "update.h"
 
 #include <cmath>
@@ -130,7 +131,11 @@ void ComputeSPHNusselt::init()
     error->all(FLERR, "{}: wall fix {} was redefined {} a surface; define the compute anew", cmd,
                wall_id, had_surface ? "without" : "with");
 
-  // the group's atoms are wall atoms of that fix
+  // the group's atoms are wall atoms of that fix, and there are some (the
+  // group can be emptied between the definition and the run)
+  if (SPHCheck::group_count(lmp, groupbit) == 0)
+    error->all(FLERR, "{} {}: group {} has no atoms; give wall atoms of fix {}", cmd, id,
+               group->names[igroup], wall_id);
   const int *const mask = atom->mask;
   tagint stray = MAXTAGINT;
   for (int i = 0; i < atom->nlocal; i++)

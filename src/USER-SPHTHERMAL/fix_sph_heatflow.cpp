@@ -19,11 +19,15 @@
 #include "sph_checks.h"
 #include "update.h"
 
+#include <vector>
+
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
 // the layout of the restart state: raise it when a value is added
-static constexpr int RESTART_VERSION = 1;
+// (1: the energy; 2: the energy, the names of the group and of the group
+// the heat comes from)
+static constexpr int RESTART_VERSION = 2;
 
 static const char cmd[] = "fix sph/heatflow";
 
@@ -71,6 +75,13 @@ void FixSPHHeatflow::init()
   if (from_groupbit == groupbit)
     error->all(FLERR, "Fix sph/heatflow: the heat into group {} from itself is zero by definition",
                from_name);
+  // either group can be emptied between the definition and the run
+  if (SPHCheck::group_count(lmp, groupbit) == 0)
+    error->all(FLERR, "Fix sph/heatflow {}: group {} (the group the heat goes into) has no atoms",
+               id, group->names[igroup]);
+  if (SPHCheck::group_count(lmp, from_groupbit) == 0)
+    error->all(FLERR, "Fix sph/heatflow {}: group {} (the group the heat comes from) has no atoms",
+               id, from_name);
   if (SPHCheck::groups_overlap(lmp, groupbit, from_groupbit))
     error->all(FLERR,
                "Fix sph/heatflow: groups {} and {} share atoms; the heat between them needs "
@@ -124,12 +135,31 @@ double FixSPHHeatflow::compute_vector(int n)
 
 /* ---------------------------------------------------------------------- */
 
+/* ----------------------------------------------------------------------
+   the energy carries across restarts, with the groups it was between: a
+   fix defined again between other groups continues it, with a warning
+------------------------------------------------------------------------- */
+
 void FixSPHHeatflow::write_restart(FILE *fp)
 {
-  if (comm->me == 0) SPHCheck::write_restart_state(fp, RESTART_VERSION, &energy, 1);
+  if (comm->me != 0) return;
+  std::vector<double> state = {energy};
+  SPHCheck::pack_name(state, group->names[igroup]);
+  SPHCheck::pack_name(state, from_name);
+  SPHCheck::write_restart_state(fp, RESTART_VERSION, state.data(), (int) state.size());
 }
 
 void FixSPHHeatflow::restart(char *buf)
 {
-  energy = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION)[0];
+  const double *state = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION);
+  energy = state[0];
+  int at = 1;
+  const std::string into = SPHCheck::unpack_name(state, at);
+  const std::string from = SPHCheck::unpack_name(state, at);
+  if ((into != group->names[igroup] || from != from_name) && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix sph/heatflow {}: the restart file's energy is of the heat into group {} "
+                   "from group {}, the fix is now into group {} from group {}: its energy ({}) "
+                   "continues from the other groups'; give the fix another ID to start it at 0",
+                   id, into, from, group->names[igroup], from_name, energy);
 }

@@ -20,8 +20,9 @@
 
 using namespace LAMMPS_NS;
 
-// the layout of the restart state: raise it when a value is added
-static constexpr int RESTART_VERSION = 1;
+// the layout of the restart state: raise it when a value is added (also
+// one of the atoms' records; 2: each atom's own tag at the reference added)
+static constexpr int RESTART_VERSION = 2;
 
 static constexpr int SHIFT_BITS = 10;
 static constexpr int SHIFT_MASK = (1 << SHIFT_BITS) - 1;
@@ -30,8 +31,8 @@ static constexpr int SHIFT_ZERO = 1 << (SHIFT_BITS - 1);
 /* ---------------------------------------------------------------------- */
 
 FixSPHMixingReference::FixSPHMixingReference(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), captured(0), width(0), time0(0.0), count(nullptr), tags(nullptr),
-    shifts(nullptr), distance0(nullptr), restart_pending(0), elapsed_restart(0.0)
+    Fix(lmp, narg, arg), captured(0), width(0), time0(0.0), tag0(nullptr), count(nullptr),
+    tags(nullptr), shifts(nullptr), distance0(nullptr), restart_pending(0), elapsed_restart(0.0)
 {
   if (narg != 3)
     error->all(FLERR, "Illegal fix SPH/MIXING/REFERENCE command: it is created by compute sph/mixing");
@@ -43,13 +44,14 @@ FixSPHMixingReference::FixSPHMixingReference(LAMMPS *lmp, int narg, char **arg) 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
-  for (int i = 0; i < atom->nmax; i++) count[i] = 0;
+  for (int i = 0; i < atom->nmax; i++) tag0[i] = count[i] = 0;
 }
 
 FixSPHMixingReference::~FixSPHMixingReference()
 {
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(tag0);
   memory->destroy(count);
   memory->destroy(tags);
   memory->destroy(shifts);
@@ -85,6 +87,7 @@ void FixSPHMixingReference::unpack_shift(int packed, int shift[3])
 
 void FixSPHMixingReference::grow_arrays(int nmax)
 {
+  memory->grow(tag0, nmax, "sph/mixing:tag0");
   memory->grow(count, nmax, "sph/mixing:count");
   memory->grow(tags, nmax, slots(), "sph/mixing:tags");
   memory->grow(shifts, nmax, slots(), "sph/mixing:shifts");
@@ -93,6 +96,7 @@ void FixSPHMixingReference::grow_arrays(int nmax)
 
 void FixSPHMixingReference::copy_arrays(int i, int j, int /*delflag*/)
 {
+  tag0[j] = tag0[i];
   count[j] = count[i];
   for (int k = 0; k < count[i]; k++) {
     tags[j][k] = tags[i][k];
@@ -104,12 +108,14 @@ void FixSPHMixingReference::copy_arrays(int i, int j, int /*delflag*/)
 // an atom created after the reference has no initial neighbourhood
 void FixSPHMixingReference::set_arrays(int i)
 {
+  tag0[i] = 0;
   count[i] = 0;
 }
 
 int FixSPHMixingReference::pack_exchange(int i, double *buf)
 {
   int m = 0;
+  buf[m++] = ubuf(tag0[i]).d;
   buf[m++] = ubuf(count[i]).d;
   for (int k = 0; k < count[i]; k++) {
     buf[m++] = ubuf(tags[i][k]).d;
@@ -122,6 +128,7 @@ int FixSPHMixingReference::pack_exchange(int i, double *buf)
 int FixSPHMixingReference::unpack_exchange(int i, double *buf)
 {
   int m = 0;
+  tag0[i] = (tagint) ubuf(buf[m++]).i;
   count[i] = (int) ubuf(buf[m++]).i;
   for (int k = 0; k < count[i]; k++) {
     tags[i][k] = (tagint) ubuf(buf[m++]).i;
@@ -153,7 +160,7 @@ void FixSPHMixingReference::unpack_restart(int nlocal, int nth)
 
 int FixSPHMixingReference::size_restart(int i)
 {
-  return 2 + 3 * count[i];
+  return 3 + 3 * count[i];
 }
 
 int FixSPHMixingReference::maxsize_restart()
@@ -203,5 +210,5 @@ void FixSPHMixingReference::restart(char *buf)
 double FixSPHMixingReference::memory_usage()
 {
   return (double) atom->nmax *
-      (sizeof(int) + slots() * (sizeof(tagint) + sizeof(int) + sizeof(double)));
+      (sizeof(tagint) + sizeof(int) + slots() * (sizeof(tagint) + sizeof(int) + sizeof(double)));
 }

@@ -17,10 +17,13 @@ FixStyle(SPH/MIXING/REFERENCE,FixSPHMixingReference);
 namespace LAMMPS_NS {
 
 // The reference state of compute sph/mixing, created by it (not a user
-// command): each particle's neighbours at the reference time (tag, the
-// periodic image shift that made them neighbours, initial distance), the
-// reference time and the reference entropies. The lists move with the atoms
-// between ranks and are written to restart files.
+// command): each particle's own tag and its neighbours at the reference
+// time (their tags then, the periodic image shift that made them
+// neighbours, initial distance), the reference time and the reference
+// entropies. The lists move with the atoms between ranks and are written
+// to restart files. A neighbour is found by its tag at the reference, which
+// its atom keeps: tags renumbered since (delete_atoms with 'compress yes',
+// reset_atoms id) do not break the lists.
 class FixSPHMixingReference : public Fix {
  public:
   FixSPHMixingReference(class LAMMPS *, int, char **);
@@ -59,6 +62,7 @@ class FixSPHMixingReference : public Fix {
   int width;              // neighbours per atom the arrays hold
   double time0;           // simulation time of the reference
   double entropy0[2];     // S of component A and of the rest at the reference
+  tagint *tag0;           // each atom's own tag at the reference (0: created since)
   int *count;             // neighbours stored per atom
   tagint **tags;          // their tags
   int **shifts;           // their periodic image shifts (packed, see the .cpp)
@@ -67,7 +71,7 @@ class FixSPHMixingReference : public Fix {
  private:
   int restart_pending;       // read from a restart file, time0 not yet settled
   double elapsed_restart;    // the time since the reference when it was written
-  int values_per_atom() const { return 1 + 3 * width; }
+  int values_per_atom() const { return 2 + 3 * width; }
   // columns of the per-atom lists: at least 1, so that they exist before the capture
   int slots() const { return width > 0 ? width : 1; }
 };

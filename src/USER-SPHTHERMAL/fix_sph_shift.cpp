@@ -44,6 +44,8 @@
 #include "domain.h"
 #include "error.h"
 #include "force.h"
+#include "group.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "pair.h"
@@ -62,7 +64,8 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 // the layout of the restart state: raise it when a value is added
-static constexpr int RESTART_VERSION = 1;
+// (1: the energy; 2: the energy, the group's name)
+static constexpr int RESTART_VERSION = 2;
 
 static const char cmd[] = "fix sph/shift";
 
@@ -77,7 +80,8 @@ static inline double spacing_of(double volume, int dim)
 FixSPHShift::FixSPHShift(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), form(SKILLEN), coefficient(0.0), speed(0.0), r_coeff(0.2), r_power(4),
     cap(0.1), correct(0), continuity(0), kernel_kind(0), cutoff(0.0), loop_own(0), from_pair(0),
-    flow(nullptr), list(nullptr), energy(0.0), largest(0.0), capped(0), sums_per_atom(3)
+    flow(nullptr), list(nullptr), energy(0.0), largest(0.0), capped(0), moved(0), warned_cap(0),
+    sums_per_atom(3), who(fmt::format("Fix sph/shift {}", id))
 {
   if (narg < 5) error->all(FLERR, "Illegal {} command: expected <form> <coefficient>", cmd);
   if (strcmp(arg[3], "skillen") == 0)
@@ -108,8 +112,14 @@ FixSPHShift::FixSPHShift(LAMMPS *lmp, int narg, char **arg) :
     if (form == DELTAPLUS && strcmp(arg[iarg], "R") == 0) {
       if (iarg + 1 >= narg) error->all(FLERR, "Illegal {} command: missing value after 'R'", cmd);
       r_coeff = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (!(r_coeff >= 0.0) || !std::isfinite(r_coeff))
-        error->all(FLERR, "Illegal {} command: R {} must be >= 0", cmd, arg[iarg + 1]);
+      // R weighs a correction: at R = 1 the anti-pairing term already
+      // doubles a pair's weight at one spacing (and grows as (W_ij/W(dx))^n
+      // closer in); a larger R is not the delta-plus shift any more
+      if (!(r_coeff >= 0.0) || !(r_coeff <= 1.0))
+        error->all(FLERR,
+                   "Illegal {} command: R {} must be 0 to 1 (the weight of the anti-pairing "
+                   "term; Sun et al. 2017 use 0.2)",
+                   cmd, arg[iarg + 1]);
       iarg += 2;
     } else if (form == DELTAPLUS && strcmp(arg[iarg], "n") == 0) {
       if (iarg + 1 >= narg) error->all(FLERR, "Illegal {} command: missing value after 'n'", cmd);
@@ -184,6 +194,8 @@ void FixSPHShift::init()
   kernel_kind = *(int *) flow->extract("kernel_kind", dim);
   cutoff = *(double *) flow->extract("cutoff", dim);
   SPHCheck::atom_state(lmp, FLERR, cmd, 0, SPHCheck::RHO | (correct ? SPHCheck::CV : 0));
+  check_group();
+  warned_cap = 0;
   const int was_from_pair = from_pair;
   // the pair loop makes the skillen sum alone, when it sees every pair of the group
   from_pair = !loop_own && form == SKILLEN && !correct && !continuity &&
@@ -195,6 +207,36 @@ void FixSPHShift::init()
   if (!from_pair) SPHCompat::request_half_list(neighbor, this, instance_me);
 }
 
+
+/* ----------------------------------------------------------------------
+   the group at each run (it can change between definition and run): not
+   empty, no wall particle of fix sph/wall/adami (shifting would move it
+   out of its wall), no atom of another fix sph/shift (shifted twice)
+------------------------------------------------------------------------- */
+
+void FixSPHShift::check_group()
+{
+  const char *name = group->names[igroup];
+  if (SPHCheck::group_count(lmp, groupbit) == 0)
+    error->all(FLERR, "{}: group {} has no atoms; give the fluid's group", who, name);
+  for (int k = 0; k < modify->nfix; k++) {
+    Fix *other = modify->fix[k];
+    if (other == this) continue;
+    const bool adami = strcmp(other->style, "sph/wall/adami") == 0;
+    const bool shift = strcmp(other->style, "sph/shift") == 0;
+    if (!adami && !shift) continue;
+    if (!SPHCheck::groups_overlap(lmp, groupbit, other->groupbit)) continue;
+    if (adami)
+      error->all(FLERR,
+                 "{} and fix sph/wall/adami {} share atoms of groups {} and {}: the wall's "
+                 "particles would be shifted out of the wall; leave them out of the shift's group",
+                 who, other->id, name, group->names[other->igroup]);
+    error->all(FLERR,
+               "{} and fix sph/shift {} share atoms of groups {} and {}: they would be shifted "
+               "twice in a step; give each fix its own atoms",
+               who, other->id, name, group->names[other->igroup]);
+  }
+}
 
 void FixSPHShift::init_list(int /*id*/, NeighList *ptr)
 {
@@ -212,6 +254,29 @@ void FixSPHShift::end_of_step()
     shift_from_pair_sums();
   else
     form == DELTAPLUS ? shift_corrected<DELTAPLUS>() : shift_corrected<SKILLEN>();
+  check_capped();
+}
+
+/* ----------------------------------------------------------------------
+   a warning (once per run) when the cap shortened more than half of the
+   group's shifts in this step: the shift is then the cap's, not the form's
+------------------------------------------------------------------------- */
+
+void FixSPHShift::check_capped()
+{
+  if (warned_cap) return;
+  int counts[2] = {capped, moved}, all[2];
+  MPI_Allreduce(counts, all, 2, MPI_INT, MPI_SUM, world);
+  if (2 * (bigint) all[0] <= all[1]) return;
+  warned_cap = 1;
+  if (comm->me == 0)
+    error->warning(FLERR,
+                   "{}: the cap ({} of the spacing) shortened the shifts of {} of the {} atoms "
+                   "of group {} at step {}: the coefficient {} {} {}is too large for this flow, "
+                   "and the shifts are the cap's whatever it is; lower it (warned once per run)",
+                   who, cap, all[0], all[1], group->names[igroup], update->ntimestep,
+                   form == DELTAPLUS ? "C" : "D", coefficient,
+                   form == DELTAPLUS ? fmt::format("(with U {}) ", speed) : "");
 }
 
 /* ----------------------------------------------------------------------
@@ -230,9 +295,10 @@ void FixSPHShift::shift_from_pair_sums()
   const double h = cutoff / sphk_support(kernel_kind);
   const double *const sums_of = flow->shift_sums();
   double largest_local = 0.0;
-  int capped_local = 0;
+  int capped_local = 0, moved_local = 0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
+    moved_local++;
     double dr[3];
     displacement(i, &sums_of[3 * (size_t) i],
                  spacing_of((rmass ? rmass[i] : mass[type[i]]) / rho[i], dim), h, dim, dr,
@@ -241,26 +307,60 @@ void FixSPHShift::shift_from_pair_sums()
   }
   largest = largest_local;
   capped = capped_local;
+  moved = moved_local;
 }
 
 /* ----------------------------------------------------------------------
    atom i's shift dr from its neighbour sum (of its form), shortened to the
-   cap; the largest shift / spacing and the count of capped atoms follow
+   cap (along the sum even where the coefficient is so large that the
+   shift's length overflows); the largest shift / spacing and the count of
+   capped atoms follow. A shift that is not finite stops the run.
 ------------------------------------------------------------------------- */
 
 void FixSPHShift::displacement(int i, const double *sum, double spacing, double h, int dim,
                                double *dr, double &largest_local, int &capped_local)
 {
   const double *const v = atom->v[i];
-  if (form == DELTAPLUS)
-    sphs_deltaplus(coefficient, h, speed, update->dt, sum, dr);
-  else
-    sphs_skillen(coefficient, h, sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), update->dt, sum,
-                 dr);
-  if (dim == 2) dr[2] = 0.0;
-  capped_local += sphs_cap(dr, cap * spacing);
-  largest_local =
-      MAX(largest_local, sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]) / spacing);
+  const double factor = form == DELTAPLUS
+      ? sphs_deltaplus_factor(coefficient, h, speed, update->dt)
+      : sphs_skillen_factor(coefficient, h, sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]),
+                            update->dt);
+  const double along[3] = {sum[0], sum[1], dim == 2 ? 0.0 : sum[2]};
+  capped_local += sphs_cap_along(factor, along, cap * spacing, dr);
+  if (!std::isfinite(dr[0] + dr[1] + dr[2])) stop_nonfinite(i, along, factor, spacing, dr);
+  largest_local = MAX(largest_local, sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]) / spacing);
+}
+
+/* ----------------------------------------------------------------------
+   the shift of atom i is not finite: stop (on this rank) naming the atom,
+   the step and what made it so
+------------------------------------------------------------------------- */
+
+void FixSPHShift::stop_nonfinite(int i, const double *sum, double factor, double spacing,
+                                 const double *dr)
+{
+  const char *coeff = form == DELTAPLUS ? "C" : "D";
+  std::string why;
+  if (!std::isfinite(sum[0] + sum[1] + sum[2])) {
+    why = fmt::format("its sum over the neighbours is ({}, {}, {})", sum[0], sum[1], sum[2]);
+    if (!(atom->rho[i] > 0.0) || !std::isfinite(atom->rho[i]))
+      why += fmt::format(": its rho {} is not a density (it must be finite and > 0)", atom->rho[i]);
+    else if (form == DELTAPLUS && i < (int) w_spacing.size() && !(w_spacing[i] > 0.0))
+      why += fmt::format(
+          ": W(dx) of the anti-pairing term (R {}, n {}) is 0 at its spacing (m/rho)^(1/d) = {}, "
+          "beyond the kernel's support {} (its rho {} is too low for the kernel)",
+          r_coeff, r_power, spacing, cutoff, atom->rho[i]);
+    else
+      why += fmt::format(
+          " (a neighbour's volume m/rho or position is not finite{})",
+          form == DELTAPLUS ? fmt::format(", or R {} n {} overflow", r_coeff, r_power) : "");
+  } else
+    why = fmt::format("the factor of its shift, {} = {}, is not finite: the coefficient {} {}{} "
+                      "is too large; lower it",
+                      form == DELTAPLUS ? "-C (U dt / h) (2h)^2" : "-D h |v| dt", factor, coeff,
+                      coefficient, form == DELTAPLUS ? fmt::format(" (with U {})", speed) : "");
+  SPHCheck::nonfinite(lmp, FLERR, who.c_str(), "shift", i,
+                      sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]), why);
 }
 
 template <int FORM> void FixSPHShift::shift_corrected()
@@ -401,9 +501,10 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
   // CORRECT_ALL: the changes of rho, vx, vy, vz
   std::vector<double> dflow(CORRECT == CORRECT_ALL ? 4 * (size_t) nlocal : 0, 0.0);
   double largest_local = 0.0, rho_change_local = 0.0, rho_sum_local = 0.0, rho_follow_local = 0.0;
-  int capped_local = 0;
+  int capped_local = 0, moved_local = 0;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
+    moved_local++;
     const double *const s = &sums[(size_t) per_atom * i];
     const double spacing = spacing_of(volume[i], dim);
     double *dr = &shift[3 * (size_t) i];
@@ -462,6 +563,7 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
   }
   largest = largest_local;
   capped = capped_local;
+  moved = moved_local;
 }
 
 int FixSPHShift::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/, int * /*pbc*/)
@@ -530,17 +632,30 @@ double FixSPHShift::compute_vector(int n)
 }
 
 /* ----------------------------------------------------------------------
-   the tallied energy carries across restarts
+   the tallied energy carries across restarts, with the group it was of: a
+   fix defined again on another group continues it, with a warning
 ------------------------------------------------------------------------- */
 
 void FixSPHShift::write_restart(FILE *fp)
 {
-  if (comm->me == 0) SPHCheck::write_restart_state(fp, RESTART_VERSION, &energy, 1);
+  if (comm->me != 0) return;
+  std::vector<double> state = {energy};
+  SPHCheck::pack_name(state, group->names[igroup]);
+  SPHCheck::write_restart_state(fp, RESTART_VERSION, state.data(), (int) state.size());
 }
 
 void FixSPHShift::restart(char *buf)
 {
-  energy = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION)[0];
+  const double *state = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION);
+  energy = state[0];
+  int at = 1;
+  const std::string written = SPHCheck::unpack_name(state, at);
+  if (written != group->names[igroup] && comm->me == 0)
+    error->warning(FLERR,
+                   "{}: the restart file's state is of group {}, the fix is now of group {}: its "
+                   "tallied energy ({}) continues from the other group's; give the fix another "
+                   "ID to start it at 0",
+                   who, written, group->names[igroup], energy);
 }
 
 /* ----------------------------------------------------------------------

@@ -14,6 +14,7 @@ FixStyle(sph/shift,FixSPHShift);
 
 #include "fix.h"
 
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -67,11 +68,17 @@ class FixSPHShift : public Fix {
   double energy;                // energy the correction has added since the fix was defined
   double largest;               // largest shift / spacing of the last step, on this rank
   int capped;                   // atoms shortened to the cap in the last step, on this rank
+  int moved;                    // atoms of the group shifted in the last step, on this rank
+  int warned_cap;               // 1 once this run has warned that most shifts were capped
   int sums_per_atom;            // length of an atom's neighbour sums
+  std::string who;              // "Fix sph/shift <ID>", for messages
 
   void shift_from_pair_sums();
   void displacement(int i, const double *sum, double spacing, double h, int dim, double *dr,
                     double &largest_local, int &capped_local);
+  void stop_nonfinite(int i, const double *sum, double factor, double spacing, const double *dr);
+  void check_capped();
+  void check_group();
   template <int FORM> void shift_corrected();
   template <int FORM, int CORRECT> void shift_continuity();
   template <int FORM, int CORRECT, int CONTINUITY> void shift_group();

@@ -229,6 +229,20 @@ const double *SPHCheck::read_restart_state(LAMMPS *lmp, Fix *fix, const char *bu
   return (const double *) (buf + sizeof(head));
 }
 
+void SPHCheck::pack_name(std::vector<double> &state, const std::string &name)
+{
+  state.push_back((double) name.size());
+  for (const char c : name) state.push_back((double) (unsigned char) c);
+}
+
+std::string SPHCheck::unpack_name(const double *state, int &at)
+{
+  const int length = (int) state[at++];
+  std::string name;
+  for (int k = 0; k < length; k++) name += (char) (int) state[at++];
+  return name;
+}
+
 /* ---------------------------------------------------------------------- */
 
 void SPHCheck::group_of_kind(LAMMPS *lmp, Fix *fix, std::initializer_list<const char *> exclusive,

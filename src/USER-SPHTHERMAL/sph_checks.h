@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -82,6 +83,11 @@ namespace SPHCheck {
   // can be read as a head.
   void write_restart_state(FILE *fp, int version, const double *state, int n);
   const double *read_restart_state(LAMMPS *lmp, Fix *fix, const char *buf, int version);
+
+  // A name (a group's) in such a state: its length, then its characters,
+  // one per double. unpack: the name at state[at], 'at' moved past it.
+  void pack_name(std::vector<double> &state, const std::string &name);
+  std::string unpack_name(const double *state, int &at);
 
 }    // namespace SPHCheck
 }    // namespace LAMMPS_NS

@@ -24,11 +24,17 @@
 
 #include <math.h>
 
+/* the factor s of dr = s grad_c: -D h |v| dt */
+static inline double sphs_skillen_factor(double coefficient, double h, double speed, double dt)
+{
+  return -coefficient * h * speed * dt;
+}
+
 /* dr = -D h |v| dt grad_c */
 static inline void sphs_skillen(double coefficient, double h, double speed, double dt,
                                 const double grad_c[3], double dr[3])
 {
-  const double s = -coefficient * h * speed * dt;
+  const double s = sphs_skillen_factor(coefficient, h, speed, dt);
   dr[0] = s * grad_c[0];
   dr[1] = s * grad_c[1];
   dr[2] = s * grad_c[2];
@@ -38,17 +44,25 @@ static inline void sphs_skillen(double coefficient, double h, double speed, doub
 static inline double sphs_deltaplus_weight(double w_ij, double w_spacing, double r_coeff,
                                            int n)
 {
+  /* R = 0: no term, even where the ratio is not finite (W(dx) = 0) */
+  if (r_coeff == 0.0) return 1.0;
   const double ratio = w_ij / w_spacing;
   double power = 1.0;
   for (int k = 0; k < n; k++) power *= ratio;
   return 1.0 + r_coeff * power;
 }
 
+/* the factor s of dr = s sum_grad: -C (U dt / h) (2h)^2 */
+static inline double sphs_deltaplus_factor(double coefficient, double h, double speed, double dt)
+{
+  return -coefficient * speed * dt / h * 4.0 * h * h;
+}
+
 /* dr = -C (U dt / h) (2h)^2 sum_grad, sum_grad = sum_j weight_ij grad_i W_ij V_j */
 static inline void sphs_deltaplus(double coefficient, double h, double speed, double dt,
                                   const double sum_grad[3], double dr[3])
 {
-  const double s = -coefficient * speed * dt / h * 4.0 * h * h;
+  const double s = sphs_deltaplus_factor(coefficient, h, speed, dt);
   dr[0] = s * sum_grad[0];
   dr[1] = s * sum_grad[1];
   dr[2] = s * sum_grad[2];
@@ -63,6 +77,26 @@ static inline int sphs_cap(double dr[3], double limit)
   dr[0] *= s;
   dr[1] *= s;
   dr[2] *= s;
+  return 1;
+}
+
+/* dr = s g shortened to at most 'limit' long; returns 1 when it was
+   shortened. Where s g or the square of its length overflows (a huge
+   coefficient), the capped shift still runs along sign(s) g at the limit:
+   g is scaled by its largest component first. (Without that the length is
+   inf, limit / inf = 0, and every capped shift would be 0.) A NaN s or g,
+   or an infinite g, leaves dr not finite, for the caller to see. */
+static inline int sphs_cap_along(double s, const double g[3], double limit, double dr[3])
+{
+  /* a zero component stays 0 even for an infinite s */
+  for (int a = 0; a < 3; a++) dr[a] = (g[a] == 0.0) ? 0.0 : s * g[a];
+  if (!isinf(sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]))) return sphs_cap(dr, limit);
+  /* the length overflowed: |g| from g / max |g_a|, whose length is 1 to sqrt(3) */
+  const double m = fmax(fabs(g[0]), fmax(fabs(g[1]), fabs(g[2])));
+  if (!isfinite(m)) return 0;
+  const double u[3] = {g[0] / m, g[1] / m, g[2] / m};
+  const double k = (s < 0.0 ? -limit : limit) / sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  for (int a = 0; a < 3; a++) dr[a] = k * u[a];
   return 1;
 }
 

@@ -193,6 +193,29 @@ static void test_shift(void)
   check(sphs_cap(dr, 1e-3) && fabs(sqrt(dr[0] * dr[0] + dr[1] * dr[1]) - 1e-3) < 1e-18 &&
             fabs(dr[0] / dr[1] + 0.75) < 1e-15,
         "capped: the limit's length, the same direction", dr[0] / dr[1], -0.75);
+  /* a factor so large that the square of the length overflows (or the
+     shift itself): still the limit's length down the gradient, not 0 */
+  const double huge[2] = {-1e300, -INFINITY};
+  for (int k = 0; k < 2; k++) {
+    check(sphs_cap_along(huge[k], grad_c, 1e-3, dr) &&
+              fabs(sqrt(dr[0] * dr[0] + dr[1] * dr[1]) - 1e-3) < 1e-18 &&
+              fabs(dr[0] / dr[1] + 0.75) < 1e-15 && dr[0] < 0.0 && dr[2] == 0.0,
+          "overflowing factor: capped at the limit along -grad C", sqrt(dr[0] * dr[0] + dr[1] * dr[1]),
+          1e-3);
+  }
+  /* a finite factor: as sphs_skillen and sphs_cap */
+  const double factor = sphs_skillen_factor(2.0, 0.1, 5.0, 1e-3);
+  double plain[3];
+  sphs_skillen(2.0, 0.1, 5.0, 1e-3, grad_c, plain);
+  check(!sphs_cap_along(factor, grad_c, 1.0, dr) && dr[0] == plain[0] && dr[1] == plain[1],
+        "finite factor below the cap: the same shift, bit for bit", dr[0], plain[0]);
+  sphs_cap(plain, 1e-3);
+  check(sphs_cap_along(factor, grad_c, 1e-3, dr) && dr[0] == plain[0] && dr[1] == plain[1],
+        "finite factor above the cap: the same shift, bit for bit", dr[0], plain[0]);
+  /* a sum that is not finite stays so, for the caller to stop */
+  const double nan_sum[3] = {NAN, 1.0, 0.0};
+  sphs_cap_along(-1.0, nan_sum, 1e-3, dr);
+  check(isnan(dr[0]), "a NaN sum gives a NaN shift", dr[0], NAN);
 }
 
 /* the corrected gradient (sph_gradient.h) of a linear field at a particle

@@ -10,7 +10,9 @@ every fix of the package that keeps a global state is written once; each
 head (tag "SPTH", then the version) is found in the file by its tag and its
 owner read from the style name written in front of it. Checked, for each:
 - the file as written reads back, the fixes defined again (the control);
-- the version raised by one: the error names the style and both versions;
+- the version raised by one, and lowered by one where the layout has been
+  raised (a file of the older layout): the error names the style and both
+  versions;
 - the head cut out (the layout of a file from before heads; for a fix the
   size of its block shrunk with it): the error names the style and says the
   file has no version head.
@@ -149,6 +151,12 @@ def main():
             reads(f"version_{short}.restart", raised,
                   [f"{who}: the restart file's {what} are of version {version + 1}, "
                    f"this build reads version {version}"])
+            # a layout this build has raised since (the head of a file of then)
+            if version > 1:
+                older = data[:at + 4] + struct.pack("i", version - 1) + data[at + 8:]
+                reads(f"older_{short}.restart", older,
+                      [f"{who}: the restart file's {what} are of version {version - 1}, "
+                       f"this build reads version {version}"])
             if is_fix:
                 # the block's size, in front of the head, shrinks with it
                 size = struct.unpack_from("i", data, at - 4)[0]

@@ -14,6 +14,10 @@ definitions of Reece et al. 2024, Table 4).
   ranks       the shear on 1, 2 and 4 ranks (atoms migrate): the same values
   restart     the shear stopped half-way, written, read and continued: the
               same values as without the restart
+  renumber    the shear with the bottom row (outside the group) deleted
+              half-way by delete_atoms, which renumbers the atom IDs: the
+              same values as without it (the reference names each
+              neighbour by its ID at the reference, which its atom keeps)
 """
 
 import argparse
@@ -292,8 +296,38 @@ def check_restart(args, workdir):
     that(thermo_globals(out_split)[9] > 0.04, "the continued run's FTLE is that of the sheared reference")
 
 
+def check_renumber(args, workdir):
+    whole = os.path.join(workdir, "whole")
+    renumbered = os.path.join(workdir, "renumbered")
+    os.makedirs(whole)
+    os.makedirs(renumbered)
+    out_whole, frames_whole = run(args, script(args.plugin, steps=STEPS), whole, np_=2)
+    text = script(args.plugin, steps=STEPS)
+    half = f"run {STEPS // 2}\n"
+    text = text.replace(f"run {STEPS}\n", half + "delete_atoms region rows compress yes\n" + half)
+    out_renumbered, frames_renumbered = run(args, text, renumbered, np_=2)
+    a, b = frames_whole[-1][1], frames_renumbered[-1][1]
+    that(frames_renumbered[-1][0] == frames_whole[-1][0], "the run with deleted atoms ends at the same step")
+    that(len(b["id"]) == len(a["id"]) - NX and b["id"].max() == len(b["id"]),
+         "delete_atoms removed the bottom row and renumbered the IDs", f"largest ID {b['id'].max():.0f}")
+    # the same atoms, matched by their positions (in the group: the rest is 0)
+    in_a, in_b = a["type"] != 3, b["type"] != 3
+    order_a = np.lexsort((a["xu"][in_a], a["yu"][in_a]))
+    order_b = np.lexsort((b["xu"][in_b], b["yu"][in_b]))
+    pos = np.abs(a["xu"][in_a][order_a] - b["xu"][in_b][order_b]).max() + \
+        np.abs(a["yu"][in_a][order_a] - b["yu"][in_b][order_b]).max()
+    below(pos, 1e-15, "the group's atoms at the same positions")
+    va = np.column_stack([a[f"c_mix[{k + 1}]"][in_a][order_a] for k in range(4)])
+    vb = np.column_stack([b[f"c_mix[{k + 1}]"][in_b][order_b] for k in range(4)])
+    below(np.abs(va - vb).max(), 1e-12, "per-particle measures (FTLE too) after the IDs changed as without it")
+    below(np.abs(thermo_globals(out_whole)[2:] - thermo_globals(out_renumbered)[2:]).max(), 1e-12,
+          "global measures after the IDs changed as without it")
+    that(thermo_globals(out_renumbered)[9] > 0.04, "the FTLE is that of the sheared reference",
+         f"{thermo_globals(out_renumbered)[9]:.4f}")
+
+
 CHECKS = {"segregated": check_segregated, "uniform": check_uniform, "shear": check_shear,
-          "ranks": check_ranks, "restart": check_restart}
+          "ranks": check_ranks, "restart": check_restart, "renumber": check_renumber}
 
 
 def main():
