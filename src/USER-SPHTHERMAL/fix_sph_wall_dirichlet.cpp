@@ -104,7 +104,7 @@ void FixSPHWallDirichlet::init()
                            "sph/surface/flux"},
                           false, false);
   SPHCheck::atom_state(lmp, FLERR, "Fix sph/wall/dirichlet", groupbit, SPHCheck::CV);
-  if (mirror) mirror->init(groupbit, kernel_kind, cutoff);
+  if (mirror) mirror->init(groupbit, kernel_kind, cutoff, id);
 
   dummy_groupbit = 0;
   for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/dirichlet"))
