@@ -246,8 +246,8 @@ void FixSPHBoussinesq::check_compression()
                    "max|T - T0| = {:.6g}, L = {:.6g} the group's extent along g, c0 = {:.6g}), "
                    "more than {}, which biases the flow and the heat transfer; raise c0 of type {} "
                    "in fix sph/materials to {:.4g} or more",
-                   worst_type, group->names[igroup], worst, gnorm, beta[worst_type], dt_max,
-                   extent, worst_c0, MAX_COMPRESSION, worst_type,
+                   worst_type, group->names[igroup], worst, gnorm, beta[worst_type], dt_max, extent,
+                   worst_c0, MAX_COMPRESSION, worst_type,
                    sqrt(gnorm * fabs(beta[worst_type]) * dt_max * extent / MAX_COMPRESSION));
 }
 

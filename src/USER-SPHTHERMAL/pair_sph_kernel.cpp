@@ -98,7 +98,7 @@ double PairSPHKernel::init_kernel()
   // the fixes and computes that read this pair style find it by its name
   // (Force::pair_match), which fails for two instances: one takes all pairs
   const char *family = (strncmp(style, "sph/cleary/heat", 15) == 0) ? "sph/cleary/heat"
-                                                                     : "sph/harmonic/visc";
+                                                                    : "sph/harmonic/visc";
   if (force->pair_match(std::string("^") + family, 0) != this)
     error->all(FLERR,
                "Pair style {} appears more than once in pair_style {}: give all its type pairs to "

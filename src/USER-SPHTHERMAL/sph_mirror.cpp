@@ -145,8 +145,8 @@ void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
 int SPHMirror::ghost_point(const double *x, double *ghost, double *depth)
 {
   double xs[3] = {x[0], x[1], x[2]};
-  const int ncontact =
-      region->interior ? region->surface_exterior(xs, cutoff) : region->surface_interior(xs, cutoff);
+  const int ncontact = region->interior ? region->surface_exterior(xs, cutoff)
+                                        : region->surface_interior(xs, cutoff);
   if (ncontact > 0) {
     int nearest = 0;
     for (int k = 1; k < ncontact; k++)
