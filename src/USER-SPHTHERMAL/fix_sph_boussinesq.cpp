@@ -13,13 +13,16 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "fix_sph_materials.h"
 #include "group.h"
 #include "memory.h"
+#include "modify.h"
 #include "sph_buoyancy.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
+#include "sph_eos.h"
 
 #include <cmath>
 #include <cstring>
@@ -31,10 +34,17 @@ using namespace FixConst;
 
 static const char cmd[] = "fix sph/boussinesq";
 
+// the largest compression by the buoyancy's pressure without a warning
+// (the bound of check_compression(); in the cavity of de Vahl Davis, T0
+// halfway between the walls, 0.1 put Nu 0.46 % low and its estimates 1.9 %
+// apart, 0.025 within 0.04 % and 0.41 %: doc/src/fix_sph_boussinesq.rst)
+static constexpr double MAX_COMPRESSION = 0.05;
+
 /* ---------------------------------------------------------------------- */
 
 FixSPHBoussinesq::FixSPHBoussinesq(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), gravity_keyword(0), beta(nullptr), force_summed(0)
+    Fix(lmp, narg, arg), gravity_keyword(0), beta(nullptr), force_summed(0), zero_warned(0),
+    compression_checked(0)
 {
   if (!atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Fix sph/boussinesq requires atom style sph (esph, cv)");
@@ -53,6 +63,12 @@ FixSPHBoussinesq::FixSPHBoussinesq(LAMMPS *lmp, int narg, char **arg) :
     } else
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
   }
+  // in 2d the atoms move in the xy plane: a z component would push them out of it
+  if (gravity_keyword && domain->dimension == 2 && gravity_given[2] != 0.0)
+    error->all(FLERR,
+               "Illegal {} command: 'gravity {} {} {}' has a z component in a 2d simulation; "
+               "give gz = 0 (gravity in the xy plane)",
+               cmd, gravity_given[0], gravity_given[1], gravity_given[2]);
   memory->create(beta, atom->ntypes + 1, "sph/boussinesq:beta");
   for (int t = 0; t <= atom->ntypes; t++) beta[t] = 0.0;
   buoyancy.beta = beta;
@@ -96,6 +112,16 @@ void FixSPHBoussinesq::init()
     buoyancy.gravity = gravity_given;
   } else if (gvec) {
     buoyancy.gravity = gvec;
+    // fix gravity of magnitude 0 (a number, not a variable that may ramp it up)
+    Fix *source = SPHBodyForce::source(lmp);
+    if (!zero_warned && SPHBodyForce::constant_zero(source)) {
+      if (comm->me == 0)
+        error->warning(FLERR,
+                       "Fix sph/boussinesq: the gravity of fix {} (style {}) has magnitude 0, so "
+                       "there is no buoyancy; give fix {} a magnitude (or a variable one)",
+                       source->id, source->style, source->id);
+      zero_warned = 1;
+    }
   } else
     error->all(FLERR,
                "Fix sph/boussinesq needs gravity: give 'gravity gx gy gz' (buoyancy only) or "
@@ -146,6 +172,83 @@ void FixSPHBoussinesq::init()
 void FixSPHBoussinesq::setup(int vflag)
 {
   post_force(vflag);
+  if (!compression_checked) check_compression();
+  compression_checked = 1;
+}
+
+/* ----------------------------------------------------------------------
+   the pressure that balances the buoyancy compresses a weakly compressible
+   fluid: across the extent L of the group along g, by at most
+     |g| beta max|T - T0| L / c0^2
+   (a column at the largest |T - T0| there can be; the temperatures stay
+   within those at the start without heat sources). The temperatures: all
+   atoms' but those of fix sph/wall/dirichlet, whose own are extrapolated,
+   and its wall temperatures. Checked once, at the first run's setup, when
+   the walls have their temperatures.
+------------------------------------------------------------------------- */
+
+void FixSPHBoussinesq::check_compression()
+{
+  const double *const g = buoyancy.gravity;
+  const double gnorm = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  if (!(gnorm > 0.0)) return;
+  const double unit[3] = {g[0] / gnorm, g[1] / gnorm, g[2] / gnorm};
+
+  int dirichlet_bits = 0;
+  double dt_wall = 0.0;
+  for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/dirichlet")) {
+    dirichlet_bits |= wall->groupbit;
+    int dim;
+    const auto *t_wall = (const double *) wall->extract("t_wall", dim);
+    if (t_wall) dt_wall = fmax(dt_wall, fabs(*t_wall - buoyancy.t0));
+  }
+
+  const double *const *const x = atom->x;
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+  const int *const mask = atom->mask;
+  // -(lowest projection), highest projection on g, largest |T - T0|
+  double local[3] = {-INFINITY, -INFINITY, dt_wall};
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (mask[i] & groupbit) {
+      const double along = x[i][0] * unit[0] + x[i][1] * unit[1] + x[i][2] * unit[2];
+      local[0] = fmax(local[0], -along);
+      local[1] = fmax(local[1], along);
+    }
+    if ((mask[i] & dirichlet_bits) || !(cv[i] > 0.0)) continue;
+    const double dt = fabs(esph[i] / cv[i] - buoyancy.t0);
+    if (std::isfinite(dt)) local[2] = fmax(local[2], dt);
+  }
+  double all[3];
+  MPI_Allreduce(local, all, 3, MPI_DOUBLE, MPI_MAX, world);
+  const double extent = all[0] + all[1];
+  const double dt_max = all[2];
+  if (!(extent > 0.0) || !(dt_max > 0.0)) return;
+
+  // the type of the group compressed the most
+  FixSPHMaterials *materials = FixSPHMaterials::find(lmp, "Fix sph/boussinesq");
+  std::vector<int> local_types(atom->ntypes + 1, 0), present(atom->ntypes + 1, 0);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (mask[i] & groupbit) local_types[atom->type[i]] = 1;
+  MPI_Allreduce(local_types.data(), present.data(), atom->ntypes + 1, MPI_INT, MPI_MAX, world);
+  double worst = 0.0, worst_c0 = 0.0;
+  int worst_type = 0;
+  for (int t = 1; t <= atom->ntypes; t++) {
+    const sphe_eos *eos = materials->eos(t);
+    if (!present[t] || !eos || !(eos->c0 > 0.0)) continue;
+    const double compression = gnorm * fabs(beta[t]) * dt_max * extent / (eos->c0 * eos->c0);
+    if (compression > worst) worst = compression, worst_c0 = eos->c0, worst_type = t;
+  }
+  if (worst > MAX_COMPRESSION && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix sph/boussinesq: the buoyancy may compress atom type {} of group {} by up "
+                   "to {:.3g} (|g| beta max|T - T0| L / c0^2 with |g| = {:.6g}, beta = {:.6g}, "
+                   "max|T - T0| = {:.6g}, L = {:.6g} the group's extent along g, c0 = {:.6g}), "
+                   "more than {}, which biases the flow and the heat transfer; raise c0 of type {} "
+                   "in fix sph/materials to {:.4g} or more",
+                   worst_type, group->names[igroup], worst, gnorm, beta[worst_type], dt_max, extent,
+                   worst_c0, MAX_COMPRESSION, worst_type,
+                   sqrt(gnorm * fabs(beta[worst_type]) * dt_max * extent / MAX_COMPRESSION));
 }
 
 void FixSPHBoussinesq::post_force(int /*vflag*/)

@@ -37,6 +37,9 @@ class FixSPHBoussinesq : public Fix {
   SPHBodyForce::Buoyancy buoyancy;
   double force_local[3], force_total[3];
   int force_summed;
+  int zero_warned;            // the warning of fix gravity's magnitude 0 given
+  int compression_checked;    // check_compression() done (at the first setup)
+  void check_compression();
 };
 
 }    // namespace LAMMPS_NS

@@ -63,7 +63,7 @@ static const char cmd[] = "fix sph/inlet/temperature";
 FixSPHInletTemperature::FixSPHInletTemperature(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), t_inlet(0.0), axis(0), downstream(1), cuts_plane(0), mirror(1),
     list(nullptr), pair(nullptr), rate_previous(0.0), rate(0.0), energy_reset(0.0),
-    energy_plane(0.0), passes(nullptr)
+    energy_plane(0.0), passes(nullptr), crossed_along(0), crossed_against(0), against_warned(0)
 {
   if (!atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Fix sph/inlet/temperature requires atom style sph (esph, cv)");
@@ -158,6 +158,7 @@ void FixSPHInletTemperature::init()
   }
   // (cv and esph: pair sph/cleary/heat, which this fix requires, has checked
   // every atom's at its init, which comes before the fixes')
+  if (!against_warned) check_direction();
   // the inlet side's particles see all their neighbours, on both sides
   SPHCompat::request_full_list(neighbor, this, instance_me);
 
@@ -172,6 +173,42 @@ void FixSPHInletTemperature::init()
   }
 }
 
+/* ----------------------------------------------------------------------
+   a group that flows against the fix's direction never passes its outlet
+   and never takes T_inlet: warn (once) when its mean velocity along the
+   axis opposes the direction by more than a tenth of its rms speed (at
+   rest, noise has a mean far below that)
+------------------------------------------------------------------------- */
+
+void FixSPHInletTemperature::check_direction()
+{
+  const double *const *const v = atom->v;
+  const int *const mask = atom->mask;
+  double local[3] = {0.0, 0.0, 0.0};    // count, sum of v along the axis, sum of v^2
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    local[0] += 1.0;
+    local[1] += v[i][axis];
+    local[2] += v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2];
+  }
+  double sum[3];
+  MPI_Allreduce(local, sum, 3, MPI_DOUBLE, MPI_SUM, world);
+  if (!(sum[0] > 0.0)) return;
+  const double mean = sum[1] / sum[0];
+  const double rms = sqrt(sum[2] / sum[0]);
+  if (!(downstream * mean < -0.1 * rms)) return;
+  const char xyz[] = "xyz";
+  if (comm->me == 0)
+    error->warning(FLERR,
+                   "Fix {} {}: the mean velocity of group {} along {} is {:.6g}, against the "
+                   "fix's flow {}{} (the direction the fluid leaves the box in): no particle "
+                   "will pass the outlet and take T_inlet; give 'flow {}{}' if the fluid flows "
+                   "that way",
+                   id, style, group->names[igroup], xyz[axis], mean, downstream > 0 ? '+' : '-',
+                   xyz[axis], downstream > 0 ? '-' : '+', xyz[axis]);
+  against_warned = 1;
+}
+
 void FixSPHInletTemperature::init_list(int /*id*/, NeighList *ptr)
 {
   list = ptr;
@@ -182,6 +219,7 @@ void FixSPHInletTemperature::init_list(int /*id*/, NeighList *ptr)
 void FixSPHInletTemperature::setup_pre_reverse(int, int)
 {
   for (int i = 0; i < atom->nlocal; i++) passes[i] = passes_now(i);
+  crossed_along = crossed_against = 0;
   correct_pairs(1);
 }
 
@@ -391,8 +429,10 @@ void FixSPHInletTemperature::post_integrate()
     const double now = passes_now(i);
     // an atom that came from another rank in this step has its count from there
     const bool passed = now > passes[i];
+    if (now < passes[i]) crossed_against++;
     passes[i] = now;
     if (!passed) continue;
+    crossed_along++;
     const double esph_inlet = cv[i] * t_inlet;
     energy_local += (rmass ? rmass[i] : mass[type[i]]) * (esph_inlet - esph[i]);
     esph[i] = esph_inlet;
@@ -400,6 +440,29 @@ void FixSPHInletTemperature::post_integrate()
   double energy_step = 0.0;
   MPI_Allreduce(&energy_local, &energy_step, 1, MPI_DOUBLE, MPI_SUM, world);
   energy_reset += energy_step;
+}
+
+/* ----------------------------------------------------------------------
+   at the end of a run: particles that crossed the plane against the flow,
+   four times as many as along it, flow the other way (particles that
+   wander across and back count once each way)
+------------------------------------------------------------------------- */
+
+void FixSPHInletTemperature::post_run()
+{
+  const bigint local[2] = {crossed_along, crossed_against};
+  bigint all[2];
+  MPI_Allreduce(local, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (all[1] > 0 && all[1] > 4 * all[0] && comm->me == 0) {
+    const char xyz[] = "xyz";
+    const char sign = downstream > 0 ? '+' : '-', other = downstream > 0 ? '-' : '+';
+    error->warning(FLERR,
+                   "Fix {} {}: in this run {} particles of group {} crossed the inlet plane "
+                   "against the fix's flow {}{} and {} along it (the passes that take "
+                   "T_inlet): the fluid flows the other way; give 'flow {}{}'",
+                   id, style, all[1], group->names[igroup], sign, xyz[axis], all[0], other,
+                   xyz[axis]);
+  }
 }
 
 /* ----------------------------------------------------------------------

@@ -35,6 +35,7 @@ class FixSPHInletTemperature : public Fix {
   void setup_pre_reverse(int, int) override;
   void pre_reverse(int, int) override;
   void post_integrate() override;
+  void post_run() override;
   double compute_scalar() override;
   double compute_vector(int) override;
   void write_restart(FILE *) override;
@@ -69,6 +70,11 @@ class FixSPHInletTemperature : public Fix {
   // per atom: how often it has passed the outlet (image flag plus periodic
   // cell along the axis, unchanged when LAMMPS wraps it), when last looked
   double *passes;
+  // the passes of this run through the plane along the flow (resets) and
+  // against it, this rank; whether the group's mean velocity against the
+  // flow was reported
+  bigint crossed_along, crossed_against;
+  int against_warned;
 
   double passes_now(int i) const;
 
@@ -76,6 +82,7 @@ class FixSPHInletTemperature : public Fix {
   void remove_plane_pairs();
   template <int MIRROR> double inlet_terms();
   void temperature_gradient(int i, double cell_i, double *grad) const;
+  void check_direction();
 };
 
 }    // namespace LAMMPS_NS

@@ -109,7 +109,7 @@ void FixSPHWallAdiabatic::init()
                           {"sph/wall/isothermal", "sph/wall/dirichlet", "sph/wall/adiabatic",
                            "sph/surface/flux"},
                           false, false);
-  mirror->init(groupbit, kernel_kind, cutoff);
+  mirror->init(groupbit, kernel_kind, cutoff, id);
 }
 
 /* ----------------------------------------------------------------------

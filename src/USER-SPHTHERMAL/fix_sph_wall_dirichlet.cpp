@@ -105,7 +105,7 @@ void FixSPHWallDirichlet::init()
                           false, false);
   // (the cv of its group: the pair, required above, has checked every atom's
   // at its init, which comes before the fixes')
-  if (mirror) mirror->init(groupbit, kernel_kind, cutoff);
+  if (mirror) mirror->init(groupbit, kernel_kind, cutoff, id);
 
   dummy_groupbit = 0;
   for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/dirichlet"))

@@ -1210,6 +1210,19 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
       if (eta_factor < 0.0)
         error->all(FLERR, "Illegal pair_style sph/cleary/heat command: eta {} must be >= 0",
                    arg[iarg + 1]);
+      // eta = f h in r^2 + eta^2: a pair at r = h conducts 1 / (1 + f^2) of its heat
+      if (eta_factor > 1.0)
+        error->all(FLERR,
+                   "Illegal pair_style sph/cleary/heat command: eta {} must be <= 1 (a fraction "
+                   "of h: eta 1 already halves the conduction at r = h; Cleary's 0.1 is the "
+                   "default)",
+                   arg[iarg + 1]);
+      if (eta_factor > 0.3 && comm->me == 0)
+        error->warning(FLERR,
+                       "Pair style sph/cleary/heat: eta {} lowers the conduction of a pair at "
+                       "r = h by {:.0f} %, and the conductance of the particles by about as "
+                       "much (eta is a fraction of h; the default 0.1 lowers it by 1 %)",
+                       arg[iarg + 1], 100.0 * (1.0 - 1.0 / (1.0 + eta_factor * eta_factor)));
     } else if (strcmp(arg[iarg], "correction") == 0) {
       if (strcmp(arg[iarg + 1], "none") == 0)
         correct = CORRECT_NONE;

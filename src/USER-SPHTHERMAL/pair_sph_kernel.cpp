@@ -95,6 +95,16 @@ double PairSPHKernel::init_kernel()
                      "would be counted twice",
                      style, force->pair_style, i, j);
   }
+  // the fixes and computes that read this pair style find it by its name
+  // (Force::pair_match), which fails for two instances: one takes all pairs
+  const char *family = (strncmp(style, "sph/cleary/heat", 15) == 0) ? "sph/cleary/heat"
+                                                                    : "sph/harmonic/visc";
+  if (force->pair_match(std::string("^") + family, 0) != this)
+    error->all(FLERR,
+               "Pair style {} appears more than once in pair_style {}: give all its type pairs to "
+               "one instance (the styles that read its kernel, conductivity or forces find only "
+               "one)",
+               style, force->pair_style);
   // (the /omp styles too, named as such in the hybrid)
   PairSPHKernel *flow = (PairSPHKernel *) force->pair_match("^sph/harmonic/visc", 0);
   if (strcmp(style, "sph/cleary/heat") == 0 && flow && !same_kernel(flow))

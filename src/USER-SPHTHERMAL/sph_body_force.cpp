@@ -10,6 +10,7 @@
 
 #include "error.h"
 #include "fix.h"
+#include "fix_gravity.h"
 #include "lammps.h"
 #include "modify.h"
 
@@ -61,4 +62,37 @@ const SPHBodyForce::Buoyancy *SPHBodyForce::find_buoyancy(LAMMPS *lmp)
     if (buoyancy) return buoyancy;
   }
   return nullptr;
+}
+
+/* ---------------------------------------------------------------------- */
+
+Fix *SPHBodyForce::source(LAMMPS *lmp)
+{
+  for (int i = 0; i < lmp->modify->nfix; i++) {
+    int dim = 0;
+    if (lmp->modify->fix[i]->extract("gvec", dim) && dim == 1) return lmp->modify->fix[i];
+  }
+  return nullptr;
+}
+
+/* ----------------------------------------------------------------------
+   fix gravity keeps how its magnitude is given (a number or a variable)
+   protected: read it through a class derived from it (a member pointer
+   formed in the derived class applies to any FixGravity); CONSTANT is 0 in
+   every LAMMPS version the package supports
+------------------------------------------------------------------------- */
+
+namespace {
+struct GravityMagnitude : public FixGravity {
+  static int constant_zero(FixGravity *fix)
+  {
+    return fix->*(&GravityMagnitude::mstyle) == 0 && fix->*(&GravityMagnitude::magnitude) == 0.0;
+  }
+};
+}    // namespace
+
+int SPHBodyForce::constant_zero(Fix *fix)
+{
+  auto *gravity = dynamic_cast<FixGravity *>(fix);
+  return gravity ? GravityMagnitude::constant_zero(gravity) : 0;
 }

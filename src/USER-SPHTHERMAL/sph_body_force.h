@@ -9,6 +9,7 @@
 namespace LAMMPS_NS {
 
 class LAMMPS;
+class Fix;
 
 // The body force of a run is given once, as a fix that exposes its
 // acceleration as extract("gvec") (LAMMPS's fix gravity). Every style that
@@ -34,6 +35,13 @@ namespace SPHBodyForce {
 
   // the same, as an error naming 'who' and 'why' when there is none
   const double *require(LAMMPS *lmp, const char *who, const char *why);
+
+  // the fix whose acceleration find() returns, nullptr when there is none
+  class Fix *source(LAMMPS *lmp);
+
+  // 1 when 'fix' is a fix gravity whose magnitude is a constant 0 (not a
+  // variable, which may ramp it up later): its acceleration is 0 for good
+  int constant_zero(class Fix *fix);
 
   // the buoyancy of the run (fix sph/boussinesq), nullptr when none
   const Buoyancy *find_buoyancy(LAMMPS *lmp);

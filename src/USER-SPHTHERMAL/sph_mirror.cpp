@@ -35,7 +35,7 @@ static const char *const thermal_walls[] = {"sph/wall/adiabatic", "sph/wall/diri
 SPHMirror::SPHMirror(LAMMPS *lmp, const std::string &cmd, bool returns) :
     Pointers(lmp), command(cmd), returns_heat(returns), region(nullptr), groupbit(0),
     medium_exclude(0), held_walls(0), kernel_kind(0), cutoff(0.0), inlet_axis(-1),
-    candidates_valid(false)
+    candidates_valid(false), medium_check_pending(false)
 {
 }
 
@@ -52,8 +52,10 @@ int SPHMirror::parse(int narg, char **arg, int iarg)
 
 /* ---------------------------------------------------------------------- */
 
-void SPHMirror::init(int groupbit_in, int kind, double cut)
+void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
 {
+  fix_id = id ? id : "";
+  medium_check_pending = true;
   groupbit = groupbit_in;
   kernel_kind = kind;
   cutoff = cut;
@@ -109,9 +111,10 @@ void SPHMirror::init(int groupbit_in, int kind, double cut)
     tagint first = 0;
     MPI_Allreduce(&tag, &first, 1, MPI_LMP_TAGINT, MPI_MIN, world);
     error->all(FLERR,
-               "{}: wall atom {} lies inside surface region {}; the region holds the medium and "
-               "its boundary is the wall surface, so wall atoms lie outside it",
-               command, first, region_name);
+               "{}: wall atom {} lies inside surface region {} (side {}); the region holds the "
+               "medium and its boundary is the wall surface, so wall atoms lie outside it (side "
+               "in: outside its shape; side out, the medium around an obstacle: inside it)",
+               command, first, region_name, region->interior ? "in" : "out");
   }
   double dmax = 0.0;
   MPI_Allreduce(&dmax_local, &dmax, 1, MPI_DOUBLE, MPI_MAX, world);
@@ -131,22 +134,87 @@ void SPHMirror::init(int groupbit_in, int kind, double cut)
 /* ----------------------------------------------------------------------
    the ghost point of a wall atom at x: 1 and the point, 0 when the atom is
    beyond the kernel's reach of the surface, -1 when it is inside the region
+   (on the medium's side). The wall atoms lie off the medium's side of the
+   region's surface: outside its shape for a region 'side in' (the medium
+   in a container), inside it for 'side out' (the medium around an
+   obstacle); LAMMPS's surface_exterior() and surface_interior() give the
+   surface points within reach of such points (contact: del = x - surface
+   point). surface_interior() gives one per face within reach: the nearest
+   is the mirror plane.
 ------------------------------------------------------------------------- */
 
 int SPHMirror::ghost_point(const double *x, double *ghost, double *depth)
 {
   double xs[3] = {x[0], x[1], x[2]};
-  if (region->surface_exterior(xs, cutoff) > 0) {
-    const auto &c = region->contact[0];
+  const int ncontact = region->interior ? region->surface_exterior(xs, cutoff)
+                                        : region->surface_interior(xs, cutoff);
+  if (ncontact > 0) {
+    int nearest = 0;
+    for (int k = 1; k < ncontact; k++)
+      if (region->contact[k].r < region->contact[nearest].r) nearest = k;
+    const auto &c = region->contact[nearest];
     if (depth) *depth = c.r;
     ghost[0] = x[0] - 2.0 * c.delx;
     ghost[1] = x[1] - 2.0 * c.dely;
     ghost[2] = x[2] - 2.0 * c.delz;
     return 1;
   }
-  const int inside = region->interior ? region->match(x[0], x[1], x[2])
-                                      : !region->match(x[0], x[1], x[2]);
-  return inside ? -1 : 0;
+  return region->match(x[0], x[1], x[2]) ? -1 : 0;
+}
+
+/* ----------------------------------------------------------------------
+   once after init, with this step's ghost points and candidates: every
+   medium atom within the kernel's reach of a wall atom of the group or of
+   a ghost point (those the wall reads) must lie in the region, the
+   medium's side of the surface; one that does not means a region too small
+   (or on the wrong side), whose surface is not the wall's: a collective
+   error naming the lowest such atom ID. Ghost images are taken back into
+   the periodic box first, where the region is.
+------------------------------------------------------------------------- */
+
+void SPHMirror::check_medium()
+{
+  medium_check_pending = false;
+  double *const *const x = atom->x;
+  const tagint *const tag = atom->tag;
+  const int *const mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const double cutsq = cutoff * cutoff;
+  tagint first_local = MAXTAGINT;
+  double info[4] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY};    // type, x, y, z
+  auto consider = [&](int j, const double *p) {
+    if ((mask[j] & medium_exclude) || tag[j] >= first_local) return;
+    const double d[3] = {x[j][0] - p[0], x[j][1] - p[1], x[j][2] - p[2]};
+    if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] >= cutsq) return;
+    double at[3] = {x[j][0], x[j][1], x[j][2]};
+    domain->remap(at);
+    if (region->match(at[0], at[1], at[2])) return;
+    first_local = tag[j];
+    info[0] = atom->type[j];
+    info[1] = at[0], info[2] = at[1], info[3] = at[2];
+  };
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    cells.within(x, x[i], cutoff, [&](int j) { consider(j, x[i]); });
+    if (!has_ghost[i]) continue;
+    const double *const g = &ghost_at[3 * (size_t) i];
+    for (int n = first_candidate[i]; n < first_candidate[i + 1]; n++)
+      consider(medium_atoms[candidates[n]], g);
+  }
+  tagint first = MAXTAGINT;
+  MPI_Allreduce(&first_local, &first, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (first == MAXTAGINT) return;
+  if (first_local != first) info[0] = info[1] = info[2] = info[3] = -INFINITY;
+  double where[4];
+  MPI_Allreduce(info, where, 4, MPI_DOUBLE, MPI_MAX, world);
+  error->all(FLERR,
+             "{}: medium atom {} (type {}) at ({:.8g} {:.8g} {:.8g}), within the kernel's reach "
+             "of the wall atoms or their ghost points, lies outside surface region {} (side {}); "
+             "the region holds all the medium next to the wall, its boundary is the wall's "
+             "surface: make the region reach the medium's edge (or put the atom in a thermal "
+             "wall fix's group)",
+             who(), first, (int) where[0], where[1], where[2], where[3], region_name,
+             region->interior ? "in" : "out");
 }
 
 /* ----------------------------------------------------------------------
@@ -217,7 +285,8 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
         d[0] * d[0] + d[1] * d[1] + d[2] * d[2] > half_skin_sq)
       stale = true;
   }
-  if (stale) find_candidates();
+  if (stale || medium_check_pending) find_candidates();
+  if (medium_check_pending) check_medium();
   const int nmedium = medium_atoms.size();
   medium_volume.resize(nmedium);
   medium_temperature.resize(nmedium);

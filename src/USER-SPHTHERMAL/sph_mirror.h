@@ -18,7 +18,8 @@ namespace LAMMPS_NS {
 
 // Mirror points of wall particles (the mDBC construction of English et al.
 // 2022 used for temperature by Reece et al. 2024, eqs 18-19): the surface of
-// the wall is the boundary of a region that holds the medium; each wall
+// the wall is the boundary of a region that holds the medium (side in: a
+// container; side out: the medium around an obstacle); each wall
 // particle is reflected through its nearest surface point (the vertex at a
 // corner) to a ghost point in the medium, where the temperature of the
 // medium is interpolated with the first-order correction of Liu & Liu
@@ -40,7 +41,10 @@ class SPHMirror : protected Pointers {
   // at the owning fix's init, after the kernel is known: checks the wall
   // atoms of 'groupbit' against the surface and widens the ghost cutoff so
   // that the ghost points' neighbours are present on every rank
-  void init(int groupbit, int kernel_kind, double cutoff);
+  // (fix_id: the owning fix's ID, for the messages). The first
+  // interpolate() after it checks that the medium next to the wall lies in
+  // the region.
+  void init(int groupbit, int kernel_kind, double cutoff, const char *fix_id = nullptr);
 
   // the temperature at the ghost point of every owned atom of the group,
   // and how it was found (sphi_result); ghost[i], how[i] for owned atoms;
@@ -69,7 +73,7 @@ class SPHMirror : protected Pointers {
   void unpack_reverse_comm(int n, int *list, double *buf);
 
  protected:
-  std::string command, region_name;
+  std::string command, region_name, fix_id;
   bool returns_heat;
   class Region *region;
   int groupbit, medium_exclude;
@@ -98,12 +102,19 @@ class SPHMirror : protected Pointers {
   std::vector<int> first_held, held_near, held_atoms;
   std::vector<double> candidates_at;    // 3 per owned atom
   bool candidates_valid;
+  bool medium_check_pending;    // check_medium() at the next interpolate()
   std::vector<double> medium_volume, medium_temperature;
   // this step's ghost points: 3 per owned atom, and whether there is one
   std::vector<double> ghost_at;
   std::vector<int> has_ghost;
 
   int ghost_point(const double *x, double *ghost, double *depth = nullptr);
+  void check_medium();
+  // "Fix <ID> <style>", or the command when the ID is not known
+  std::string who() const
+  {
+    return fix_id.empty() ? command : "Fix " + fix_id + " " + command.substr(command.find(' ') + 1);
+  }
   void find_candidates();
   SPHSupport support;    // the candidates of one ghost point inside the support
   template <int DIM, int KERNEL>
