@@ -151,9 +151,8 @@ void FixSPHTimestepCheck::check_timestep()
        "neighbours'"}};
   const double s = force->ftm2v;
   const int scaled = (s != 1.0);
-  const std::string units = (s == 1.0)
-      ? std::string(update->unit_style)
-      : fmt::format("{}, ftm2v = {:.6g}", update->unit_style, s);
+  const std::string units = (s == 1.0) ? std::string(update->unit_style)
+                                       : fmt::format("{}, ftm2v = {:.6g}", update->unit_style, s);
   static const double coeffs[SPHTimestep::NLIMITS] = {COEFF_ACOUSTIC, COEFF_FORCE, COEFF_VISCOUS,
                                                       COEFF_THERMAL};
   const double dt = update->dt;

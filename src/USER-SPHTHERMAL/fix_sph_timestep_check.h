@@ -43,7 +43,7 @@ class FixSPHTimestepCheck : public Fix {
   static constexpr double SOUND_SPEED_RATIO = 10.0;
 
  protected:
-  int check_dt;             // this run: compare the fixed timestep with the limits
+  int check_dt;              // this run: compare the fixed timestep with the limits
   int *relax_rate_wanted;    // pair sph/cleary/heat's switch of its relaxation rates
   // the timestep of the last warning of each limit (a warning is repeated
   // only for another timestep), and whether the speed of sound was reported

@@ -28,7 +28,7 @@ class FixSPHMaterials;
 // integrated is s c (pressure gradient and continuity each scaled by s),
 // the momentum diffusivity s mu / rho, the relaxation rate s lambda. s = 1
 // in units si, cgs, lj, micro and nano; 1 / 1.0364269e-4 in metal,
-// 1 / 48.88821291^2 in real.
+// 1 / 48.88821291^2 in real, 0.937582899 in electron.
 namespace SPHTimestep {
   enum { ACOUSTIC = 0, FORCE, VISCOUS, THERMAL, NLIMITS };
 
@@ -36,28 +36,46 @@ namespace SPHTimestep {
   const char *name(int limit);
 
   // the per-atom quantity each limit falls with, as integrated (s applied)
-  inline double signal_speed(double c, double speed, double s) { return s * c + speed; }
-  inline double acceleration(double fmag, double mass, double s) { return s * fmag / mass; }
-  inline double relaxation(double lambda, double s) { return s * lambda; }
+  inline double signal_speed(double c, double speed, double s)
+  {
+    return s * c + speed;
+  }
+  inline double acceleration(double fmag, double mass, double s)
+  {
+    return s * fmag / mass;
+  }
+  inline double relaxation(double lambda, double s)
+  {
+    return s * lambda;
+  }
 
   // the limits from those quantities (the viscous one from rho and mu)
-  inline double acoustic(double coeff, double h, double signal) { return coeff * h / signal; }
-  inline double force(double coeff, double h, double accel) { return coeff * sqrt(h / accel); }
+  inline double acoustic(double coeff, double h, double signal)
+  {
+    return coeff * h / signal;
+  }
+  inline double force(double coeff, double h, double accel)
+  {
+    return coeff * sqrt(h / accel);
+  }
   inline double viscous(double coeff, double h, double rho, double mu, double s)
   {
     return coeff * (h * h) * rho / (s * mu);
   }
-  inline double thermal(double coeff, double rate) { return coeff / rate; }
+  inline double thermal(double coeff, double rate)
+  {
+    return coeff / rate;
+  }
 
   // the limits of the atoms of a group, as one pass over the owned atoms
   struct Scan {
-    double coeff[NLIMITS];          // 0: the limit is off
-    double h;                       // smoothing length
-    int groupbit;                   // the atoms whose limits count
-    FixSPHMaterials *materials;     // eos and viscosity (acoustic, viscous limits)
-    double *const *relax_rate;      // pair sph/cleary/heat's lambda_i (thermal), or nullptr
-    const double *body_force;       // fix gravity's acceleration, or nullptr
-    const char *who;                // for the messages of the viscosity laws
+    double coeff[NLIMITS];         // 0: the limit is off
+    double h;                      // smoothing length
+    int groupbit;                  // the atoms whose limits count
+    FixSPHMaterials *materials;    // eos and viscosity (acoustic, viscous limits)
+    double *const *relax_rate;     // pair sph/cleary/heat's lambda_i (thermal), or nullptr
+    const double *body_force;      // fix gravity's acceleration, or nullptr
+    const char *who;               // for the messages of the viscosity laws
   };
   // this rank's minimum of each limit (coefficient applied; 'none' where no
   // atom has it), and bad[k] = 1 where an atom's limit is 0 or not a number.
