@@ -4,11 +4,13 @@
 
    fix sph/dt/reset: adaptive timestep of weakly compressible, thermal SPH,
    the minimum over the particles of the group of four limits
-     acoustic  C_c h / (c_i + |v_i|)        (Cleary eq 5, Ng eq 18, Reece eq 21)
+     acoustic  C_c h / (s c_i + |v_i|)      (Cleary eq 5, Ng eq 18, Reece eq 21)
      force     C_f sqrt(h / |a_i|)           (Ng eq 18, Reece eq 20)
-     viscous   C_v h^2 rho_i / mu_i          (Ng eq 18, Reece eq 22)
-     thermal   C_t / lambda_i                (Cleary eq 7, Ng eq 18, Reece eqs 23-25)
-   clamped to [dtmin, dtmax]. lambda_i is the rate at which pair
+     viscous   C_v h^2 rho_i / (s mu_i)      (Ng eq 18, Reece eq 22)
+     thermal   C_t / (s lambda_i)            (Cleary eq 7, Ng eq 18, Reece eqs 23-25)
+   clamped to [dtmin, dtmax], with a_i = s f_i / m_i and s = force->ftm2v,
+   the factor fix sph integrates every rate with (the formulas and why:
+   sph_timestep.h). lambda_i is the rate at which pair
    sph/cleary/heat relaxes T_i towards its neighbours, with the conductance
    the pair uses (either mean, any kernel, material ratio and disorder):
    the explicit update of T is then a convex combination of the old
@@ -35,9 +37,9 @@
 #include "sph_eos.h"
 #include "sph_kernels.h"
 #include "sph_material_laws.h"
+#include "sph_timestep.h"
 #include "update.h"
 
-#include <cfloat>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -58,9 +60,6 @@ static const char *limit_name(int active)
 
 // "no limit": larger than any timestep, finite so that thermo can print it
 static constexpr double BIG = 1.0e300;
-
-// the package's pair styles that know their kernel (extract "kernel_kind", "cutoff")
-static const char *const sph_pairs[] = {"sph/harmonic/visc", "sph/cleary/heat"};
 
 /* ---------------------------------------------------------------------- */
 
@@ -229,18 +228,7 @@ void FixSPHDtReset::init()
 double FixSPHDtReset::smoothing_length()
 {
   if (h_user > 0.0) return h_user;
-  double hmin = 0.0;
-  for (const char *style : sph_pairs) {
-    // also the /omp styles
-    Pair *pair = force->pair_match(std::string("^") + style, 0);
-    if (!pair) continue;
-    int dim;
-    const int *kind = (const int *) pair->extract("kernel_kind", dim);
-    const double *cut = (const double *) pair->extract("cutoff", dim);
-    if (!kind || !cut || sphk_support(*kind) <= 0.0) continue;
-    const double hpair = *cut / sphk_support(*kind);
-    if (hmin == 0.0 || hpair < hmin) hmin = hpair;
-  }
+  const double hmin = SPHTimestep::smoothing_length(lmp);
   if (hmin <= 0.0)
     error->all(FLERR,
                "Fix sph/dt/reset: no smoothing length: give keyword 'h' or use pair style "
@@ -269,72 +257,17 @@ void FixSPHDtReset::end_of_step()
 
 void FixSPHDtReset::choose_dt()
 {
-  const double *const *const v = atom->v;
-  const double *const *const f = atom->f;
-  const double *const rho = atom->rho;
-  const double *const esph = atom->esph;
-  const double *const cv = atom->cv;
-  const double *const mass = atom->mass;
-  const double *const rmass = atom->rmass;
-  const int *const type = atom->type;
-  const int *const mask = atom->mask;
-  const int nlocal = atom->nlocal;
-  const double ftm2v = force->ftm2v;
-  const double hsq = h * h;
-
   double local[NLIMITS];
   int bad[NLIMITS];
-  for (int k = 0; k < NLIMITS; k++) local[k] = BIG, bad[k] = 0;
-  // a limit of 0 or not a number (zero rho, overflow, ...) is an error
-  auto take = [&](int k, double dt) {
-    if (!(dt > 0.0))
-      bad[k] = 1;
-    else if (dt < local[k])
-      local[k] = dt;
-  };
-
-  // the acoustic, force and thermal limits fall as one per-atom quantity
-  // rises: its largest gives their smallest dt with one division
-  double fastest = 0.0, largest_accel = 0.0, largest_relax = 0.0;
-  auto rises = [&](int k, double value, double &largest) {
-    if (!(value >= 0.0 && value <= DBL_MAX))    // not a number, infinite or negative: dt <= 0
-      bad[k] = 1;
-    else if (value > largest)
-      largest = value;
-  };
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    const int itype = type[i];
-    const double vsq = v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2];
-    const double fsq = f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2];
-
-    // a limit whose property the type lacks does not apply to the particle
-    if (coeff[ACOUSTIC] > 0.0) {
-      const sphe_eos *eos = materials->eos(itype);
-      if (eos) rises(ACOUSTIC, sphe_sound_speed(eos, rho[i]) + sqrt(vsq), fastest);
-    }
-    if (coeff[FORCE] > 0.0 && fsq != 0.0) {    // a non-finite force counts
-      const double m = rmass ? rmass[i] : mass[itype];
-      rises(FORCE, ftm2v * sqrt(fsq) / m, largest_accel);
-    }
-    if (coeff[VISCOUS] > 0.0) {
-      const double mu = materials->viscosity(itype)
-          ? materials->viscosity_at(itype, esph[i] / cv[i], "Fix sph/dt/reset")
-          : 0.0;
-      if (mu > 0.0) take(VISCOUS, coeff[VISCOUS] * hsq * rho[i] / mu);
-    }
-    if (relax_rate && (*relax_rate)[i] > 0.0) rises(THERMAL, (*relax_rate)[i], largest_relax);
-  }
-  if (fastest > 0.0) take(ACOUSTIC, coeff[ACOUSTIC] * h / fastest);
-  if (largest_accel > 0.0) take(FORCE, coeff[FORCE] * sqrt(h / largest_accel));
-  if (largest_relax > 0.0) take(THERMAL, coeff[THERMAL] / largest_relax);
-  // the body force alone, as read from its fix: it counts from the first
-  // step even when that fix adds it after this one has looked at the forces
-  if (coeff[FORCE] > 0.0 && body_force) {
-    const double g = ftm2v * sqrt(body_force[0] * body_force[0] + body_force[1] * body_force[1] +
-                                  body_force[2] * body_force[2]);
-    if (g > 0.0) take(FORCE, coeff[FORCE] * sqrt(h / g));
-  }
+  SPHTimestep::Scan scan;
+  for (int k = 0; k < NLIMITS; k++) scan.coeff[k] = coeff[k];
+  scan.h = h;
+  scan.groupbit = groupbit;
+  scan.materials = materials;
+  scan.relax_rate = relax_rate;
+  scan.body_force = (coeff[FORCE] > 0.0) ? body_force : nullptr;
+  scan.who = "Fix sph/dt/reset";
+  SPHTimestep::local_limits(lmp, scan, BIG, local, bad);
   for (int k = 0; k < NLIMITS; k++)
     if (bad[k]) bad_limit(k);
 
@@ -399,20 +332,25 @@ void FixSPHDtReset::bad_limit(int k)
     std::string state;
     if (k == ACOUSTIC && materials->eos(itype)) {
       const double speed = sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
-      dt = coeff[k] * h / (sphe_sound_speed(materials->eos(itype), atom->rho[i]) + speed);
+      dt = SPHTimestep::acoustic(
+          coeff[k], h,
+          SPHTimestep::signal_speed(sphe_sound_speed(materials->eos(itype), atom->rho[i]), speed,
+                                    force->ftm2v));
       state = fmt::format("rho = {}, |v| = {}", atom->rho[i], speed);
     } else if (k == FORCE) {
       const double m = atom->rmass ? atom->rmass[i] : atom->mass[itype];
       const double fsq = f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2];
-      if (fsq > 0.0 || !std::isfinite(fsq)) dt = coeff[k] * sqrt(h * m / (force->ftm2v * sqrt(fsq)));
+      if (fsq > 0.0 || !std::isfinite(fsq))
+        dt = SPHTimestep::force(coeff[k], h, SPHTimestep::acceleration(sqrt(fsq), m, force->ftm2v));
       state = fmt::format("|f| = {}, mass = {}", sqrt(fsq), m);
     } else if (k == VISCOUS && materials->viscosity(itype)) {
       const double T = atom->esph[i] / atom->cv[i];
       const double mu = sphm_law_eval(materials->viscosity(itype), T);
-      if (mu > 0.0 || !std::isfinite(mu)) dt = coeff[k] * h * h * atom->rho[i] / mu;
+      if (mu > 0.0 || !std::isfinite(mu))
+        dt = SPHTimestep::viscous(coeff[k], h, atom->rho[i], mu, force->ftm2v);
       state = fmt::format("rho = {}, viscosity = {} at T = {}", atom->rho[i], mu, T);
     } else if (k == THERMAL && relax_rate) {
-      dt = coeff[k] / (*relax_rate)[i];
+      dt = SPHTimestep::thermal(coeff[k], SPHTimestep::relaxation((*relax_rate)[i], force->ftm2v));
       state = fmt::format("relaxation rate = {}, rho = {}, cv = {}", (*relax_rate)[i],
                           atom->rho[i], atom->cv[i]);
     }

@@ -13,6 +13,7 @@ FixStyle(sph/dt/reset,FixSPHDtReset);
 #define LMP_FIX_SPH_DT_RESET_H
 
 #include "fix.h"
+#include "sph_timestep.h"
 
 namespace LAMMPS_NS {
 
@@ -29,7 +30,13 @@ class FixSPHDtReset : public Fix {
   void restart(char *) override;
 
   // the limits, in the order of the output vector (active limit = index + 1)
-  enum { ACOUSTIC = 0, FORCE, VISCOUS, THERMAL, NLIMITS };
+  enum {
+    ACOUSTIC = SPHTimestep::ACOUSTIC,
+    FORCE = SPHTimestep::FORCE,
+    VISCOUS = SPHTimestep::VISCOUS,
+    THERMAL = SPHTimestep::THERMAL,
+    NLIMITS = SPHTimestep::NLIMITS
+  };
   enum { BOUND = NLIMITS + 1 };
 
  protected:

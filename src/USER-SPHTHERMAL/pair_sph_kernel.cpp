@@ -11,6 +11,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_sph_timestep_check.h"
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
@@ -113,6 +114,9 @@ double PairSPHKernel::init_kernel()
                    "kernel, cutoff {}) differ: the flow and the heat see different neighbourhoods",
                    sphk_name(kernel_kind), cut_global, sphk_name(flow->kernel_kind),
                    flow->cut_global);
+
+  // the check of a fixed timestep against the pairs' stability limits
+  FixSPHTimestepCheck::ensure(lmp);
 
   kernel = sphk_make(kernel_kind, domain->dimension, cut_global);
   const double eta = eta_factor * kernel.h;
