@@ -76,21 +76,38 @@ void SPHCheck::particles(LAMMPS *lmp, const char *file, int line, const char *wh
   const double *const rho = (needs & RHO) ? atom->rho : nullptr;
   const double *const esph = (needs & ESPH) ? atom->esph : nullptr;
 
-  // the fast pass, every step: a NaN or inf anywhere makes a sum non-finite
-  // (independent sums, so that the adds do not wait for each other), and
-  // the smallest rho; the slow pass below only once something is wrong
-  double sum[4] = {0.0, 0.0, 0.0, 0.0};
-  double rho_min = INFINITY;
-  for (int i = 0; i < nlocal; i++) {
-    sum[0] += x[3 * i] + x[3 * i + 1] + x[3 * i + 2];
-    sum[1] += v[3 * i] + v[3 * i + 1] + v[3 * i + 2];
-    if (rho) {
-      sum[2] += rho[i];
-      rho_min = fmin(rho_min, rho[i]);
+  // the fast pass, every step: a NaN or inf anywhere makes a sum non-finite,
+  // and the smallest rho must be > 0; x and v are each one run of 3 nlocal
+  // values, summed in four independent partial sums (which the compiler
+  // makes vector adds); the slow pass below only once something is wrong
+  const int n3 = 3 * nlocal;
+  double sum[4] = {0.0, 0.0, 0.0, 0.0}, low[4] = {INFINITY, INFINITY, INFINITY, INFINITY};
+  int k = 0;
+  for (; k + 4 <= n3; k += 4)
+    for (int l = 0; l < 4; l++) sum[l] += x[k + l] + v[k + l];
+  for (; k < n3; k++) sum[0] += x[k] + v[k];
+  if (rho) {
+    int i = 0;
+    for (; i + 4 <= nlocal; i += 4)
+      for (int l = 0; l < 4; l++) {
+        sum[l] += rho[i + l];
+        low[l] = rho[i + l] < low[l] ? rho[i + l] : low[l];
+      }
+    for (; i < nlocal; i++) {
+      sum[0] += rho[i];
+      low[0] = rho[i] < low[0] ? rho[i] : low[0];
     }
-    if (esph) sum[3] += esph[i];
   }
-  if (std::isfinite(sum[0] + sum[1] + sum[2] + sum[3]) && rho_min > 0.0) return;
+  if (esph) {
+    int i = 0;
+    for (; i + 4 <= nlocal; i += 4)
+      for (int l = 0; l < 4; l++) sum[l] += esph[i + l];
+    for (; i < nlocal; i++) sum[0] += esph[i];
+  }
+  // a NaN rho fails 'low > 0' as well as the sum
+  if (std::isfinite(sum[0] + sum[1] + sum[2] + sum[3]) &&
+      (!rho || (low[0] > 0.0 && low[1] > 0.0 && low[2] > 0.0 && low[3] > 0.0)))
+    return;
 
   for (int i = 0; i < nlocal; i++) {
     const char *quantity = nullptr;
