@@ -20,6 +20,7 @@
 #include "sph_compat.h"
 #include "sph_interpolation.h"
 #include "sph_kernels.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
@@ -55,7 +56,10 @@ int SPHMirror::parse(int narg, char **arg, int iarg)
 void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
 {
   fix_id = id ? id : "";
-  medium_check_pending = true;
+  // the region is checked against the scene as set up (step 0): later, a
+  // fluid particle next to the wall may have moved past the surface by a
+  // fraction of a spacing, which is the flow's, not the region's, doing
+  medium_check_pending = (update->ntimestep == 0);
   groupbit = groupbit_in;
   kernel_kind = kind;
   cutoff = cut;
