@@ -130,7 +130,7 @@ void ComputeSPHHeatfluxAtom::compute_peratom()
     memory->create(flux, nmax, size_peratom_cols, "sph/heatflux/atom:flux");
     array_atom = flux;
   }
-  neighbor->build_one(list);
+  SPHCompat::build_occasional(neighbor, list);
 
   const double *const *const x = atom->x;
   const double *const esph = atom->esph;

@@ -167,7 +167,7 @@ bool ComputeSPHMixing::in_component(int i) const
 void ComputeSPHMixing::volume_fractions(double *fraction)
 {
   comm->forward_comm();
-  neighbor->build_one(list);
+  SPHCompat::build_occasional(neighbor, list);
   const double *const *const x = atom->x;
   const int *const mask = atom->mask;
   const sphk_kernel kernel = sphk_make(kernel_kind, domain->dimension, cutoff);

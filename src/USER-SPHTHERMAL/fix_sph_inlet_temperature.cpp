@@ -68,8 +68,7 @@ FixSPHInletTemperature::FixSPHInletTemperature(LAMMPS *lmp, int narg, char **arg
   if (!atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Fix sph/inlet/temperature requires atom style sph (esph, cv)");
   if (narg < 4) error->all(FLERR, "Illegal {} command: expected <T_inlet>", cmd);
-  // utils::numeric refuses a value that is not finite
-  t_inlet = utils::numeric(FLERR, arg[3], false, lmp);
+  t_inlet = SPHCompat::finite_numeric(lmp, FLERR, cmd, "T_inlet", arg[3]);
   int iarg = 4;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "flow") == 0) {

@@ -43,6 +43,7 @@
 #include "platform.h"
 #endif
 
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -218,6 +219,34 @@ namespace SPHCompat {
       if (strcmp(value, word) == 0) return false;
     error->all(file, line, "Illegal {} command: {} '{}' is not yes or no", command, keyword, value);
     return false;
+  }
+
+  // ------------------------------------------ occasional neighbour lists
+  // build a compute's occasional list for the atoms of now: 29Sep2021 skips
+  // the build when the list was made on the step of the last reneighboring
+  // (also before atoms were deleted between runs, leaving indices of atoms
+  // that are gone), unless asked as fix bond/create does; 4Feb2025's
+  // reneighboring marks every occasional list as stale itself
+  inline void build_occasional(Neighbor *neighbor, NeighList *list)
+  {
+#if SPHTHERMAL_LAMMPS_NEW_API
+    neighbor->build_one(list);
+#else
+    neighbor->build_one(list, 1);
+#endif
+  }
+
+  // ------------------------------------------------- finite numbers
+  // a number of the command line that must be finite: LAMMPS 4Feb2025's
+  // utils::numeric refuses an overflowing literal (1e400), 29Sep2021's
+  // returns inf; both errors name the caller's line
+  inline double finite_numeric(LAMMPS *lmp, const char *file, int line, const std::string &command,
+                               const char *what, const char *value)
+  {
+    const double number = utils::numeric(file, line, value, false, lmp);
+    if (!std::isfinite(number))
+      lmp->error->all(file, line, "Illegal {} command: {} {} is not finite", command, what, value);
+    return number;
   }
 
 }    // namespace SPHCompat
