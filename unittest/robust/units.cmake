@@ -9,7 +9,8 @@ foreach(units cgs metal real electron lj)
   set_tests_properties(robust.dt_units.${units} PROPERTIES LABELS unit)
 endforeach()
 
-# a fixed timestep: no warning below the smallest limit the pairs know, a
+# a fixed timestep (checked by the internal fix SPH/TIMESTEP/CHECK that the
+# package's pairs add): no warning below the smallest limit the pairs know, a
 # warning above it, none with fix sph/dt/reset (which sets dt itself)
 foreach(units si metal real)
   add_test(NAME robust.timestep.fixed.${units}
