@@ -21,6 +21,20 @@
 
 using namespace LAMMPS_NS;
 
+namespace {
+// the atoms particles() last found sound: a style that asks again in the same
+// step, of the same arrays, costs nothing (one pass per step, whichever of the
+// walls and pairs asks first); set-up always checks
+struct CheckedState {
+  const LAMMPS *lmp = nullptr;
+  bigint step = -1;
+  const double *x = nullptr;
+  int nlocal = -1;
+  int needs = 0;
+};
+CheckedState last_sound;
+}    // namespace
+
 /* ---------------------------------------------------------------------- */
 
 void SPHCheck::atom_state(LAMMPS *lmp, const char *file, int line, const char *who, int groupbit,
@@ -75,6 +89,10 @@ void SPHCheck::particles(LAMMPS *lmp, const char *file, int line, const char *wh
   const double *const v = atom->v[0];
   const double *const rho = (needs & RHO) ? atom->rho : nullptr;
   const double *const esph = (needs & ESPH) ? atom->esph : nullptr;
+  const bigint step = lmp->update->ntimestep;
+  if (!lmp->update->setupflag && last_sound.lmp == lmp && last_sound.step == step &&
+      last_sound.x == x && last_sound.nlocal == nlocal && (last_sound.needs & needs) == needs)
+    return;
 
   // the fast pass, every step: a NaN or inf anywhere makes a sum non-finite,
   // and the smallest rho must be > 0; x and v are each one run of 3 nlocal
@@ -106,8 +124,10 @@ void SPHCheck::particles(LAMMPS *lmp, const char *file, int line, const char *wh
   }
   // a NaN rho fails 'low > 0' as well as the sum
   if (std::isfinite(sum[0] + sum[1] + sum[2] + sum[3]) &&
-      (!rho || (low[0] > 0.0 && low[1] > 0.0 && low[2] > 0.0 && low[3] > 0.0)))
+      (!rho || (low[0] > 0.0 && low[1] > 0.0 && low[2] > 0.0 && low[3] > 0.0))) {
+    last_sound = {lmp, step, x, nlocal, needs};
     return;
+  }
 
   for (int i = 0; i < nlocal; i++) {
     const char *quantity = nullptr;

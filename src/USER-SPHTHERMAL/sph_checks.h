@@ -44,6 +44,8 @@ namespace SPHCheck {
   // a stop (on this rank: no communication) naming the atom, its type, the
   // quantity and the step. A NaN position never triggers a neighbour-list
   // rebuild, so LAMMPS's own checks of coordinates would not see it.
+  // One pass per step: a later call in the same step, on the same arrays,
+  // returns at once (set-up always checks).
   void particles(LAMMPS *lmp, const char *file, int line, const char *who, int needs);
 
   // the first owned atom whose value of 'values' is not finite, or -1
