@@ -18,6 +18,7 @@
 #include "sph_checks.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -187,14 +188,32 @@ void PairSPHKernel::check_neighbours()
   const double *const *const x = atom->x;
   const double cutsq_kernel = cut_global * cut_global;
   bigint local = 0, pairs;
+  // two particles at one point (created twice, or an atom on a periodic
+  // boundary and its image): no direction between them, so every term that
+  // needs one (pressure, the corrections' unit vectors) is undefined
+  tagint same[2] = {MAXTAGINT, MAXTAGINT};
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const int *const jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
-      if (dx * dx + dy * dy + dz * dz < cutsq_kernel) local++;
+      const double rsq = dx * dx + dy * dy + dz * dz;
+      if (rsq < cutsq_kernel) local++;
+      if (rsq == 0.0 && std::min(atom->tag[i], atom->tag[j]) < same[0])
+        same[0] = std::min(atom->tag[i], atom->tag[j]), same[1] = std::max(atom->tag[i], atom->tag[j]);
     }
+  }
+  tagint first_same;
+  MPI_Allreduce(&same[0], &first_same, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (first_same != MAXTAGINT) {
+    tagint other = (same[0] == first_same) ? same[1] : MAXTAGINT, first_other;
+    MPI_Allreduce(&other, &first_other, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    error->all(FLERR,
+               "Pair style {}: atoms {} and {} are at the same position (created twice at one "
+               "point, or an atom on a periodic boundary and its image); no particle may overlap "
+               "another",
+               style, first_same, first_other);
   }
   MPI_Allreduce(&local, &pairs, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   // a half list holds each pair once with newton on, on both of its ranks with newton off

@@ -46,8 +46,9 @@ class PairSPHKernel : public Pair {
   // the kernel of this run's dimension; returns eta^2. Also the checks of
   // the cutoff against the box and of the other SPH pair styles of a hybrid
   double init_kernel();
-  // at a run's setup: a warning when the cutoff leaves the particles
-  // fewer than one neighbour each on average (no interaction to speak of)
+  // at a run's setup: an error when two particles share a position; a
+  // warning when the cutoff leaves the particles fewer than one neighbour
+  // each on average (no interaction to speak of)
   void check_neighbours();
   // after the pair loop: the first owned atom with a non-finite rate stops
   // the run, naming it and, by diagnose(), why
