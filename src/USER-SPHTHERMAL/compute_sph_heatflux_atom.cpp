@@ -130,6 +130,10 @@ void ComputeSPHHeatfluxAtom::compute_peratom()
     memory->create(flux, nmax, size_peratom_cols, "sph/heatflux/atom:flux");
     array_atom = flux;
   }
+  // the ghosts' esph and rho are those of the step's start: the integrator
+  // updates them on the owners only (with the atoms split over ranks, a
+  // neighbour across the boundary would be half a step behind)
+  comm->forward_comm();
   SPHCompat::build_occasional(neighbor, list);
 
   const double *const *const x = atom->x;

@@ -1,0 +1,21 @@
+# every style of the package on 2 ranks and across a restart (one probe per
+# style and per main option, the table in test_probe.py); coverage: every
+# style the sources declare has a probe
+execute_process(
+  COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_SOURCE_DIR}/robust/test_probe.py --lmp - --plugin - --list
+  OUTPUT_VARIABLE sphthermal_probes OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE probe_list_rc)
+if(NOT probe_list_rc EQUAL 0)
+  message(FATAL_ERROR "robust/test_probe.py --list failed: ${probe_list_rc}")
+endif()
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+  ${CMAKE_CURRENT_SOURCE_DIR}/robust/test_probe.py)
+foreach(probe ${sphthermal_probes})
+  add_test(NAME robust.probe.${probe}
+    COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_SOURCE_DIR}/robust/test_probe.py
+            --lmp ${SPHTHERMAL_LMP} --plugin ${SPHTHERMAL_PLUGIN} --mpirun ${MPIRUN} --probe ${probe})
+  set_tests_properties(robust.probe.${probe} PROPERTIES LABELS unit)
+endforeach()
+add_test(NAME robust.probe.coverage
+  COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_SOURCE_DIR}/robust/test_probe.py
+          --lmp ${SPHTHERMAL_LMP} --plugin ${SPHTHERMAL_PLUGIN} --coverage)
+set_tests_properties(robust.probe.coverage PROPERTIES LABELS unit)

@@ -1,0 +1,314 @@
+"""Every style of the package on 2 ranks and across a restart
+(robust.probe.<probe>, called by ctest; robust.probe.coverage checks the
+table against the styles the sources declare).
+
+Each probe is a small scene (a heated cavity with flow, or a periodic
+channel) that runs the style with the package's other styles around it:
+- A: 1 rank, 10 steps, write_restart, 10 steps more;
+- B: the same on 2 ranks;
+- C: 2 ranks, read_restart of A's file, the styles given again, 10 steps.
+Checked: every atom's x, y, vx, vy, rho, esph and the style's own outputs
+(thermo) agree between A and B and between A and C to round-off, and they
+are finite. A style that kept state it does not write to the restart file,
+or that sums differently with the atoms split over ranks, fails here.
+
+  --list       the probes' names (for ctest)
+  --coverage   every style the sources declare has a probe
+"""
+
+import argparse
+import glob
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from sphtest import Checks, finish, lammps_arguments, mpi_env, mpi_prefix  # noqa: E402
+
+SOURCES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "src",
+                       "USER-SPHTHERMAL")
+
+LATTICE = """
+variable dx equal 1.0/12
+lattice sq ${dx} origin 0.5 0.5 0.0
+"""
+
+# the atoms and regions (regions are not in a restart file: given again)
+CAVITY_ATOMS = """
+region box block -3 15 -3 15 -0.5 0.5
+create_box 2 box
+create_atoms 1 region box
+"""
+CAVITY_GROUPS = """
+group fluid region cavity
+group wall subtract all fluid
+set group wall type 2
+group hot region left
+group cold region right
+group hot_or_cold union hot cold
+group top_bottom subtract wall hot_or_cold
+group upper region upper
+group toprow region toprow
+"""
+CAVITY_REGIONS = """
+region cavity block 0 12 0 12 INF INF
+region left block INF 0 INF INF INF INF
+region right block 12 INF INF INF INF INF
+region upper block 0 12 6 12 INF INF
+region toprow block 0 12 11 12 INF INF
+"""
+CAVITY_STATE = """
+variable T0 atom 0.5+0.1*sin(2*PI*x)
+sph/set all materials spacing ${dx} temperature v_T0
+variable u atom 2.0*sin(PI*x)*cos(PI*y)
+variable w atom -2.0*cos(PI*x)*sin(PI*y)
+set group fluid vx v_u
+set group fluid vy v_w
+"""
+MATERIALS = """
+fix materials all sph/materials type * conductivity constant 1.0 cv 1.0 &
+    viscosity constant 0.71 expansion 1.0 eos linear 40.0 background 160.0 rho0 1.0
+"""
+PAIRS = """
+comm_modify vel yes
+pair_style hybrid/overlay {visc} wendland 0.2167 eta 0.01 delta 0.1 &
+    {heat} wendland 0.2167 eta 0.01 {conduction}
+pair_coeff * * {visc}
+pair_coeff * * {heat}
+neighbor $(0.2*v_dx) bin
+neigh_modify delay 0 every 1 check yes exclude type 2 2
+timestep 2.5e-4
+"""
+CAVITY_WALLS = """
+fix flow_walls wall sph/wall/adami
+fix hot hot sph/wall/dirichlet 1.0 surface cavity
+fix cold cold sph/wall/dirichlet 0.0 surface cavity
+fix adiabatic top_bottom sph/wall/adiabatic surface cavity
+fix integrate fluid sph
+"""
+
+# a channel periodic in x, driven along +x, heated from both walls
+CHANNEL_ATOMS = """
+region box block 0 12 -3 9 -0.5 0.5
+create_box 2 box
+create_atoms 1 region box
+"""
+CHANNEL_REGIONS = """
+region channel block INF INF 0 6 INF INF
+region low block INF INF INF 0 INF INF
+"""
+CHANNEL_GROUPS = """
+group fluid region channel
+group wall subtract all fluid
+set group wall type 2
+group hot region low
+group cold subtract wall hot
+"""
+CHANNEL_STATE = """
+sph/set all materials spacing ${dx} temperature 0.0
+variable u atom 4.0*y*(0.5-y)
+set group fluid vx v_u
+"""
+CHANNEL_WALLS = """
+fix flow_walls wall sph/wall/adami
+fix hot hot sph/wall/dirichlet 1.0
+fix cold cold sph/wall/dirichlet 1.0
+fix integrate fluid sph
+fix drive fluid addforce 0.02 0.0 0.0
+"""
+
+SCENES = {
+    "cavity": (CAVITY_ATOMS, CAVITY_REGIONS, CAVITY_GROUPS, CAVITY_STATE, CAVITY_WALLS),
+    "channel": (CHANNEL_ATOMS, CHANNEL_REGIONS, CHANNEL_GROUPS, CHANNEL_STATE, CHANNEL_WALLS),
+}
+
+# probe: (scene, the style's commands, its outputs for thermo, options);
+# options: conduction (of sph/cleary/heat), walls (replacing the scene's), omp
+PROBES = {
+    "pair_sph_harmonic_visc": ("cavity", "", "ke", {}),
+    "pair_sph_cleary_heat": ("cavity", "", "ke", {}),
+    "pair_sph_cleary_heat_consistent": ("cavity", "", "ke", {"conduction": "correction consistent"}),
+    "pair_sph_cleary_heat_second": ("cavity", "", "ke", {"conduction": "correction second"}),
+    "pair_sph_harmonic_visc_omp": ("cavity", "", "ke", {"omp": 1}),
+    "pair_sph_cleary_heat_omp": ("cavity", "", "ke", {"omp": 1,
+                                                      "conduction": "correction consistent"}),
+    "fix_sph_materials": ("cavity", "", "ke", {}),
+    "fix_sph_wall_adami": ("cavity", "", "ke", {}),
+    "fix_sph_wall_dirichlet": ("cavity", "", "f_hot f_cold", {}),
+    "fix_sph_wall_adiabatic": ("cavity", "", "ke", {}),
+    "fix_sph_wall_isothermal": (
+        "cavity", "", "f_hot[1] f_cold[1]",
+        {"walls": "fix flow_walls wall sph/wall/adami\n"
+                  "fix hot hot sph/wall/isothermal 1.0 spacing ${dx}\n"
+                  "fix cold cold sph/wall/isothermal 0.0 spacing ${dx}\n"
+                  "fix integrate fluid sph\n"}),
+    "fix_sph_boussinesq": ("cavity", "fix buoyancy fluid sph/boussinesq 0.5 gravity 0.0 -200.0 0.0",
+                           "ke", {}),
+    "fix_sph_shift": ("cavity", "fix shift fluid sph/shift skillen 2.0", "f_shift[1] f_shift[2]", {}),
+    "fix_sph_dt_reset": ("cavity", "fix dt fluid sph/dt/reset 1 acoustic 0.1", "dt time", {}),
+    "fix_sph_heatflow": ("cavity", "fix into fluid sph/heatflow hot", "f_into", {}),
+    "fix_sph_surface_flux": ("cavity", "fix heater toprow sph/surface/flux flux 2.0 spacing ${dx}",
+                             "f_heater", {}),
+    "fix_sph_inlet_temperature": ("channel", "fix inlet fluid sph/inlet/temperature 0.0",
+                                  "f_inlet[1]", {}),
+    "compute_sph_correction_atom": (
+        "cavity", "compute c all sph/correction/atom\ncompute csum all reduce sum c_c", "c_csum",
+        {"conduction": "correction consistent"}),
+    "compute_sph_heatflux_atom": (
+        "cavity", "compute q fluid sph/heatflux/atom\ncompute qsum fluid reduce sum c_q[1] c_q[2]",
+        "c_qsum[1] c_qsum[2]", {}),
+    "compute_sph_mixing": ("cavity", "compute mix fluid sph/mixing upper", "c_mix[*]", {}),
+    "compute_sph_nusselt": ("cavity", "compute nu hot sph/nusselt hot 1.0 1.0 1.0", "c_nu[*]", {}),
+    "compute_sph_thermal": ("cavity", "compute th fluid sph/thermal", "c_th[*]", {}),
+    "command_sph_set": ("cavity", "", "ke", {}),
+}
+
+STEPS = 10
+
+
+def script(probe, plugin, restart_file, continue_from=None):
+    scene, commands, outputs, options = PROBES[probe]
+    atoms, regions, groups, state, walls = SCENES[scene]
+    omp = options.get("omp", 0)
+    suffix = "/omp" if omp else ""
+    text = f"plugin load {plugin}\nunits si\ndimension 2\natom_style sph\natom_modify map array\n"
+    text += "boundary p f p\n" if scene == "channel" else "boundary f f p\n"
+    if omp:
+        text += "package omp 2\n"
+    if continue_from:
+        text = f"plugin load {plugin}\n" + ("package omp 2\n" if omp else "")
+        text += f"read_restart {continue_from}\n" + LATTICE + regions
+    else:
+        text += LATTICE + atoms + regions + groups
+    # each atom's lattice site: atom IDs depend on the number of ranks
+    text += "fix origin all property/atom i_site\n"
+    if not continue_from:
+        text += "variable site atom round(x/${dx}+100)*1000+round(y/${dx}+100)\nset group all i_site v_site\n"
+    text += MATERIALS
+    if not continue_from:
+        text += state
+    text += PAIRS.format(visc="sph/harmonic/visc" + suffix, heat="sph/cleary/heat" + suffix,
+                         conduction=options.get("conduction", ""))
+    text += options.get("walls", walls) + commands + "\n"
+    text += "compute rho all sph/rho/atom\ncompute esph all sph/e/atom\n"
+    text += f"thermo_style custom step {outputs}\nthermo_modify format float %.17g\nthermo {STEPS}\n"
+    if not continue_from:
+        text += f"run {STEPS}\nwrite_restart {restart_file}\n"
+    text += f"run {STEPS}\n"
+    text += ("write_dump all custom final.dump i_site x y vx vy c_rho c_esph modify sort 1 "
+             "format float %.17g\n")
+    return text
+
+
+def run(lmp, text, np_, mpirun, workdir, name):
+    path = os.path.join(workdir, f"in.{name}")
+    with open(path, "w") as f:
+        f.write(text)
+    cmd = mpi_prefix(np_, mpirun) + [lmp, "-log", f"log.{name}", "-in", path]
+    proc = subprocess.run(cmd, cwd=workdir, capture_output=True, text=True, env=mpi_env())
+    output = proc.stdout + proc.stderr
+    if proc.returncode != 0 or "ERROR" in output:
+        sys.stderr.write(output[-3000:])
+        sys.exit(f"FAIL: run {name} ({np_} ranks) stopped")
+    os.replace(os.path.join(workdir, "final.dump"), os.path.join(workdir, f"{name}.dump"))
+    return output
+
+
+def last_thermo(output, outputs):
+    """The style's outputs on the last thermo line."""
+    lines = output.splitlines()
+    heads = [k for k, line in enumerate(lines) if line.split()[:1] == ["Step"]]
+    columns = lines[heads[-1]].split()
+    rows = [line.split() for line in lines[heads[-1] + 1:]]
+    rows = [r for r in rows if len(r) == len(columns) and re.match(r"^-?\d+$", r[0])]
+    return dict(zip(columns[1:], (float(v) for v in rows[-1][1:])))
+
+
+def atoms(path):
+    with open(path) as f:
+        lines = f.read().splitlines()
+    at = lines.index(next(line for line in lines if line.startswith("ITEM: ATOMS")))
+    names = [n[2:] if n[:2] in ("c_", "i_") else n for n in lines[at].split()[2:]]
+    rows = [[float(v) for v in line.split()] for line in lines[at + 1:]]
+    return {name: [r[c] for r in rows] for c, name in enumerate(names)}
+
+
+def agree(check, a, b, label, rtol):
+    if a["site"] != b["site"]:
+        check(False, f"{label}: the atoms differ ({len(a['site'])} and {len(b['site'])})")
+        return
+    for name in ("x", "y", "vx", "vy", "rho", "esph"):
+        finite = all(math.isfinite(v) for v in a[name] + b[name])
+        scale = max(abs(v) for v in a[name]) or 1.0
+        if name in ("x", "y"):
+            scale = 1.0 / 12    # the particle spacing
+        if name in ("vx", "vy"):
+            scale = max(abs(v) for v in a["vx"] + a["vy"]) or 1.0
+        worst = max(abs(p - q) for p, q in zip(a[name], b[name])) / scale
+        check(finite and worst <= rtol,
+              f"{label}: {name} finite, largest difference {worst:.2e} of {scale:.4g} <= {rtol:g}")
+
+
+def agree_outputs(check, a, b, label, rtol):
+    # a value that is 0 to round-off (a balance) is compared on the scale
+    # of the largest output
+    floor = 1e-12 * max(abs(v) for v in a.values())
+    for key in a:
+        ok = math.isfinite(a[key]) and math.isfinite(b[key]) and \
+            abs(a[key] - b[key]) <= rtol * max(abs(a[key]), abs(b[key])) + floor
+        check(ok, f"{label}: {key} {a[key]:.15g} and {b[key]:.15g}")
+
+
+def declared_styles():
+    """The user-facing styles the sources declare (upper-case names are internal)."""
+    found = []
+    for header in sorted(glob.glob(os.path.join(SOURCES, "*.h"))):
+        with open(header) as f:
+            for kind, name in re.findall(r"^(Fix|Compute|Pair|Command)Style\(([^,]+),", f.read(),
+                                         re.M):
+                if name != name.upper():
+                    found.append(f"{kind.lower()}_{name.replace('/', '_')}")
+    return found
+
+
+def main():
+    parser = lammps_arguments(argparse.ArgumentParser(description=__doc__), ranks=False)
+    parser.add_argument("--probe")
+    parser.add_argument("--list", action="store_true")
+    parser.add_argument("--coverage", action="store_true")
+    parser.add_argument("--rtol", type=float, default=1e-12)
+    args = parser.parse_args()
+    if args.list:
+        print(";".join(PROBES))
+        return
+    check = Checks()
+    if args.coverage:
+        for style in declared_styles():
+            check(style in PROBES, f"style {style} has a probe")
+        check(len(declared_styles()) >= 20, f"{len(declared_styles())} styles found in {SOURCES}")
+        finish(check.failures)
+        return
+    outputs = PROBES[args.probe][2]
+    with tempfile.TemporaryDirectory() as tmp:
+        restart = os.path.join(tmp, "probe.restart")
+        out_a = run(args.lmp, script(args.probe, args.plugin, restart), 1, args.mpirun, tmp, "A")
+        out_b = run(args.lmp, script(args.probe, args.plugin, os.path.join(tmp, "b.restart")), 2,
+                    args.mpirun, tmp, "B")
+        out_c = run(args.lmp, script(args.probe, args.plugin, None, continue_from=restart), 2,
+                    args.mpirun, tmp, "C")
+        a, b, c = (atoms(os.path.join(tmp, f"{n}.dump")) for n in "ABC")
+        moved = max(abs(v) for v in a["vx"] + a["vy"]) > 0.0
+        check(moved, "the fluid moves (the probe is not a still scene)")
+        agree(check, a, b, "1 rank and 2 ranks", args.rtol)
+        agree(check, a, c, "continuous and restarted on 2 ranks", args.rtol)
+        thermo = [last_thermo(o, outputs) for o in (out_a, out_b, out_c)]
+        agree_outputs(check, thermo[0], thermo[1], "1 rank and 2 ranks", args.rtol)
+        agree_outputs(check, thermo[0], thermo[2], "continuous and restarted", args.rtol)
+    finish(check.failures)
+
+
+if __name__ == "__main__":
+    main()
