@@ -58,10 +58,13 @@ def main():
             version = m.group(1) if m else "?"
         fast = {k: min(v) for k, v in samples.items()}
         med = {k: statistics.median(v) for k, v in samples.items()}
-        rows.append((f"{n} x {n}", klabel, steps, fast, med))
+        # new/old of the two runs of each round (run next to each other): drift cancels
+        paired = statistics.median(b / a for a, b in zip(samples["old"], samples["new"]))
+        rows.append((f"{n} x {n}", klabel, steps, fast, med, paired))
         print(f"{n} x {n} {kernel}: old {1e6 * fast['old']:.4f} us (median {1e6 * med['old']:.4f}), "
               f"new {1e6 * fast['new']:.4f} us (median {1e6 * med['new']:.4f}); new/old "
-              f"{fast['new'] / fast['old']:.3f} (medians {med['new'] / med['old']:.3f})", flush=True)
+              f"{fast['new'] / fast['old']:.3f} (medians {med['new'] / med['old']:.3f}, rounds {paired:.3f})",
+              flush=True)
 
     path = os.path.join(args.out, "check_cost.md")
     with open(path, "w") as f:
@@ -72,18 +75,22 @@ def main():
                 f"`SPHCheck::particles` ({args.new_label}), the same `lmp` (LAMMPS {version}); "
                 f"{args.repeat} runs of each, alternating (the order swapped each round). Pair CPU "
                 f"time per particle-step in ns (run_bench.py's measure: the run's CPU time times "
-                f"the pair's share of the loop). Noise: median / fastest - 1 of each plugin's runs. "
+                f"the pair's share of the loop). Rounds: the median over the rounds of new/old of the round's two runs. "
+                f"Noise: median / fastest - 1 of each plugin's runs; within noise: new/old of the "
+                f"fastest differs from 1 by no more than the larger noise of the two. "
                 f"Written by `bench/flow/check_cost.py` in {time.time() - start:.0f} s.\n\n")
         f.write("| particles | kernel | steps | old fastest | new fastest | new/old (fastest) "
-                "| old median | new median | new/old (medians) | noise old | noise new |\n")
-        f.write("|---|---|---|---|---|---|---|---|---|---|---|\n")
-        for label, klabel, steps, fast, med in rows:
+                "| old median | new median | new/old (medians) | new/old (rounds) | noise old | noise new "
+                "| within noise |\n")
+        f.write("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
+        for label, klabel, steps, fast, med, paired in rows:
+            noise = {k: med[k] / fast[k] - 1 for k in fast}
+            within = abs(fast["new"] / fast["old"] - 1) <= max(noise.values())
             f.write(f"| {label} | {klabel} | {steps} | {1e9 * fast['old']:.1f} | "
                     f"{1e9 * fast['new']:.1f} | {fast['new'] / fast['old']:.3f} | "
                     f"{1e9 * med['old']:.1f} | {1e9 * med['new']:.1f} | "
-                    f"{med['new'] / med['old']:.3f} | "
-                    f"{100 * (med['old'] / fast['old'] - 1):.1f} % | "
-                    f"{100 * (med['new'] / fast['new'] - 1):.1f} % |\n")
+                    f"{med['new'] / med['old']:.3f} | {paired:.3f} | {100 * noise['old']:.1f} % | "
+                    f"{100 * noise['new']:.1f} % | {'yes' if within else 'no'} |\n")
     print("wrote", path)
 
 
