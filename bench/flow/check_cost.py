@@ -5,11 +5,12 @@ plugin built before the check (--old) against one with it (--new), the same
 lmp. Runs alternate old/new (the order swapped each round), --repeat runs of
 each; pair CPU time per particle-step as run_bench.py measures it (its
 `cost`, one run per call). Writes check_cost.md here (or in --out): the
-fastest and median of each, new/old of the fastest and of the medians, and
-the spread of each (median / fastest - 1) as the noise.
+fastest and median of each, new/old of the fastest, of the medians and of
+the two runs of each round (their median), and the spread of each (median /
+fastest - 1) as the noise. About 8 minutes on a busy 2-core machine.
 
   /usr/bin/python3 bench/flow/check_cost.py --old OLD.so --new NEW.so \
-      [--old-label 67873ff] [--new-label 7ad5cbd] [--lmp build/lmp] [--repeat 7]
+      [--old-label 67873ff] [--new-label 7ad5cbd] [--lmp build/lmp] [--repeat 9]
 """
 
 import argparse
@@ -37,7 +38,7 @@ def main():
     p.add_argument("--old-label", default="old")
     p.add_argument("--new-label", default="new")
     p.add_argument("--lmp", default=os.path.join(run_bench.root, "build", "lmp"))
-    p.add_argument("--repeat", type=int, default=7, help="runs of each plugin per point (default 7)")
+    p.add_argument("--repeat", type=int, default=9, help="runs of each plugin per point (default 9)")
     p.add_argument("--out", default=here)
     args = p.parse_args()
     workdir = tempfile.mkdtemp(prefix="sphcheckcost")
