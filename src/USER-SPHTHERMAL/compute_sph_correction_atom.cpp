@@ -15,6 +15,7 @@
 #include "force.h"
 #include "memory.h"
 #include "pair.h"
+#include "sph_checks.h"
 #include "sph_conduction.h"
 #include "update.h"
 
@@ -49,6 +50,8 @@ void ComputeSPHCorrectionAtom::init()
 {
   Pair *pair = force->pair_match("^sph/cleary/heat", 0);
   if (!pair) error->all(FLERR, "Compute sph/correction/atom requires pair style sph/cleary/heat");
+  SPHCheck::warn_empty(lmp, FLERR, fmt::format("Compute sph/correction/atom {}", id).c_str(),
+                       igroup);
   int dim;
   const int *const correct = (int *) pair->extract("correction", dim);
   const int *const mean = (int *) pair->extract("mean", dim);

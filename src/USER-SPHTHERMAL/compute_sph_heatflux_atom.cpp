@@ -19,6 +19,7 @@
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "pair.h"
+#include "sph_checks.h"
 #include "sph_compat.h"
 #include "sph_gradient.h"
 #include "sph_kernels.h"
@@ -104,6 +105,7 @@ void ComputeSPHHeatfluxAtom::init()
   // kernel, cutoff and eta are those of the conduction pair style
   Pair *pair = force->pair_match("^sph/cleary/heat", 0);
   if (!pair) error->all(FLERR, "Compute sph/heatflux/atom requires pair style sph/cleary/heat");
+  SPHCheck::warn_empty(lmp, FLERR, fmt::format("Compute sph/heatflux/atom {}", id).c_str(), igroup);
   int dim;
   kernel_kind = *(int *) pair->extract("kernel_kind", dim);
   cutoff = *(double *) pair->extract("cutoff", dim);

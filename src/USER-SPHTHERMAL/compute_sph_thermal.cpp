@@ -12,6 +12,7 @@
 
 #include "atom.h"
 #include "error.h"
+#include "sph_checks.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -36,6 +37,13 @@ ComputeSPHThermal::ComputeSPHThermal(LAMMPS *lmp, int narg, char **arg) : Comput
 ComputeSPHThermal::~ComputeSPHThermal()
 {
   delete[] vector;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeSPHThermal::init()
+{
+  SPHCheck::warn_empty(lmp, FLERR, fmt::format("Compute sph/thermal {}", id).c_str(), igroup);
 }
 
 /* ---------------------------------------------------------------------- */

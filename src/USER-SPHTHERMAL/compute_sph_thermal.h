@@ -22,7 +22,7 @@ class ComputeSPHThermal : public Compute {
  public:
   ComputeSPHThermal(class LAMMPS *, int, char **);
   ~ComputeSPHThermal() override;
-  void init() override {}
+  void init() override;
   double compute_scalar() override;
   void compute_vector() override;
 

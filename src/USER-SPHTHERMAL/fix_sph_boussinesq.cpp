@@ -165,6 +165,9 @@ void FixSPHBoussinesq::init()
                    "and feel no buoyancy",
                    without, group->names[igroup]);
   SPHCheck::atom_state(lmp, FLERR, "Fix sph/boussinesq", groupbit, SPHCheck::CV);
+  // before any wall extrapolates a pressure from the buoyancy (at set-up)
+  if (!compression_checked) check_compression();
+  compression_checked = 1;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -172,8 +175,6 @@ void FixSPHBoussinesq::init()
 void FixSPHBoussinesq::setup(int vflag)
 {
   post_force(vflag);
-  if (!compression_checked) check_compression();
-  compression_checked = 1;
 }
 
 /* ----------------------------------------------------------------------
@@ -183,15 +184,18 @@ void FixSPHBoussinesq::setup(int vflag)
    (a column at the largest |T - T0| there can be; the temperatures stay
    within those at the start without heat sources). The temperatures: all
    atoms' but those of fix sph/wall/dirichlet, whose own are extrapolated,
-   and its wall temperatures. Checked once, at the first run's setup, when
-   the walls have their temperatures.
+   and its wall temperatures. Checked once, at the first run's init.
 ------------------------------------------------------------------------- */
 
 void FixSPHBoussinesq::check_compression()
 {
   const double *const g = buoyancy.gravity;
-  const double gnorm = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-  if (!(gnorm > 0.0)) return;
+  // scaled: |g| of a typo such as 1e300 must not overflow to inf
+  const double gmax = fmax(fabs(g[0]), fmax(fabs(g[1]), fabs(g[2])));
+  if (!(gmax > 0.0)) return;
+  const double gnorm = gmax *
+      sqrt((g[0] / gmax) * (g[0] / gmax) + (g[1] / gmax) * (g[1] / gmax) +
+           (g[2] / gmax) * (g[2] / gmax));
   const double unit[3] = {g[0] / gnorm, g[1] / gnorm, g[2] / gnorm};
 
   int dirichlet_bits = 0;
@@ -239,6 +243,16 @@ void FixSPHBoussinesq::check_compression()
     const double compression = gnorm * fabs(beta[t]) * dt_max * extent / (eos->c0 * eos->c0);
     if (compression > worst) worst = compression, worst_c0 = eos->c0, worst_type = t;
   }
+  // above 1 no weakly compressible state holds the column (a typo in T0,
+  // beta or g, most likely): the run would end at a wall or the EOS's floor
+  if (worst >= 1.0)
+    error->all(FLERR,
+               "Fix sph/boussinesq: the buoyancy would compress atom type {} of group {} by {:.3g} "
+               "(|g| beta max|T - T0| L / c0^2 with |g| = {:.6g}, beta = {:.6g}, "
+               "max|T - T0| = {:.6g}, L = {:.6g}, c0 = {:.6g}): no weakly compressible state; "
+               "check T0, beta and g",
+               worst_type, group->names[igroup], worst, gnorm, beta[worst_type], dt_max, extent,
+               worst_c0);
   if (worst > MAX_COMPRESSION && comm->me == 0)
     error->warning(FLERR,
                    "Fix sph/boussinesq: the buoyancy may compress atom type {} of group {} by up "

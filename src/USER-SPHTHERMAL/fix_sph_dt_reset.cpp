@@ -29,6 +29,7 @@
 #include "error.h"
 #include "fix_sph_materials.h"
 #include "force.h"
+#include "group.h"
 #include "integrate.h"
 #include "modify.h"
 #include "pair.h"
@@ -171,6 +172,10 @@ void FixSPHDtReset::pre_force(int /*vflag*/)
 
 void FixSPHDtReset::init()
 {
+  if (SPHCheck::group_count(lmp, groupbit) == 0)
+    error->all(FLERR, "Fix sph/dt/reset {}: group {} has no atoms, so no limit to take dt from",
+               id, group->names[igroup]);
+
   // two fixes changing dt would overwrite each other's choice
   for (int i = 0; i < modify->nfix; i++)
     if (modify->fix[i] != this &&

@@ -207,6 +207,13 @@ bigint SPHCheck::group_count(LAMMPS *lmp, int groupbit)
   return all;
 }
 
+void SPHCheck::warn_empty(LAMMPS *lmp, const char *file, int line, const char *who, int igroup)
+{
+  if (group_count(lmp, lmp->group->bitmask[igroup]) == 0 && lmp->comm->me == 0)
+    lmp->error->warning(file, line, "{}: group {} has no atoms, so its values are all 0", who,
+                        lmp->group->names[igroup]);
+}
+
 /* ---------------------------------------------------------------------- */
 
 // "SPTH": no setting a head-less file starts with (a kernel or form index)

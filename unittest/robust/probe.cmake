@@ -19,3 +19,15 @@ add_test(NAME robust.probe.coverage
   COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_SOURCE_DIR}/robust/test_probe.py
           --lmp ${SPHTHERMAL_LMP} --plugin ${SPHTHERMAL_PLUGIN} --coverage)
 set_tests_properties(robust.probe.coverage PROPERTIES LABELS unit)
+
+# bad forms of each probe's command line (robust.syntax.<probe>)
+execute_process(
+  COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_SOURCE_DIR}/robust/test_probe.py --lmp - --plugin -
+          --list-syntax
+  OUTPUT_VARIABLE sphthermal_syntax_probes OUTPUT_STRIP_TRAILING_WHITESPACE)
+foreach(probe ${sphthermal_syntax_probes})
+  add_test(NAME robust.syntax.${probe}
+    COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_SOURCE_DIR}/robust/test_probe.py
+            --lmp ${SPHTHERMAL_LMP} --plugin ${SPHTHERMAL_PLUGIN} --probe ${probe} --syntax)
+  set_tests_properties(robust.syntax.${probe} PROPERTIES LABELS unit)
+endforeach()

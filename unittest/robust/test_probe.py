@@ -13,6 +13,11 @@ are finite. A style that kept state it does not write to the restart file,
 or that sums differently with the atoms split over ranks, fails here.
 
   --list       the probes' names (for ctest)
+  --syntax     bad forms of the probe's command line instead (missing, extra
+               and nonsense words; numbers 0, -1, 1e300 and NaN; an empty
+               group): no crash or hang, an error that names the style or
+               stops at the command, no NaN taken silently
+  --list-syntax  the probes with a command line of their own
   --coverage   every style the sources declare has a probe
 """
 
@@ -262,6 +267,75 @@ def agree_outputs(check, a, b, label, rtol):
         check(ok, f"{label}: {key} {a[key]:.15g} and {b[key]:.15g}")
 
 
+def is_number(word):
+    try:
+        float(word)
+        return True
+    except ValueError:
+        return False
+
+
+def mutations(line):
+    """Bad forms of a style's command line: (what, line)."""
+    words = line.split()
+    head, args = words[:4], words[4:]    # fix|compute ID group style
+    yield "no arguments", " ".join(head)
+    if args:
+        yield "last argument missing", " ".join(head + args[:-1])
+    yield "an extra word", " ".join(words + ["extra"])
+    yield "an extra number", " ".join(words + ["1.0"])
+    yield "an empty group", " ".join([words[0], words[1], "nobody"] + words[3:])
+    for k, word in enumerate(args):
+        if is_number(word):
+            for value in ("0", "-1", "1e300", "${nan}"):
+                bad = list(args)
+                bad[k] = value
+                yield f"argument {k + 1} = {value}", " ".join(head + bad)
+        elif not word.startswith("$"):
+            bad = list(args)
+            bad[k] = "nosuch"
+            yield f"argument {k + 1} = nosuch", " ".join(head + bad)
+
+
+def syntax(args, check):
+    """Each bad form of the probe's style line: no crash or hang; an error
+    names the style (or stops at the command itself); a non-finite value is
+    never taken silently. Accepted forms are listed for review."""
+    scene, commands, outputs, options = PROBES[args.probe]
+    line = commands.splitlines()[0]
+    style = line.split()[3]
+    good = script(args.probe, args.plugin, "probe.restart")
+    good = good.replace(f"run {STEPS}\nwrite_restart probe.restart\n", "")
+    good = good.replace("run {STEPS}\n".format(STEPS=STEPS), "run 2\n")
+    prelude = "variable nan equal (1.0e308*10.0)-(1.0e308*10.0)\ngroup nobody empty\n"
+    with tempfile.TemporaryDirectory() as tmp:
+        for what, bad in mutations(line):
+            text = good.replace(line, prelude + bad, 1)
+            path = os.path.join(tmp, "in.bad")
+            with open(path, "w") as f:
+                f.write(text)
+            try:
+                proc = subprocess.run([args.lmp, "-log", "none", "-in", path], cwd=tmp,
+                                      capture_output=True, text=True, env=mpi_env(), timeout=60)
+            except subprocess.TimeoutExpired:
+                check(False, f"{style} with {what}: no end within 60 s")
+                continue
+            output = proc.stdout + proc.stderr
+            errors = [ln for ln in output.splitlines() if ln.startswith("ERROR")]
+            warned = any(ln.startswith("WARNING") and style in ln for ln in output.splitlines())
+            last = re.search(r"^Last (input line|command): (.*)$", output, re.M)
+            if proc.returncode < 0 or (proc.returncode != 0 and not errors):
+                check(False, f"{style} with {what}: crashed (exit {proc.returncode})")
+            elif errors:
+                at_command = last is not None and last.group(2).split()[:1] == [line.split()[0]]
+                named = style in errors[0] or line.split()[1] in errors[0]
+                check(at_command or named, f"{style} with {what}: {errors[0][:150]}")
+            elif "${nan}" in bad:
+                check(warned, f"{style} with {what}: a NaN taken without an error")
+            else:
+                print(f"note {style} with {what}: accepted{' with a warning' if warned else ''}")
+
+
 def declared_styles():
     """The user-facing styles the sources declare (upper-case names are internal)."""
     found = []
@@ -278,17 +352,27 @@ def main():
     parser = lammps_arguments(argparse.ArgumentParser(description=__doc__), ranks=False)
     parser.add_argument("--probe")
     parser.add_argument("--list", action="store_true")
+    parser.add_argument("--list-syntax", action="store_true")
     parser.add_argument("--coverage", action="store_true")
+    parser.add_argument("--syntax", action="store_true",
+                        help="bad forms of the probe's style line instead")
     parser.add_argument("--rtol", type=float, default=1e-12)
     args = parser.parse_args()
     if args.list:
         print(";".join(PROBES))
+        return
+    if args.list_syntax:    # the probes that add a command line of their own
+        print(";".join(name for name, probe in PROBES.items() if probe[1]))
         return
     check = Checks()
     if args.coverage:
         for style in declared_styles():
             check(style in PROBES, f"style {style} has a probe")
         check(len(declared_styles()) >= 20, f"{len(declared_styles())} styles found in {SOURCES}")
+        finish(check.failures)
+        return
+    if args.syntax:
+        syntax(args, check)
         finish(check.failures)
         return
     outputs = PROBES[args.probe][2]
