@@ -40,6 +40,9 @@ class ComputeSPHNusselt : public Compute {
   double delta_t, length, conductivity, area, spacing;
   int conductivity_type;    // > 0: the conductivity of this type in the materials hub
   int nmax;
+  int surface_checked;    // 0 until the first evaluation of a run has looked at the surface
+  int staircase_warned;   // the staircase warning was given (once per compute)
+  double staircase_spacing;    // > 0: the wall is a staircase; its particles' spacing
   double **local;        // per atom, with a surface: local Nu from the heat, from the gradient
   double *local_heat;    // per atom, without: local Nu from the heat
 
@@ -48,6 +51,7 @@ class ComputeSPHNusselt : public Compute {
   double wall_spacing(double depth_min);
   void grow_local();
   void gradient_values(double depth_min);
+  void check_surface(double depth_min);
 };
 
 }    // namespace LAMMPS_NS

@@ -1,0 +1,107 @@
+#!/usr/bin/env python3
+"""compute sph/nusselt on a staircase wall warns; on flat walls it does not.
+
+annulus: steady conduction between two concentric cylinders held at 1 and 0
+by mirrored dummies cut from the square lattice (in.nusselt_annulus, 10
+spacings across the gap, from the exact profile). The estimate from the heat
+is the exact Nu = 1/ln(ro/ri) within 0.3 %; the gradient's is far off
+(1.8 times), and the compute says so in one WARNING that names compute
+sph/nusselt, its group and the estimate to use.
+
+flat: the square cavity between a hot and a cold wall of layered dummies
+(fix sph/wall/dirichlet surface on a block, corners included) with a
+linear field, as in test_walls.py nusselt: no warning of compute
+sph/nusselt, and the gradient estimate is 1.
+
+Usage: test_nusselt_staircase.py --lmp LMP --plugin PLUGIN [--np N]
+"""
+import math
+import os
+import re
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "convection"))
+from lammps_checks import run_input, run_lammps  # noqa: E402
+
+sys.path.insert(0, os.path.join(HERE, "..", "tools"))
+from sphtest import Checks, finish, lammps_arguments  # noqa: E402
+
+FLAT = """plugin load {plugin}
+units           si
+dimension       2
+atom_style      sph
+boundary        f f p
+lattice         sq 0.1 origin 0.5 0.5 0.0
+region          box block -3 13 -3 13 -0.5 0.5
+create_box      2 box
+create_atoms    1 region box
+region          cavity block 0 1 0 1 INF INF units box
+group           fluid region cavity
+group           wall subtract all fluid
+set             group wall type 2
+fix             materials all sph/materials type * conductivity constant 1.0 cv 2.0 rho0 1.0
+sph/set         all materials spacing 0.1 temperature 0.0
+pair_style      sph/cleary/heat quintic 0.3
+pair_coeff      * *
+neigh_modify    exclude type 2 2
+region          left block INF 0 INF INF INF INF units box
+region          right block 1 INF INF INF INF INF units box
+group           hot region left
+group           cold region right
+group           held union hot cold
+group           sides subtract wall held
+variable        Tlin atom 1.0-x
+sph/set         fluid temperature v_Tlin
+fix             hot hot sph/wall/dirichlet 1.0 surface cavity
+fix             cold cold sph/wall/dirichlet 0.0 surface cavity
+fix             adiabatic sides sph/wall/adiabatic surface cavity
+compute         nu_hot hot sph/nusselt hot 1.0 1.0 1.0
+compute         nu_cold cold sph/nusselt cold -1.0 1.0 type 1
+compute         hot_local hot reduce sum c_nu_hot[1]
+thermo_style    custom step c_nu_hot[*] c_nu_cold[*] c_hot_local
+thermo_modify   format float %.15g
+run             0
+print           "FLAT gradient $(c_nu_hot[2]:%.15g) $(c_nu_cold[2]:%.15g)"
+"""
+
+
+def value(out, key):
+    m = re.search(key + r"\s+(\S+)\s+(\S+)", out)
+    return (float(m.group(1)), float(m.group(2))) if m else (math.nan, math.nan)
+
+
+def main():
+    parser = lammps_arguments(__import__("argparse").ArgumentParser(description=__doc__))
+    a = parser.parse_args()
+    check = Checks()
+    lmp, plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
+    with tempfile.TemporaryDirectory() as work:
+        out = run_input(lmp, os.path.join(HERE, "in.nusselt_annulus"),
+                        {"plugin": plugin, "n": 10, "steps": 1500}, work, a.np, a.mpirun)
+        m = re.search(r"ANNULUS n \S+ heat (\S+) gradient (\S+) exact (\S+)", out)
+        heat, grad, exact = (float(v) for v in m.groups()) if m else (math.nan,) * 3
+        warnings = [line for line in out.splitlines()
+                    if line.startswith("WARNING") and "sph/nusselt" in line]
+        check(abs(heat / exact - 1) < 3e-3,
+              f"annulus: Nu from the heat {heat:.6f} against the exact {exact:.6f} "
+              f"({100 * (heat / exact - 1):+.3f} %, limit 0.3 %); from the gradient {grad:.4f}")
+        check(len(warnings) == 1 and re.search(
+                  r"compute sph/nusselt nu: the wall atoms of group hot do not lie in layers "
+                  r"parallel to the surface of fix hotw .*use the mean from the heat",
+                  warnings[0]) is not None,
+              f"annulus: one WARNING of compute sph/nusselt naming the group and the heat "
+              f"(found {len(warnings)}: {warnings[:1]})")
+        out = run_lammps(lmp, FLAT.format(plugin=plugin), work, a.np, a.mpirun)
+        warnings = [line for line in out.splitlines()
+                    if line.startswith("WARNING") and "sph/nusselt" in line]
+        hot, cold = value(out, "FLAT gradient")
+        check(not warnings and abs(hot - 1) < 1e-10 and abs(cold - 1) < 1e-10,
+              f"flat walls with corners: no WARNING of compute sph/nusselt (found {warnings}); "
+              f"Nu from the gradient {hot:.12f} {cold:.12f} (1 within 1e-10)")
+    finish(check.failures)
+
+
+if __name__ == "__main__":
+    main()
