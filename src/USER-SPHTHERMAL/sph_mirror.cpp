@@ -36,7 +36,7 @@ static const char *const thermal_walls[] = {"sph/wall/adiabatic", "sph/wall/diri
 SPHMirror::SPHMirror(LAMMPS *lmp, const std::string &cmd, bool returns) :
     Pointers(lmp), command(cmd), returns_heat(returns), region(nullptr), groupbit(0),
     medium_exclude(0), held_walls(0), kernel_kind(0), cutoff(0.0), inlet_axis(-1),
-    candidates_valid(false), medium_check_pending(false)
+    candidates_valid(false), medium_check_pending(false), medium_tolerance(0.0)
 {
 }
 
@@ -56,10 +56,11 @@ int SPHMirror::parse(int narg, char **arg, int iarg)
 void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
 {
   fix_id = id ? id : "";
-  // the region is checked against the scene as set up (step 0): later, a
-  // fluid particle next to the wall may have moved past the surface by a
-  // fraction of a spacing, which is the flow's, not the region's, doing
-  medium_check_pending = (update->ntimestep == 0);
+  // the region is checked at every run's start: strictly against the scene
+  // as set up (step 0); later a fluid particle next to the wall may have
+  // moved past the surface by a fraction of a spacing, which is the flow's,
+  // not the region's, doing: up to half the depth of the nearest wall atom
+  medium_check_pending = true;
   groupbit = groupbit_in;
   kernel_kind = kind;
   cutoff = cut;
@@ -90,7 +91,7 @@ void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
   // every wall atom lies outside the region; the farthest one within the
   // kernel's reach sets how far the ghost points lie from their wall atoms
   double *const *const x = atom->x;
-  double dmax_local = 0.0;
+  double dmax_local = 0.0, dmin_local = INFINITY;
   int inside = 0;
   tagint inside_tag = 0;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -106,6 +107,7 @@ void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
           sqrt((g[0] - x[i][0]) * (g[0] - x[i][0]) + (g[1] - x[i][1]) * (g[1] - x[i][1]) +
                (g[2] - x[i][2]) * (g[2] - x[i][2]));
       dmax_local = MAX(dmax_local, d);
+      dmin_local = MIN(dmin_local, d);
     }
   }
   int inside_any = 0;
@@ -120,8 +122,10 @@ void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
                "in: outside its shape; side out, the medium around an obstacle: inside it)",
                command, first, region_name, region->interior ? "in" : "out");
   }
-  double dmax = 0.0;
+  double dmax = 0.0, dmin = INFINITY;
   MPI_Allreduce(&dmax_local, &dmax, 1, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(&dmin_local, &dmin, 1, MPI_DOUBLE, MPI_MIN, world);
+  medium_tolerance = (update->ntimestep == 0 || !std::isfinite(dmin)) ? 0.0 : 0.5 * dmin;
 
   // the medium around a ghost point up to 2 dmax away, also on other ranks
   const double needed = cutoff + 2.0 * dmax + neighbor->skin;
@@ -167,9 +171,10 @@ int SPHMirror::ghost_point(const double *x, double *ghost, double *depth)
 }
 
 /* ----------------------------------------------------------------------
-   once after init, with this step's ghost points and candidates: every
+   once after each init, with this step's ghost points and candidates: every
    medium atom within the kernel's reach of a wall atom of the group or of
-   a ghost point (those the wall reads) must lie in the region, the
+   a ghost point (those the wall reads) must lie in the region (after step
+   0: or past its surface by at most medium_tolerance), the
    medium's side of the surface; one that does not means a region too small
    (or on the wrong side), whose surface is not the wall's: a collective
    error naming the lowest such atom ID. Ghost images are taken back into
@@ -193,6 +198,11 @@ void SPHMirror::check_medium()
     double at[3] = {x[j][0], x[j][1], x[j][2]};
     domain->remap(at);
     if (region->match(at[0], at[1], at[2])) return;
+    // just past the surface (on the wall's side, within the tolerance)
+    if (medium_tolerance > 0.0 &&
+        (region->interior ? region->surface_exterior(at, medium_tolerance)
+                          : region->surface_interior(at, medium_tolerance)) > 0)
+      return;
     first_local = tag[j];
     info[0] = atom->type[j];
     info[1] = at[0], info[2] = at[1], info[3] = at[2];

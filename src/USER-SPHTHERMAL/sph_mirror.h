@@ -103,6 +103,7 @@ class SPHMirror : protected Pointers {
   std::vector<double> candidates_at;    // 3 per owned atom
   bool candidates_valid;
   bool medium_check_pending;    // check_medium() at the next interpolate()
+  double medium_tolerance;      // how far past the surface a medium atom may be
   std::vector<double> medium_volume, medium_temperature;
   // this step's ghost points: 3 per owned atom, and whether there is one
   std::vector<double> ghost_at;
