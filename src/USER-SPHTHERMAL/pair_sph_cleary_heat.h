@@ -118,6 +118,10 @@ class PairSPHClearyHeat : public PairSPHKernel {
   std::vector<int> second_constrained;
   std::vector<sphs_pair> second_pairs;
   sphs_result second_result;    // of the last solve, for report_setup()
+  // the last solve's second stage (the unregularised problem): 1 taken,
+  // 0 not converged (the regularised multipliers kept), -1 not tried
+  int second_exact;
+  std::vector<double> second_kept;
   int second_warned;
   bigint second_solved_at;    // step of the last solve, -1 before the first
   void solve_second();
