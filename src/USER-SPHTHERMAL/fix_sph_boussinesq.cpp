@@ -165,9 +165,15 @@ void FixSPHBoussinesq::init()
                    "and feel no buoyancy",
                    without, group->names[igroup]);
   SPHCheck::atom_state(lmp, FLERR, "Fix sph/boussinesq", groupbit, SPHCheck::CV);
-  // before any wall extrapolates a pressure from the buoyancy (at set-up)
-  if (!compression_checked) check_compression();
-  compression_checked = 1;
+  // before any wall extrapolates a pressure from the buoyancy (at set-up);
+  // a fix gravity with variables sets its acceleration at its set-up first
+  const int known = gravity_keyword || SPHBodyForce::constant(SPHBodyForce::source(lmp));
+  if (known && !gravity_keyword)
+    SPHBodyForce::check_finite(lmp, FLERR, "Fix sph/boussinesq", buoyancy.gravity);
+  if (!compression_checked && known) {
+    check_compression();
+    compression_checked = 1;
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -175,6 +181,8 @@ void FixSPHBoussinesq::init()
 void FixSPHBoussinesq::setup(int vflag)
 {
   post_force(vflag);
+  if (!compression_checked) check_compression();
+  compression_checked = 1;
 }
 
 /* ----------------------------------------------------------------------
@@ -184,7 +192,8 @@ void FixSPHBoussinesq::setup(int vflag)
    (a column at the largest |T - T0| there can be; the temperatures stay
    within those at the start without heat sources). The temperatures: all
    atoms' but those of fix sph/wall/dirichlet, whose own are extrapolated,
-   and its wall temperatures. Checked once, at the first run's init.
+   and its wall temperatures. Checked once, at the first run's init (at its
+   set-up when fix gravity's acceleration is a variable's).
 ------------------------------------------------------------------------- */
 
 void FixSPHBoussinesq::check_compression()

@@ -82,10 +82,9 @@ FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
   // defaults: the acoustic one stable for the package's flows under
   // gravity, Ng et al. 2020, eq 18, for the force and viscous limits, the thermal
   // one half the limit that is sure to be stable (see the doc)
-  coeff[ACOUSTIC] = 0.1;
-  coeff[FORCE] = 0.25;
-  coeff[VISCOUS] = 0.125;
-  coeff[THERMAL] = 0.5;
+  // acoustic, force, viscous, thermal
+  static constexpr double defaults[NLIMITS] = {0.1, 0.25, 0.125, 0.5};
+  for (int k = 0; k < NLIMITS; k++) coeff[k] = defaults[k];
 
   static const char *const names[NLIMITS] = {"acoustic", "force", "viscous", "thermal"};
   int iarg = 4;
@@ -105,6 +104,14 @@ FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
     iarg += 2;
   }
+  // the acoustic, force and viscous coefficients are fractions of their
+  // limit: past 1 no explicit step is stable (a typo, most likely)
+  for (int k : {ACOUSTIC, FORCE, VISCOUS})
+    if (coeff[k] > 1.0 && comm->me == 0)
+      error->warning(FLERR,
+                     "Fix sph/dt/reset: {} {} is above 1, past the stable step of the explicit "
+                     "update (the default is {})",
+                     names[k], coeff[k], defaults[k]);
   if (coeff[THERMAL] > 1.0 && comm->me == 0)
     error->warning(FLERR,
                    "Fix sph/dt/reset: thermal {} is above 1, where the explicit conduction update "

@@ -252,8 +252,13 @@ void FixSPHWallAdami::pre_force_walls()
   const double cutsq = cutoff * cutoff;
   int below_eos = 0;
   // fix gravity may vary its acceleration in time
-  if (!body_given)
+  if (!body_given) {
+    // a fix gravity with variables sets its acceleration at its first force,
+    // after this set-up
+    if (!update->setupflag || SPHBodyForce::constant(SPHBodyForce::source(lmp)))
+      SPHBodyForce::check_finite(lmp, FLERR, "Fix sph/wall/adami", body_force);
     for (int k = 0; k < 3; k++) body[k] = body_force ? body_force[k] : 0.0;
+  }
 
   if (any_solid && atom->nmax > nmax) {
     nmax = atom->nmax;

@@ -14,6 +14,8 @@
 #include "lammps.h"
 #include "modify.h"
 
+#include <cmath>
+
 using namespace LAMMPS_NS;
 
 /* ---------------------------------------------------------------------- */
@@ -54,6 +56,20 @@ const double *SPHBodyForce::require(LAMMPS *lmp, const char *who, const char *wh
 
 /* ---------------------------------------------------------------------- */
 
+void SPHBodyForce::check_finite(LAMMPS *lmp, const char *file, int line, const char *who,
+                                const double *gvec)
+{
+  if (!gvec || (std::isfinite(gvec[0]) && std::isfinite(gvec[1]) && std::isfinite(gvec[2])))
+    return;
+  Fix *fix = source(lmp);
+  lmp->error->all(file, line,
+                  "{}: the body acceleration of fix {} (style {}) is ({} {} {}); it must be "
+                  "finite (a direction 'vector 0 0 0', or a variable's NaN?)",
+                  who, fix ? fix->id : "?", fix ? fix->style : "?", gvec[0], gvec[1], gvec[2]);
+}
+
+/* ---------------------------------------------------------------------- */
+
 const SPHBodyForce::Buoyancy *SPHBodyForce::find_buoyancy(LAMMPS *lmp)
 {
   for (int i = 0; i < lmp->modify->nfix; i++) {
@@ -88,8 +104,15 @@ struct GravityMagnitude : public FixGravity {
   {
     return fix->*(&GravityMagnitude::mstyle) == 0 && fix->*(&GravityMagnitude::magnitude) == 0.0;
   }
+  static int constant(FixGravity *fix) { return fix->*(&GravityMagnitude::varflag) == 0; }
 };
 }    // namespace
+
+int SPHBodyForce::constant(Fix *fix)
+{
+  auto *gravity = dynamic_cast<FixGravity *>(fix);
+  return gravity ? GravityMagnitude::constant(gravity) : 0;
+}
 
 int SPHBodyForce::constant_zero(Fix *fix)
 {

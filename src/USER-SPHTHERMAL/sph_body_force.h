@@ -36,12 +36,21 @@ namespace SPHBodyForce {
   // the same, as an error naming 'who' and 'why' when there is none
   const double *require(LAMMPS *lmp, const char *who, const char *why);
 
+  // an error naming 'who' and the body-force fix when its acceleration is
+  // not finite (fix gravity's direction 'vector 0 0 0', a variable's NaN):
+  // before a style derives anything from it
+  void check_finite(LAMMPS *lmp, const char *file, int line, const char *who, const double *gvec);
+
   // the fix whose acceleration find() returns, nullptr when there is none
   class Fix *source(LAMMPS *lmp);
 
   // 1 when 'fix' is a fix gravity whose magnitude is a constant 0 (not a
   // variable, which may ramp it up later): its acceleration is 0 for good
   int constant_zero(class Fix *fix);
+
+  // 1 when 'fix' is a fix gravity with no variable: its acceleration is set
+  // from its creation on (a variable one sets it at its first force)
+  int constant(class Fix *fix);
 
   // the buoyancy of the run (fix sph/boussinesq), nullptr when none
   const Buoyancy *find_buoyancy(LAMMPS *lmp);

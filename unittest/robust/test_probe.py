@@ -79,7 +79,7 @@ fix materials all sph/materials type * conductivity constant 1.0 cv 1.0 &
 """
 PAIRS = """
 comm_modify vel yes
-pair_style hybrid/overlay {visc} wendland 0.2167 eta 0.01 delta 0.1 &
+pair_style hybrid/overlay {visc} wendland 0.2167 eta 0.01 delta 0.1 {flow} &
     {heat} wendland 0.2167 eta 0.01 {conduction}
 pair_coeff * * {visc}
 pair_coeff * * {heat}
@@ -131,12 +131,22 @@ SCENES = {
 }
 
 # probe: (scene, the style's commands, its outputs for thermo, options);
-# options: conduction (of sph/cleary/heat), walls (replacing the scene's), omp
+# options: conduction (of sph/cleary/heat), flow (of sph/harmonic/visc),
+# walls (replacing the scene's), omp
 PROBES = {
     "pair_sph_harmonic_visc": ("cavity", "", "ke", {}),
     "pair_sph_cleary_heat": ("cavity", "", "ke", {}),
     "pair_sph_cleary_heat_consistent": ("cavity", "", "ke", {"conduction": "correction consistent"}),
     "pair_sph_cleary_heat_second": ("cavity", "", "ke", {"conduction": "correction second"}),
+    "pair_sph_harmonic_visc_symmetric_cleary": (
+        "cavity", "", "ke", {"flow": "pressure symmetric viscosity cleary xi 1.0"}),
+    "pair_sph_harmonic_visc_sum_morris": ("cavity", "", "ke",
+                                          {"flow": "pressure sum viscosity morris"}),
+    "pair_sph_harmonic_visc_gradient": ("cavity", "", "ke", {"flow": "correction gradient"}),
+    "pair_sph_harmonic_visc_molteni_heating": (
+        "cavity", "", "ke", {"flow": "diffusion molteni heating 1.0"}),
+    "pair_sph_harmonic_visc_mean_pressure": ("cavity", "", "ke", {"flow": "mean_pressure 0.0"}),
+    "pair_sph_cleary_heat_interface": ("cavity", "", "ke", {"conduction": "mean interface"}),
     "pair_sph_harmonic_visc_omp": ("cavity", "", "ke", {"omp": 1}),
     "pair_sph_cleary_heat_omp": ("cavity", "", "ke", {"omp": 1,
                                                       "conduction": "correction consistent"}),
@@ -153,12 +163,25 @@ PROBES = {
     "fix_sph_boussinesq": ("cavity", "fix buoyancy fluid sph/boussinesq 0.5 gravity 0.0 -200.0 0.0",
                            "ke", {}),
     "fix_sph_shift": ("cavity", "fix shift fluid sph/shift skillen 2.0", "f_shift[1] f_shift[2]", {}),
+    "fix_sph_shift_delta_plus": ("cavity", "fix shift fluid sph/shift delta-plus 1.0 40.0 correct yes",
+                                 "f_shift[1] f_shift[2]", {}),
+    "fix_sph_boussinesq_fix_gravity": (
+        "cavity", "fix g fluid gravity 200.0 vector 0 -1 0\nfix buoyancy fluid sph/boussinesq 0.5",
+        "ke", {}),
+    "fix_sph_wall_adami_body": (
+        "cavity", "", "ke",
+        {"walls": CAVITY_WALLS.replace("sph/wall/adami", "sph/wall/adami body 0.0 -1.0 0.0")}),
     "fix_sph_dt_reset": ("cavity", "fix dt fluid sph/dt/reset 1 acoustic 0.1", "dt time", {}),
+    "fix_sph_dt_reset_limits": (
+        "cavity", "fix dt fluid sph/dt/reset 3 acoustic 0.2 force 0.2 viscous 0.1 thermal 0.1 "
+        "min 1.0e-6 max 1.0e-3", "dt time", {}),
     "fix_sph_heatflow": ("cavity", "fix into fluid sph/heatflow hot", "f_into", {}),
     "fix_sph_surface_flux": ("cavity", "fix heater toprow sph/surface/flux flux 2.0 spacing ${dx}",
                              "f_heater", {}),
     "fix_sph_inlet_temperature": ("channel", "fix inlet fluid sph/inlet/temperature 0.0",
                                   "f_inlet[1]", {}),
+    "fix_sph_inlet_temperature_held": (
+        "channel", "fix inlet fluid sph/inlet/temperature 0.0 ghosts held", "f_inlet[1]", {}),
     "compute_sph_correction_atom": (
         "cavity", "compute c all sph/correction/atom\ncompute csum all reduce sum c_c", "c_csum",
         {"conduction": "correction consistent"}),
@@ -196,7 +219,7 @@ def script(probe, plugin, restart_file, continue_from=None):
     if not continue_from:
         text += state
     text += PAIRS.format(visc="sph/harmonic/visc" + suffix, heat="sph/cleary/heat" + suffix,
-                         conduction=options.get("conduction", ""))
+                         conduction=options.get("conduction", ""), flow=options.get("flow", ""))
     text += options.get("walls", walls) + commands + "\n"
     text += "compute rho all sph/rho/atom\ncompute esph all sph/e/atom\n"
     text += f"thermo_style custom step {outputs}\nthermo_modify format float %.17g\nthermo {STEPS}\n"
@@ -298,18 +321,21 @@ def mutations(line):
 
 
 def syntax(args, check):
-    """Each bad form of the probe's style line: no crash or hang; an error
+    """Each bad form of each of the probe's command lines: no crash or hang; an error
     names the style (or stops at the command itself); a non-finite value is
     never taken silently. Accepted forms are listed for review."""
     scene, commands, outputs, options = PROBES[args.probe]
-    line = commands.splitlines()[0]
-    style = line.split()[3]
     good = script(args.probe, args.plugin, "probe.restart")
     good = good.replace(f"run {STEPS}\nwrite_restart probe.restart\n", "")
     good = good.replace("run {STEPS}\n".format(STEPS=STEPS), "run 2\n")
     prelude = "variable nan equal (1.0e308*10.0)-(1.0e308*10.0)\ngroup nobody empty\n"
     with tempfile.TemporaryDirectory() as tmp:
-        for what, bad in mutations(line):
+        # the package's styles and fix gravity, whose acceleration they read
+        lines = [ln for ln in commands.splitlines()
+                 if ln.split()[3].startswith("sph/") or ln.split()[3] == "gravity"]
+        for line, what, bad in ((line, what, bad) for line in lines
+                                for what, bad in mutations(line)):
+            style = line.split()[3]
             text = good.replace(line, prelude + bad, 1)
             path = os.path.join(tmp, "in.bad")
             with open(path, "w") as f:
