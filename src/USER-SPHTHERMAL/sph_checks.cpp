@@ -125,7 +125,13 @@ void SPHCheck::particles(LAMMPS *lmp, const char *file, int line, const char *wh
   // a NaN rho fails 'low > 0' as well as the sum
   if (std::isfinite(sum[0] + sum[1] + sum[2] + sum[3]) &&
       (!rho || (low[0] > 0.0 && low[1] > 0.0 && low[2] > 0.0 && low[3] > 0.0))) {
-    last_sound = {lmp, step, x, nlocal, needs};
+    // (field by field: LAMMPS 29Sep2021 builds as C++11, where a struct
+    // with member initialisers is no aggregate)
+    last_sound.lmp = lmp;
+    last_sound.step = step;
+    last_sound.x = x;
+    last_sound.nlocal = nlocal;
+    last_sound.needs = needs;
     return;
   }
 
