@@ -225,9 +225,10 @@ def script(probe, plugin, restart_file, continue_from=None):
     text += f"thermo_style custom step {outputs}\nthermo_modify format float %.17g\nthermo {STEPS}\n"
     if not continue_from:
         text += f"run {STEPS}\nwrite_restart {restart_file}\n"
+    # a dump at the run's end (29Sep2021's write_dump wants computes current)
+    text += (f"dump final all custom {STEPS} final.dump i_site x y vx vy c_rho c_esph\n"
+             "dump_modify final sort 1 format float %.17g\n")
     text += f"run {STEPS}\n"
-    text += ("write_dump all custom final.dump i_site x y vx vy c_rho c_esph modify sort 1 "
-             "format float %.17g\n")
     return text
 
 
@@ -258,7 +259,8 @@ def last_thermo(output, outputs):
 def atoms(path):
     with open(path) as f:
         lines = f.read().splitlines()
-    at = lines.index(next(line for line in lines if line.startswith("ITEM: ATOMS")))
+    # the last snapshot
+    at = max(k for k, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))
     names = [n[2:] if n[:2] in ("c_", "i_") else n for n in lines[at].split()[2:]]
     rows = [[float(v) for v in line.split()] for line in lines[at + 1:]]
     return {name: [r[c] for r in rows] for c, name in enumerate(names)}
