@@ -24,42 +24,13 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "convection"))
 from lammps_checks import run_input, run_lammps  # noqa: E402
+from test_walls import CONDUCTION, LATTICE, NUSSELT_WALLS  # noqa: E402
 
 sys.path.insert(0, os.path.join(HERE, "..", "tools"))
 from sphtest import Checks, finish, lammps_arguments  # noqa: E402
 
-FLAT = """plugin load {plugin}
-units           si
-dimension       2
-atom_style      sph
-boundary        f f p
-lattice         sq 0.1 origin 0.5 0.5 0.0
-region          box block -3 13 -3 13 -0.5 0.5
-create_box      2 box
-create_atoms    1 region box
-region          cavity block 0 1 0 1 INF INF units box
-group           fluid region cavity
-group           wall subtract all fluid
-set             group wall type 2
-fix             materials all sph/materials type * conductivity constant 1.0 cv 2.0 rho0 1.0
-sph/set         all materials spacing 0.1 temperature 0.0
-pair_style      sph/cleary/heat quintic 0.3
-pair_coeff      * *
-neigh_modify    exclude type 2 2
-region          left block INF 0 INF INF INF INF units box
-region          right block 1 INF INF INF INF INF units box
-group           hot region left
-group           cold region right
-group           held union hot cold
-group           sides subtract wall held
-variable        Tlin atom 1.0-x
-sph/set         fluid temperature v_Tlin
-fix             hot hot sph/wall/dirichlet 1.0 surface cavity
-fix             cold cold sph/wall/dirichlet 0.0 surface cavity
-fix             adiabatic sides sph/wall/adiabatic surface cavity
-compute         nu_hot hot sph/nusselt hot 1.0 1.0 1.0
-compute         nu_cold cold sph/nusselt cold -1.0 1.0 type 1
-compute         hot_local hot reduce sum c_nu_hot[1]
+# the flat-walled cavity of convection.nusselt.linear, not jittered
+FLAT = LATTICE + CONDUCTION + NUSSELT_WALLS + """compute         hot_local hot reduce sum c_nu_hot[1]
 thermo_style    custom step c_nu_hot[*] c_nu_cold[*] c_hot_local
 thermo_modify   format float %.15g
 run             0
