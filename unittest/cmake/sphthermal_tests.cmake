@@ -21,7 +21,8 @@
 #   PASS <regex>... / FAIL <regex>...   PASS_/FAIL_REGULAR_EXPRESSION
 #   WILL_FAIL                    a control that must fail
 #   RESOURCE_LOCK <name>         tests that write the same file, one at a time
-#   ENVIRONMENT <NAME=VALUE>...  ctest's ENVIRONMENT
+#   ENVIRONMENT <NAME=VALUE>...  ctest's ENVIRONMENT (every test also gets
+#                                PYTHONPATH=<repo>/tools, for sphthermal_tools)
 
 set(SPHTHERMAL_TESTS_DIR ${CMAKE_CURRENT_LIST_DIR}/..)
 get_filename_component(SPHTHERMAL_TESTS_DIR ${SPHTHERMAL_TESTS_DIR} ABSOLUTE)
@@ -96,9 +97,9 @@ function(sphthermal_test name)
   if(T_RESOURCE_LOCK)
     set_tests_properties(${name} PROPERTIES RESOURCE_LOCK ${T_RESOURCE_LOCK})
   endif()
-  if(T_ENVIRONMENT)
-    set_tests_properties(${name} PROPERTIES ENVIRONMENT "${T_ENVIRONMENT}")
-  endif()
+  # the one way the Python scripts find the package tools/sphthermal_tools
+  list(APPEND T_ENVIRONMENT PYTHONPATH=${SPHTHERMAL_ROOT}/tools)
+  set_tests_properties(${name} PROPERTIES ENVIRONMENT "${T_ENVIRONMENT}")
 endfunction()
 
 # sphthermal_unit_checks(<prefix> <program> <check>...): the tests
