@@ -17,6 +17,8 @@ sphthermal_test(tools.sph_state.error.ids_twice LABELS unit
 # the plotting helper turns a dump and a fix ave/time file into PNGs
 sphthermal_python_test(tools.sphplot tools/test_sphplot.py ARGS --python ${PYTHON_NUMPY}
   LABELS unit)
+# time averages and steady state of a series (sphthermal_tools.series)
+sphthermal_python_test(tools.series tools/test_series.py LABELS unit)
 # the 2-d Wendland C2 of the examples' analysis scripts (tools/wendland2d.py)
 sphthermal_python_test(tools.wendland2d tools/test_wendland2d.py LABELS unit)
 
