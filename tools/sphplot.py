@@ -1,6 +1,10 @@
 """Plot LAMMPS output of the SPH examples as PNG files.
 
-  field    particles at (x, y) coloured by a dump column, one PNG per frame
+  field    particles at (x, y) coloured by a dump column, one PNG per frame;
+           --types/--exclude-types keep some particle types only (default:
+           the moving types when the dump has type, vx and vy and some types
+           never move, e.g. wall dummies, else all), --arrows draws the
+           velocity (vx, vy) of a subsample
   profile  a dump column averaged in bins along x or y, one curve per frame
   series   columns of a 'fix ave/time' or 'fix print' file against another
 
@@ -14,6 +18,7 @@ Examples:
   PY=$(tools/find-python.sh)
   $PY tools/sphplot.py field out/erf.dump --color c_T --frames 0,2000
   $PY tools/sphplot.py field out/erf.dump --color c_T --vmin 0 --vmax 1 --out erf-T
+  $PY tools/sphplot.py field out/cavity.dump --color c_T --exclude-types 2 --arrows
   $PY tools/sphplot.py profile out/erf.dump --along x --value c_T --out erf-profile.png
   $PY tools/sphplot.py series out/correct.flux --x time --y q_energy,q_direct --logy
   $PY tools/sphplot.py series tavg.txt --x 1 --y 2,3
@@ -26,7 +31,8 @@ import sys
 
 import numpy as np
 
-from lammps_dump import read_frames
+from sphthermal_tools import series
+from sphthermal_tools.dump import read_frames
 
 
 class InputError(Exception):
@@ -110,29 +116,10 @@ def choose_frames(path, frames, spec):
 def read_table(path):
     """Columns of a fix ave/time or fix print file as ([names], 2-D array)."""
     require_file(path)
-    header, rows = None, []
-    with open(path) as f:
-        for line in f:
-            words = line.split()
-            if not words:
-                continue
-            if words[0].startswith("#"):
-                if not rows:  # later comments (e.g. a restarted run's title) don't rename columns
-                    header = line.lstrip("#").split()
-                continue
-            try:
-                rows.append([float(w) for w in words])
-            except ValueError:
-                raise InputError(f"non-numeric data in {path}: {line.strip()}")
-    if not rows:
-        raise InputError(f"no data in {path}")
-    if len({len(r) for r in rows}) > 1:
-        # fix ave/time in vector mode interleaves 'step nrows' lines with rows
-        raise InputError(f"rows of different lengths in {path} (fix ave/time mode vector is not supported)")
-    ncols = len(rows[0])
-    if not header or len(header) != ncols:
-        header = [str(i + 1) for i in range(ncols)]
-    return header, np.array(rows)
+    try:
+        return series.read_table(path)
+    except series.SeriesError as e:
+        raise InputError(str(e))
 
 
 def table_column(path, names, key):
@@ -169,15 +156,70 @@ def make_axes_locatable(ax):
     return locatable(ax)
 
 
+def type_list(text, option):
+    try:
+        return sorted({int(w) for w in text.split(",")})
+    except ValueError:
+        raise InputError(f"{option} takes atom types like 1 or 2,3, not '{text}'")
+
+
+def moving_types(chosen):
+    """The types with a non-zero velocity in any of the frames, when the dump
+    has type, vx and vy and some types never move (wall dummies); else None."""
+    if not all(all(k in c for k in ("type", "vx", "vy")) for _, c in chosen):
+        return None
+    types = np.unique(np.concatenate([c["type"] for _, c in chosen])).astype(int)
+    moving = [t for t in types
+              if any(np.any((c["type"] == t) & ((c["vx"] != 0) | (c["vy"] != 0))) for _, c in chosen)]
+    return moving if 0 < len(moving) < len(types) else None
+
+
+def select_types(path, chosen, types, exclude):
+    """The frames with only the particles of the chosen types, and a
+    description of the choice (None: all)."""
+    if types is None and exclude is None:
+        keep = moving_types(chosen)
+        how = None if keep is None else f"moving types {','.join(map(str, keep))}"
+    else:
+        keep = None
+        if any("type" not in c for _, c in chosen):
+            raise InputError(f"no column 'type' in {path}: --types and --exclude-types need it")
+        present = np.unique(np.concatenate([c["type"] for _, c in chosen])).astype(int).tolist()
+        keep = type_list(types, "--types") if types is not None else present
+        if exclude is not None:
+            keep = [t for t in keep if t not in type_list(exclude, "--exclude-types")]
+        if not any(t in present for t in keep):
+            raise InputError(f"no particles of types {','.join(map(str, keep)) or '(none)'} in {path} "
+                             f"(types: {' '.join(map(str, present))})")
+        how = f"types {','.join(map(str, keep))}"
+    if keep is None:
+        return chosen, None
+    out = []
+    for step, columns in chosen:
+        mask = np.isin(columns["type"].astype(int), keep)
+        out.append((step, {name: col[mask] for name, col in columns.items()}))
+    return out, how
+
+
+def arrow_subsample(n, every=None, most=400):
+    """Indices of the particles that get an arrow: every 'every'-th, or
+    evenly spread, at most 'most' of them."""
+    step = every if every else max(1, int(np.ceil(n / most)))
+    return np.arange(0, n, step)
+
+
 def plot_field(args):
     frames = load_dump(args.dump)
     chosen = choose_frames(args.dump, frames, args.frames)
     for _, columns in chosen:
-        require_columns(args.dump, columns, ["x", "y", args.color])
+        require_columns(args.dump, columns, ["x", "y", args.color] + (["vx", "vy"] if args.arrows else []))
+    chosen, how = select_types(args.dump, chosen, args.types, args.exclude_types)
     # one colour scale for all frames so that they can be compared
     vmin = args.vmin if args.vmin is not None else min(np.nanmin(c[args.color]) for _, c in chosen)
     vmax = args.vmax if args.vmax is not None else max(np.nanmax(c[args.color]) for _, c in chosen)
     prefix = args.out or f"{stem(args.dump)}-{safe(args.color)}"
+    print(f"sphplot: {args.color} from {vmin:.6g} to {vmax:.6g} over {how or 'all particles'}",
+          file=sys.stderr)
     plt = pyplot()
     for step, columns in chosen:
         x, y, value = columns["x"], columns["y"], columns[args.color]
@@ -185,6 +227,11 @@ def plot_field(args):
         height = 7 * yr / xr if xr > 0 else 7
         fig, ax = plt.subplots(figsize=(7, min(max(height + 1.5, 3), 8)))
         dots = ax.scatter(x, y, c=value, s=20, cmap=args.cmap, vmin=vmin, vmax=vmax, linewidths=0)
+        if args.arrows:
+            pick = arrow_subsample(len(x), args.arrow_every)
+            ax.quiver(x[pick], y[pick], columns["vx"][pick], columns["vy"][pick], color="k",
+                      angles="xy", width=0.003)
+            print(f"sphplot: step {step}: {len(pick)} arrows of {len(x)} particles", file=sys.stderr)
         ax.set_aspect("equal")
         ax.margins(0.02)
         # a colorbar as tall as the (possibly flat) axes
@@ -269,6 +316,11 @@ def main(argv=None):
     f.add_argument("--cmap", default="viridis")
     f.add_argument("--vmin", type=float, help="colour scale (default: over the chosen frames)")
     f.add_argument("--vmax", type=float)
+    f.add_argument("--types", help="atom types to show, e.g. 1 or 1,3 (default: the moving types "
+                                   "if the dump has type, vx, vy and some types never move, else all)")
+    f.add_argument("--exclude-types", help="atom types to leave out, e.g. 2,3 (wall dummies)")
+    f.add_argument("--arrows", action="store_true", help="velocity arrows from the vx, vy columns")
+    f.add_argument("--arrow-every", type=int, help="an arrow on every N-th particle (default: at most 400)")
     f.set_defaults(run=plot_field)
 
     r = sub.add_parser("profile", help="a column averaged in bins along x or y")
@@ -291,6 +343,8 @@ def main(argv=None):
     args = p.parse_args(argv)
     if getattr(args, "bins", None) is not None and args.bins < 1:
         p.error("--bins must be at least 1")
+    if getattr(args, "arrow_every", None) is not None and args.arrow_every < 1:
+        p.error("--arrow-every must be at least 1")
     try:
         args.run(args)
     except (InputError, OSError) as e:  # OSError: e.g. --out in a missing directory

@@ -28,7 +28,7 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.normpath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(root, "tools"))
-from lammps_dump import read_frames  # noqa: E402
+from sphthermal_tools.dump import read_frames  # noqa: E402
 
 spec = importlib.util.spec_from_file_location("erf", os.path.join(root, "examples", "conduction-erf", "analyse.py"))
 erf_analysis = importlib.util.module_from_spec(spec)

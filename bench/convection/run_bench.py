@@ -25,7 +25,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 from cavity_fv import DE_VAHL_DAVIS  # noqa: E402
-from lammps_log import late_rows, longest_thermo_table  # noqa: E402
+from sphthermal_tools.log import late_rows, longest_thermo_table  # noqa: E402
 
 
 def run(lmp, plugin, ra, n, kernel, hdx, out):

@@ -24,7 +24,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.normpath(os.path.join(here, "..", ".."))
 example = os.path.join(root, "examples", "flow-poiseuille")
 sys.path.insert(0, os.path.join(root, "tools"))
-from lammps_dump import read_frames  # noqa: E402
+from sphthermal_tools.dump import read_frames  # noqa: E402
 
 spec = importlib.util.spec_from_file_location("poiseuille", os.path.join(example, "analyse.py"))
 poiseuille = importlib.util.module_from_spec(spec)

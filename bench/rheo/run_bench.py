@@ -59,7 +59,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.normpath(os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(root, "tools"))
 import fv1d  # noqa: E402
-from lammps_dump import read_frames  # noqa: E402
+from sphthermal_tools.dump import read_frames  # noqa: E402
 
 MATFILE = os.path.join(root, "potentials", "thermal_300K.sphmat")
 FV_CELLS = {False: 400, True: 200}    # finite-volume cells (full, --quick)

@@ -15,7 +15,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from lammps_dump import frame_times, read_frames  # noqa: E402
+from sphthermal_tools.dump import frame_times, read_frames  # noqa: E402
 
 LIQUID, STEEL, TANK = 1, 2, 3
 

@@ -32,7 +32,7 @@ from scipy.spatial import cKDTree
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 import wendland2d  # noqa: E402
-from lammps_dump import read_frames  # noqa: E402
+from sphthermal_tools.dump import read_frames  # noqa: E402
 
 RHO0, GAMMA, G = 1000.0, 7.0, 9.81
 

@@ -12,7 +12,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from lammps_log import longest_thermo_table  # noqa: E402
+from sphthermal_tools.log import longest_thermo_table  # noqa: E402
 
 
 def main():

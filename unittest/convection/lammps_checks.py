@@ -8,10 +8,10 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from lammps_dump import read_frames  # noqa: E402
+from sphthermal_tools.dump import read_frames  # noqa: E402
 from cavity_fv import DE_VAHL_DAVIS  # noqa: E402,F401
-import lammps_log  # noqa: E402
-from lammps_log import late_rows, longest_thermo_table, thermo_tables  # noqa: E402,F401
+from sphthermal_tools import log as lammps_log  # noqa: E402
+from sphthermal_tools.log import late_rows, longest_thermo_table, thermo_tables  # noqa: E402,F401
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
 from sphtest import Checks, lammps_arguments, mpi_env, mpi_prefix  # noqa: E402,F401
@@ -25,7 +25,7 @@ def serial_check(doc):
 
 
 def final_nusselt(out, gradient=True):
-    """tools/lammps_log.final_nusselt of a run's output; stops the check when
+    """sphthermal_tools.log.final_nusselt of a run's output; stops the check when
     the numbers are missing. gradient=False for a run that has no gradient
     estimate (in.cavity's zero-order walls)."""
     final = lammps_log.final_nusselt(out)

@@ -28,7 +28,7 @@ import numpy as np
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 sys.path.insert(0, os.path.join(ROOT, "tools"))
-from lammps_dump import read_frames  # noqa: E402
+from sphthermal_tools.dump import read_frames  # noqa: E402
 
 sys.path.insert(0, os.path.join(ROOT, "unittest", "tools"))
 from sphtest import finish, lammps_arguments, mpi_env, mpi_prefix  # noqa: E402

@@ -2,32 +2,26 @@
 # style and per main option, the table in test_probe.py); coverage: every
 # style the sources declare has a probe
 execute_process(
-  COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_SOURCE_DIR}/robust/test_probe.py --lmp - --plugin - --list
+  COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_LIST_DIR}/test_probe.py --lmp - --plugin - --list
   OUTPUT_VARIABLE sphthermal_probes OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE probe_list_rc)
 if(NOT probe_list_rc EQUAL 0)
   message(FATAL_ERROR "robust/test_probe.py --list failed: ${probe_list_rc}")
 endif()
 set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
-  ${CMAKE_CURRENT_SOURCE_DIR}/robust/test_probe.py)
+  ${CMAKE_CURRENT_LIST_DIR}/test_probe.py)
 foreach(probe ${sphthermal_probes})
-  add_test(NAME robust.probe.${probe}
-    COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_SOURCE_DIR}/robust/test_probe.py
-            --lmp ${SPHTHERMAL_LMP} --plugin ${SPHTHERMAL_PLUGIN} --mpirun ${MPIRUN} --probe ${probe})
-  set_tests_properties(robust.probe.${probe} PROPERTIES LABELS unit)
+  sphthermal_python_test(robust.probe.${probe} robust/test_probe.py LAMMPS
+    ARGS --mpirun ${MPIRUN} --probe ${probe} LABELS unit)
 endforeach()
-add_test(NAME robust.probe.coverage
-  COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_SOURCE_DIR}/robust/test_probe.py
-          --lmp ${SPHTHERMAL_LMP} --plugin ${SPHTHERMAL_PLUGIN} --coverage)
-set_tests_properties(robust.probe.coverage PROPERTIES LABELS unit)
+sphthermal_python_test(robust.probe.coverage robust/test_probe.py LAMMPS
+  ARGS --coverage LABELS unit)
 
 # bad forms of each probe's command line (robust.syntax.<probe>)
 execute_process(
-  COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_SOURCE_DIR}/robust/test_probe.py --lmp - --plugin -
+  COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_LIST_DIR}/test_probe.py --lmp - --plugin -
           --list-syntax
   OUTPUT_VARIABLE sphthermal_syntax_probes OUTPUT_STRIP_TRAILING_WHITESPACE)
 foreach(probe ${sphthermal_syntax_probes})
-  add_test(NAME robust.syntax.${probe}
-    COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_SOURCE_DIR}/robust/test_probe.py
-            --lmp ${SPHTHERMAL_LMP} --plugin ${SPHTHERMAL_PLUGIN} --probe ${probe} --syntax)
-  set_tests_properties(robust.syntax.${probe} PROPERTIES LABELS unit)
+  sphthermal_python_test(robust.syntax.${probe} robust/test_probe.py LAMMPS
+    ARGS --probe ${probe} --syntax LABELS unit)
 endforeach()

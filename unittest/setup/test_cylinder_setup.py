@@ -50,7 +50,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "tools"))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
 from checks import finish, that  # noqa: E402
-from lammps_dump import read_frames  # noqa: E402
+from sphthermal_tools.dump import read_frames  # noqa: E402
 import sph_boundary as sb  # noqa: E402
 
 p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)

@@ -155,7 +155,7 @@ with tempfile.TemporaryDirectory() as tmp:
                     "format float %.17g\n")
         out = subprocess.run([lmp, "-in", inp, "-log", "none", "-screen", "none"], cwd=tmp)
         sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-        from lammps_dump import read_frames
+        from sphthermal_tools.dump import read_frames
         fr = read_frames(os.path.join(tmp, "back.dump"))[0][1] if out.returncode == 0 else None
         ok = fr is not None and len(fr["id"]) == len(s3)
         if ok:

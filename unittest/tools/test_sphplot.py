@@ -2,6 +2,10 @@
 temperature linear in x, and a fix ave/time-like file. Each subcommand must
 write valid PNGs, bin_means must give the exact bin means of the linear field,
 and bad input (missing column, file or data) must fail with a one-line message.
+A dump with moving fluid (type 1, T from 1 to 3) between wall dummies (types
+2 and 3, at rest, T = 100 and -50): the colour range of 'field' must be the
+fluid's with --types 1, --exclude-types 2,3 and by default (the moving types),
+the walls' with --types 1,2; --arrows draws a subsample of the velocities.
 
   python test_sphplot.py --python /usr/bin/python3
 
@@ -38,6 +42,78 @@ def write_dump(path):
                 for i in range(NX):
                     x, y = (i + 0.5) / NX, (j + 0.5) * 0.05
                     f.write(f"{j * NX + i + 1} {x!r} {y!r} {temperature(x, step)!r}\n")
+
+
+def write_walls_dump(path):
+    """Fluid rows (type 1, moving, T in [1, 3]) between a bottom wall row
+    (type 2, T = 100) and a top one (type 3, T = -50), both at rest."""
+    with open(path, "w") as f:
+        f.write(f"ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n{NX * (NY + 2)}\n"
+                "ITEM: BOX BOUNDS pp ff pp\n0 1\n-0.05 0.25\n-0.025 0.025\n"
+                "ITEM: ATOMS id type x y vx vy c_T\n")
+        for j in range(-1, NY + 1):
+            for i in range(NX):
+                x, y = (i + 0.5) / NX, (j + 0.5) * 0.05
+                kind = 2 if j < 0 else 3 if j == NY else 1
+                vx, vy = (0.0, 0.0) if kind != 1 else (0.1 * (j + 1), 0.01 * x)
+                T = {1: 1.0 + 2.0 * x, 2: 100.0, 3: -50.0}[kind]
+                f.write(f"{(j + 1) * NX + i + 1} {kind} {x!r} {y!r} {vx!r} {vy!r} {T!r}\n")
+
+
+def colour_range(result):
+    """(vmin, vmax, what) of sphplot's 'c_T from A to B over WHAT' line, or None."""
+    for line in result.stderr.splitlines():
+        words = line.split()
+        if words[:4] == ["sphplot:", "c_T", "from", words[3]] and len(words) > 7 and words[4] == "to":
+            return float(words[3]), float(words[5]), " ".join(words[7:])
+    return None
+
+
+def check_types_and_arrows(python, tmp):
+    dump = os.path.join(tmp, "walls.dump")
+    write_walls_dump(dump)
+    out = lambda name: os.path.join(tmp, name)  # noqa: E731
+    fluid = (1.0 + 2.0 * 0.5 / NX, 1.0 + 2.0 * (NX - 0.5) / NX)
+    for options, expected, what in (
+            (["--types", "1"], fluid, "--types 1: the fluid's range"),
+            (["--exclude-types", "2,3"], fluid, "--exclude-types 2,3: the fluid's range"),
+            ([], fluid, "default: the moving types' range (walls at rest left out)"),
+            (["--types", "1,2"], (fluid[0], 100.0), "--types 1,2: up to the bottom wall's 100"),
+            (["--exclude-types", "2"], (-50.0, fluid[1]), "--exclude-types 2: down to the top wall's -50")):
+        name = "walls-" + ("-".join(options).replace(",", "_").replace("--", "") or "default")
+        result = run(python, "field", dump, "--color", "c_T", "--out", out(name), *options)
+        check_pngs(result, [out(name + "-0.png")], f"field {' '.join(options) or '(default types)'}")
+        found = colour_range(result)
+        that(found is not None and abs(found[0] - expected[0]) < 1e-9 and abs(found[1] - expected[1]) < 1e-9,
+             what, f"{found} against {expected}")
+    # the same frame without velocities: no default filter, every type
+    plain = run(python, "field", dump, "--color", "c_T", "--types", "1,2,3", "--out", out("walls-all"))
+    found = colour_range(plain)
+    that(found is not None and found[:2] == (-50.0, 100.0), "--types 1,2,3: the whole range", f"{found}")
+    # arrows: a subsample of the fluid's velocities, and a different picture
+    result = run(python, "field", dump, "--color", "c_T", "--types", "1", "--arrows", "--arrow-every", "3",
+                 "--out", out("walls-arrows"))
+    check_pngs(result, [out("walls-arrows-0.png")], "field --arrows")
+    counts = [line.split() for line in result.stderr.splitlines() if "arrows of" in line]
+    n_fluid = NX * NY
+    that(len(counts) == 1 and int(counts[0][3]) == -(-n_fluid // 3) and int(counts[0][6]) == n_fluid,
+         "--arrow-every 3: every third fluid particle has an arrow", str(counts))
+    with open(out("walls-arrows-0.png"), "rb") as f, open(out("walls-types-1-0.png"), "rb") as g:
+        that(f.read() != g.read(), "--arrows changes the picture")
+    result = run(python, "field", dump, "--color", "c_T", "--types", "1", "--arrows", "--out", out("walls-auto"))
+    counts = [line.split() for line in result.stderr.splitlines() if "arrows of" in line]
+    that(len(counts) == 1 and int(counts[0][3]) == n_fluid, "--arrows: all of 80 particles (below 400)",
+         str(counts))
+    # bad choices
+    check_fails(run(python, "field", dump, "--color", "c_T", "--types", "7"), ["7", "1 2 3"],
+                "--types: a type not in the dump")
+    check_fails(run(python, "field", dump, "--color", "c_T", "--types", "a"), ["--types", "a"],
+                "--types: not a type")
+    linear = os.path.join(tmp, "linear.dump")
+    check_fails(run(python, "field", linear, "--color", "c_T", "--arrows"), ["vx"],
+                "--arrows without vx, vy")
+    check_fails(run(python, "field", linear, "--color", "c_T", "--types", "1"), ["type"],
+                "--types without a type column")
 
 
 def write_ave_time(path):
@@ -78,7 +154,7 @@ def check_bin_means(python):
     the bin centres when the particles sit symmetrically in each bin."""
     code = f"""
 import json, sys
-sys.path.insert(0, {TOOLS!r})
+sys.path.insert(0, {TOOLS!r})  # the directory of sphplot.py (in the test's PYTHONPATH too)
 import numpy as np
 from sphplot import bin_means, bins_for
 x = np.repeat((np.arange({NX}) + 0.5) / {NX}, {NY})
@@ -146,6 +222,8 @@ def main():
         check_fails(run(python, "series", out("empty.txt"), "--x", "1", "--y", "2"), ["no data"],
                     "series: no data")
         check_fails(run(python, "field", ave, "--color", "c_T"), ["no frames"], "field: not a dump")
+
+        check_types_and_arrows(python, tmp)
 
         # without a header the columns are 1, 2, 3, ...
         with open(out("bare.txt"), "w") as f:

@@ -36,8 +36,8 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, here)
-sys.path.insert(0, os.path.join(here, "..", "examples", "conduction-disorder"))
+sys.path.insert(0, os.path.join(here, ".."))  # tools/ (fv1d)
+sys.path.insert(0, os.path.join(here, "..", "..", "examples", "conduction-disorder"))
 import fv1d  # noqa: E402
 import disorder  # noqa: E402
 

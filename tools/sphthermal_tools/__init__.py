@@ -1,0 +1,9 @@
+"""USER-SPHTHERMAL's Python tools, one package for examples, tests and benchmarks.
+
+  log     thermo tables of a LAMMPS log or screen output, the cavity's Nusselt lines
+  dump    LAMMPS 'dump custom' text files
+  series  'fix ave/time' / 'fix print' files; time averages and steady state
+
+Put <repo>/tools on PYTHONPATH (the tests, run.sh scripts and tools/main.sh
+do; see tools/README.md) and import e.g. 'from sphthermal_tools.dump import read_frames'.
+"""

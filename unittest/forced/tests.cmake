@@ -1,0 +1,68 @@
+# forced-convection tests (included by unittest/CMakeLists.txt after
+# convection/tests.cmake, whose test_convection_terms they run; helpers:
+# cmake/sphthermal_tests.cmake)
+add_error_cases(forced forced/errors.in)
+sphthermal_unit_checks(forced.terms test_convection_terms deltaplus)
+# the delta-plus shift: no shift on a lattice, a clustered set evens out,
+# walls stay, T follows exactly for a linear field, rho the volume
+foreach(check lattice spread linear follow volume)
+  sphthermal_python_test(forced.shift.${check} convection/test_shift.py LAMMPS
+    ARGS ${check} --form delta-plus LABELS unit)
+endforeach()
+sphthermal_python_test(forced.reference.channel_fv tools/test_channel_fv.py LABELS unit)
+# Wendland C2, h = 2 dx at 40 across stays laminar with dt = 0.15 h / c0 and shifting
+add_example_test(forced.validation.poiseuille_wendland_40 flow-poiseuille wendland
+  poiseuille_wendland_40)
+# the heated channel at Re = 65.2, 10 across, to t = 800 s against the
+# finite-volume reference (measured with the mirrored inlet ghosts and the
+# mean density held, in.channel's default below Re = 100: 2.70 % of
+# T_w - T_in at x = 5 m, 1.30 % at 50 m, 0.31 % at 100 m, |v| 0.18 % of
+# u_max; with the drifting mean 2.66, 1.26, 0.30 %, at 20 across 0.32,
+# 0.23 and 0.05 %. The inlet ghosts held at T_inlet gave 1.06 % at x = 5 m
+# here but 1.47 % at 20 across)
+add_example_test(forced.validation.channel_re65_10 forced-channel quick forced_channel_re65_10
+  ENV MAX_T_ERROR=3.2 MAX_VY=0.3)
+# the thick-wall channel (10 m slabs, k_s = k) at Re = 65.2, 10 across, to
+# t = 800 s against the conjugate finite-volume reference, fluid and slabs
+# (measured: 2.28 % of T_w - T_in at x = 5 m, 1.13, 1.20, 0.87, 0.59 % at
+# x = 50 to 195 m, |v| 0.18 % of u_max; with the drifting mean density
+# 2.27, 1.08, 1.16, 0.84, 0.57 %. With the slab's outer dummies at the
+# fluid's conductivity instead of the slab's, 5 % at 20 across)
+add_example_test(forced.validation.thick_re65_10 forced-channel thick forced_thick_re65_10
+  ENV N=10 RE=65.2 TEND=800 KSK=1 MAX_T_ERROR=3.0 MAX_VY=0.3)
+# Re = 652 stays laminar with delta-plus shifting (measured: |v| 0.13 % of
+# u_max at t = 60 s; without shifting 14 %)
+sphthermal_test(forced.validation.laminar_652 LABELS validation
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/laminar.sh ${SPHTHERMAL_LMP} ${SPHTHERMAL_PLUGIN}
+          ${PYTHON_NUMPY} ${CMAKE_CURRENT_BINARY_DIR}/forced_laminar_652 0.5)
+# in.channel holds the mean density under shifting below Re = 100 (continuity
+# auto) and lets it drift above; an explicit value wins
+sphthermal_test(forced.examples.channel_continuity LABELS regression
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/continuity_auto.sh ${SPHTHERMAL_LMP} ${SPHTHERMAL_PLUGIN}
+          ${CMAKE_CURRENT_BINARY_DIR}/forced_channel_continuity)
+# a solid plate and a fluid-like one are the same wall to the flow (1 and 2 ranks)
+foreach(np 1 2)
+  set(labels unit)
+  if(np GREATER 1)
+    set(labels unit mpi)
+  endif()
+  sphthermal_python_test(forced.walls.solid_plate_np${np} forced/test_solid_plate.py LAMMPS
+    ARGS --np ${np} --mpirun ${MPIRUN} LABELS ${labels} PROCESSORS ${np})
+endforeach()
+# in.exchanger goes on from its own restart file without setting its start again
+sphthermal_python_test(forced.examples.exchanger_resume forced/test_exchanger_resume.py LAMMPS
+  LABELS regression)
+foreach(check reservoir reenter balance walls restart mirror)
+  sphthermal_python_test(forced.inlet.${check} forced/test_inlet.py LAMMPS ARGS ${check}
+    LABELS unit)
+endforeach()
+# the inlet plane split between ranks along the flow; the shift's
+# corrected rho and v with ghosts that only the shift brings up to date
+foreach(np 2 4)
+  sphthermal_python_test(forced.mpi.shift_follow_np${np} convection/test_shift.py LAMMPS
+    ARGS follow --form delta-plus --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
+  foreach(check reservoir balance mirror)
+    sphthermal_python_test(forced.mpi.inlet_${check}_np${np} forced/test_inlet.py LAMMPS
+      ARGS ${check} --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
+  endforeach()
+endforeach()

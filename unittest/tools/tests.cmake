@@ -1,0 +1,33 @@
+# tests of the test tools, the repository's scripts and the benchmarks
+# (included by unittest/CMakeLists.txt; helpers: cmake/sphthermal_tests.cmake)
+
+# docs, examples, benchmarks and sources cite the papers, not internal seed numbers
+sphthermal_test(docs.citations LABELS unit COMMAND ${CMAKE_CURRENT_LIST_DIR}/check_citations.sh)
+
+# the state driver refuses atom IDs that would leave rows of its table unset
+sphthermal_test(tools.sph_state.error.ids_gap LABELS unit
+  PASS "sph_state: atom ID 4 is not in 1\\.\\.3"
+  COMMAND $<TARGET_FILE:sph_state_host> ${CMAKE_CURRENT_BINARY_DIR}/state_ids_gap.out
+          ${CMAKE_CURRENT_LIST_DIR}/state_ids_gap.in)
+sphthermal_test(tools.sph_state.error.ids_twice LABELS unit
+  PASS "sph_state: atom ID 1 is given to more than one atom"
+  COMMAND $<TARGET_FILE:sph_state_host> ${CMAKE_CURRENT_BINARY_DIR}/state_ids_twice.out
+          ${CMAKE_CURRENT_LIST_DIR}/state_ids_twice.in
+          -var data ${CMAKE_CURRENT_LIST_DIR}/state_ids_twice.data)
+# the plotting helper turns a dump and a fix ave/time file into PNGs
+sphthermal_python_test(tools.sphplot tools/test_sphplot.py ARGS --python ${PYTHON_NUMPY}
+  LABELS unit)
+# time averages and steady state of a series (sphthermal_tools.series)
+sphthermal_python_test(tools.series tools/test_series.py LABELS unit)
+# the 2-d Wendland C2 of the examples' analysis scripts (tools/wendland2d.py)
+sphthermal_python_test(tools.wendland2d tools/test_wendland2d.py LABELS unit)
+
+# the RHEO comparison (bench/rheo) runs, coarse, with its error bounds: RHEO
+# is built on LAMMPS 4Feb2025 only
+if(LAMMPS_RELEASE STREQUAL "4Feb2025")
+  sphthermal_python_test(bench.rheo_quick ${SPHTHERMAL_ROOT}/bench/rheo/run_bench.py
+    ARGS --quick --repeat 1 --lmp ${SPHTHERMAL_LMP} --plugin ${SPHTHERMAL_PLUGIN}
+         --out ${CMAKE_CURRENT_BINARY_DIR}/rheo_quick
+         --results ${CMAKE_CURRENT_BINARY_DIR}/rheo_quick
+    LABELS validation)
+endif()
