@@ -14,7 +14,8 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
-#include "pair.h"
+#include "pair_sph_cleary_heat.h"
+#include "sph_hub.h"
 #include "sph_checks.h"
 #include "sph_conduction.h"
 #include "update.h"
@@ -26,7 +27,7 @@ using namespace LAMMPS_NS;
 /* ---------------------------------------------------------------------- */
 
 ComputeSPHCorrectionAtom::ComputeSPHCorrectionAtom(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), nmax(0), state(nullptr), pair_state(nullptr), interface(0)
+    Compute(lmp, narg, arg), nmax(0), state(nullptr), pair(nullptr), interface(0)
 {
   if (narg == 4 && strcmp(arg[3], "interface") == 0)
     interface = 1;
@@ -48,18 +49,12 @@ ComputeSPHCorrectionAtom::~ComputeSPHCorrectionAtom()
 
 void ComputeSPHCorrectionAtom::init()
 {
-  Pair *pair = force->pair_match("^sph/cleary/heat", 0);
-  if (!pair) error->all(FLERR, "Compute sph/correction/atom requires pair style sph/cleary/heat");
+  pair = SPHHub(lmp).require_heat("Compute sph/correction/atom");
   SPHCheck::warn_empty(lmp, FLERR, fmt::format("Compute sph/correction/atom {}", id).c_str(),
                        igroup);
-  int dim;
-  const int *const correct = (int *) pair->extract("correction", dim);
-  const int *const mean = (int *) pair->extract("mean", dim);
-  if (interface ? (*mean != SPHC_INTERFACE) : !*correct)
+  if (interface ? !pair->interface_mean() : !pair->corrects())
     error->all(FLERR, "Compute sph/correction/atom: pair style sph/cleary/heat runs without '{}'",
                interface ? "mean interface" : "correction consistent or second");
-  pair_state =
-      (double **) pair->extract(interface ? "interface_distance" : "correction_state", dim);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -77,8 +72,9 @@ void ComputeSPHCorrectionAtom::compute_peratom()
   // evaluation of a run, which comes before any compute of the run
   const int *const mask = atom->mask;
   const double outside = interface ? -1.0 : 0.0;
-  for (int i = 0; i < atom->nlocal; i++)
-    state[i] = (mask[i] & groupbit) ? (*pair_state)[i] : outside;
+  const double *const pair_state =
+      interface ? pair->interface_distances() : pair->correction_states();
+  for (int i = 0; i < atom->nlocal; i++) state[i] = (mask[i] & groupbit) ? pair_state[i] : outside;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -32,7 +32,7 @@ class ComputeSPHCorrectionAtom : public Compute {
  protected:
   int nmax;
   double *state;
-  double **pair_state;    // the pair's per-atom array (extract "correction_state")
+  class PairSPHClearyHeat *pair;    // its per-atom states are shown
   int interface;          // 1: the pair's "interface_distance" instead
 };
 

@@ -18,8 +18,10 @@
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
-#include "pair.h"
+#include "pair_sph_cleary_heat.h"
+#include "sph_hub.h"
 #include "sph_checks.h"
+#include "sph_conduction.h"
 #include "sph_compat.h"
 #include "sph_gradient.h"
 #include "sph_kernels.h"
@@ -103,13 +105,12 @@ ComputeSPHHeatfluxAtom::~ComputeSPHHeatfluxAtom()
 void ComputeSPHHeatfluxAtom::init()
 {
   // kernel, cutoff and eta are those of the conduction pair style
-  Pair *pair = force->pair_match("^sph/cleary/heat", 0);
-  if (!pair) error->all(FLERR, "Compute sph/heatflux/atom requires pair style sph/cleary/heat");
+  const SPHKernelSettings given =
+      SPHHub(lmp).require_heat("Compute sph/heatflux/atom")->kernel_settings();
   SPHCheck::warn_empty(lmp, FLERR, fmt::format("Compute sph/heatflux/atom {}", id).c_str(), igroup);
-  int dim;
-  kernel_kind = *(int *) pair->extract("kernel_kind", dim);
-  cutoff = *(double *) pair->extract("cutoff", dim);
-  const double eta = *(double *) pair->extract("eta_factor", dim) * cutoff / sphk_support(kernel_kind);
+  kernel_kind = given.kind;
+  cutoff = given.cutoff;
+  const double eta = given.eta_factor * cutoff / sphk_support(kernel_kind);
   eta2 = eta * eta;
   materials = FixSPHMaterials::find(lmp, "Compute sph/heatflux/atom");
 
@@ -160,7 +161,7 @@ void ComputeSPHHeatfluxAtom::compute_peratom()
     const int i = list->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
     const double temp_i = esph[i] / cv[i];
-    const double k_i = sphm_law_eval(materials->conductivity(type[i]), temp_i);
+    const double k_i = materials->conductivity_at(type[i], temp_i, "Compute sph/heatflux/atom");
     const int *const jlist = list->firstneigh[i];
     const int jnum = list->numneigh[i];
     double g[3] = {0.0, 0.0, 0.0}, L[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
@@ -180,10 +181,9 @@ void ComputeSPHHeatfluxAtom::compute_peratom()
       for (int a = 0; a < 3; a++) grad_w[a] = del[a] * dwdr / r;
       sphg_add(g, L, del, grad_w, volume_j, temp_j - temp_i);
       if (has_normals) {
-        // Cleary eq 9: 2 m_b k_b T_ab (r_ab . n_a) (r_ab . grad_a W_ab) / (r_ab^2 + eta^2)
-        const double k_j = sphm_law_eval(materials->conductivity(type[j]), temp_j);
+        const double k_j = materials->conductivity_at(type[j], temp_j, "Compute sph/heatflux/atom");
         const double r_dot_n = del[0] * normal[0][i] + del[1] * normal[1][i] + del[2] * normal[2][i];
-        wall += 2.0 * mass_j * k_j * (temp_i - temp_j) * r_dot_n * r * dwdr / (rsq + eta2);
+        wall += sphc_cleary_wall_flux(mass_j, k_j, temp_i - temp_j, r_dot_n, r, dwdr, rsq, eta2);
       }
     }
 

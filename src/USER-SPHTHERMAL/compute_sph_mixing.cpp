@@ -25,7 +25,9 @@
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
-#include "pair.h"
+#include "pair_sph_cleary_heat.h"
+#include "pair_sph_harmonic_visc.h"
+#include "sph_hub.h"
 #include "sph_compat.h"
 #include "sph_kernels.h"
 #include "sph_mixing.h"
@@ -116,13 +118,13 @@ void ComputeSPHMixing::init()
   reference = dynamic_cast<FixSPHMixingReference *>(modify->fix[ifix]);
 
   // the kernel of the flow (or of conduction)
-  Pair *pair = force->pair_match("^sph/harmonic/visc", 0);
-  if (!pair) pair = force->pair_match("^sph/cleary/heat", 0);
+  SPHHub hub(lmp);
+  const PairSPHKernel *pair = hub.flow();
+  if (!pair) pair = hub.heat();
   if (!pair)
     error->all(FLERR, "Compute sph/mixing requires pair style sph/harmonic/visc or sph/cleary/heat");
-  int dim;
-  kernel_kind = *(int *) pair->extract("kernel_kind", dim);
-  cutoff = *(double *) pair->extract("cutoff", dim);
+  kernel_kind = pair->kernel_settings().kind;
+  cutoff = pair->kernel_settings().cutoff;
   if (stretch_cutoff > cutoff)
     error->all(FLERR, "Compute sph/mixing {}: ftle/cutoff {} exceeds the kernel's support {}", id,
                stretch_cutoff, cutoff);

@@ -16,6 +16,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix_sph_materials.h"
+#include "fix_sph_wall_dirichlet.h"
 #include "group.h"
 #include "memory.h"
 #include "modify.h"
@@ -23,6 +24,7 @@
 #include "sph_checks.h"
 #include "sph_compat.h"
 #include "sph_eos.h"
+#include "sph_hub.h"
 
 #include <cmath>
 #include <cstring>
@@ -96,7 +98,7 @@ int FixSPHBoussinesq::setmask()
 
 void FixSPHBoussinesq::init()
 {
-  if (SPHCompat::fixes_of_style(modify, "sph/boussinesq").size() > 1)
+  if (SPHHub(lmp).fixes<FixSPHBoussinesq>().size() > 1)
     error->all(FLERR, "Fix sph/boussinesq: only one may be defined (give each type its beta in "
                       "fix sph/materials instead)");
 
@@ -209,11 +211,9 @@ void FixSPHBoussinesq::check_compression()
 
   int dirichlet_bits = 0;
   double dt_wall = 0.0;
-  for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/dirichlet")) {
+  for (FixSPHWallDirichlet *wall : SPHHub(lmp).fixes<FixSPHWallDirichlet>()) {
     dirichlet_bits |= wall->groupbit;
-    int dim;
-    const auto *t_wall = (const double *) wall->extract("t_wall", dim);
-    if (t_wall) dt_wall = fmax(dt_wall, fabs(*t_wall - buoyancy.t0));
+    dt_wall = fmax(dt_wall, fabs(wall->wall_temperature() - buoyancy.t0));
   }
 
   const double *const *const x = atom->x;
@@ -312,14 +312,3 @@ double FixSPHBoussinesq::compute_vector(int n)
   return force_total[n];
 }
 
-/* ----------------------------------------------------------------------
-   buoyancy: read by the styles that need the body force of each atom
-   (SPHBodyForce::find_buoyancy)
-------------------------------------------------------------------------- */
-
-void *FixSPHBoussinesq::extract(const char *name, int &dim)
-{
-  dim = 0;
-  if (strcmp(name, "buoyancy") == 0) return (void *) &buoyancy;
-  return nullptr;
-}

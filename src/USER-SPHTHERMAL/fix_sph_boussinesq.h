@@ -28,7 +28,9 @@ class FixSPHBoussinesq : public Fix {
   void setup(int) override;
   void post_force(int) override;
   double compute_vector(int) override;
-  void *extract(const char *, int &) override;
+  // the buoyancy it adds: read by the styles that need the body force of
+  // each atom (SPHBodyForce::find_buoyancy)
+  const SPHBodyForce::Buoyancy &added_buoyancy() const { return buoyancy; }
 
  protected:
   double gravity_given[3];    // the 'gravity' keyword's vector

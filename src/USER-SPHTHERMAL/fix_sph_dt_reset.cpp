@@ -32,10 +32,11 @@
 #include "group.h"
 #include "integrate.h"
 #include "modify.h"
-#include "pair.h"
+#include "pair_sph_cleary_heat.h"
 #include "sph_body_force.h"
 #include "sph_checks.h"
 #include "sph_eos.h"
+#include "sph_hub.h"
 #include "sph_kernels.h"
 #include "sph_material_laws.h"
 #include "sph_timestep.h"
@@ -66,7 +67,7 @@ static constexpr double BIG = 1.0e300;
 
 FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), dtmin(0.0), dtmax(BIG), h_user(0.0), h(0.0), active(0), respa_flag(0),
-    warned(0), bound_warned(0), materials(nullptr), relax_rate(nullptr), relax_rate_wanted(nullptr),
+    warned(0), bound_warned(0), materials(nullptr), heat(nullptr),
     body_force(nullptr)
 {
   if (!atom->rho_flag || !atom->esph_flag || !atom->cv_flag)
@@ -167,12 +168,12 @@ int FixSPHDtReset::setmask()
 // the relaxation rates in the force computations before choose_dt() only
 void FixSPHDtReset::setup_pre_force(int /*vflag*/)
 {
-  if (relax_rate_wanted) *relax_rate_wanted = 1;
+  if (heat) heat->want_relax_rates(true);
 }
 
 void FixSPHDtReset::pre_force(int /*vflag*/)
 {
-  if (relax_rate_wanted) *relax_rate_wanted = (update->ntimestep % nevery == 0);
+  if (heat) heat->want_relax_rates(update->ntimestep % nevery == 0);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -184,12 +185,9 @@ void FixSPHDtReset::init()
                id, group->names[igroup]);
 
   // two fixes changing dt would overwrite each other's choice
-  for (int i = 0; i < modify->nfix; i++)
-    if (modify->fix[i] != this &&
-        (strcmp(modify->fix[i]->style, "sph/dt/reset") == 0 ||
-         strcmp(modify->fix[i]->style, "dt/reset") == 0))
-      error->all(FLERR, "Fix sph/dt/reset: fix {} (style {}) also resets the timestep",
-                 modify->fix[i]->id, modify->fix[i]->style);
+  if (Fix *other = SPHHub(lmp).timestep_resetter(this))
+    error->all(FLERR, "Fix sph/dt/reset: fix {} (style {}) also resets the timestep", other->id,
+               other->style);
 
   // setup() runs in the order of the fixes: a fix defined later that adds
   // forces after the pair (addforce, gravity, ...) has not done so yet when
@@ -202,7 +200,7 @@ void FixSPHDtReset::init()
       // the body force counts by itself (below); this package's fixes
       // acting then tally or hold energies, not forces
       if ((modify->fmask[i] & POST_FORCE) && !modify->fix[i]->extract("gvec", dim) &&
-          !utils::strmatch(modify->fix[i]->style, "^sph/") && comm->me == 0)
+          !SPHHub::ours(modify->fix[i]) && comm->me == 0)
         error->warning(FLERR,
                        "Fix sph/dt/reset: fix {} (style {}) is defined after it and acts after "
                        "the forces; if it changes forces, define fix sph/dt/reset after it so "
@@ -219,14 +217,7 @@ void FixSPHDtReset::init()
     materials = FixSPHMaterials::find(lmp, "Fix sph/dt/reset");
 
   // the thermal limit is the conduction pair's own relaxation rate
-  relax_rate = nullptr;
-  relax_rate_wanted = nullptr;
-  Pair *heat = force->pair_match("^sph/cleary/heat", 0);
-  if (coeff[THERMAL] > 0.0 && heat) {
-    int dim;
-    relax_rate_wanted = (int *) heat->extract("relax_rate_wanted", dim);
-    relax_rate = (double **) heat->extract("relax_rate", dim);
-  }
+  heat = (coeff[THERMAL] > 0.0) ? SPHHub(lmp).heat() : nullptr;
   bound_warned = 0;
 
   respa_flag = utils::strmatch(update->integrate_style, "^respa") ? 1 : 0;
@@ -276,7 +267,7 @@ void FixSPHDtReset::choose_dt()
   scan.h = h;
   scan.groupbit = groupbit;
   scan.materials = materials;
-  scan.relax_rate = relax_rate;
+  scan.relax_rate = heat ? heat->relax_rates() : nullptr;
   scan.body_force = (coeff[FORCE] > 0.0) ? body_force : nullptr;
   scan.who = "Fix sph/dt/reset";
   SPHTimestep::local_limits(lmp, scan, BIG, local, bad);
@@ -361,9 +352,10 @@ void FixSPHDtReset::bad_limit(int k)
       if (mu > 0.0 || !std::isfinite(mu))
         dt = SPHTimestep::viscous(coeff[k], h, atom->rho[i], mu, force->ftm2v);
       state = fmt::format("rho = {}, viscosity = {} at T = {}", atom->rho[i], mu, T);
-    } else if (k == THERMAL && relax_rate) {
-      dt = SPHTimestep::thermal(coeff[k], SPHTimestep::relaxation((*relax_rate)[i], force->ftm2v));
-      state = fmt::format("relaxation rate = {}, rho = {}, cv = {}", (*relax_rate)[i],
+    } else if (k == THERMAL && heat && heat->relax_rates()) {
+      const double rate = heat->relax_rates()[i];
+      dt = SPHTimestep::thermal(coeff[k], SPHTimestep::relaxation(rate, force->ftm2v));
+      state = fmt::format("relaxation rate = {}, rho = {}, cv = {}", rate,
                           atom->rho[i], atom->cv[i]);
     }
     if (!(dt > 0.0))

@@ -50,12 +50,11 @@ class FixSPHDtReset : public Fix {
   int warned;    // the fix-order warning was given
   int bound_warned;    // the warning that 'min' overrides a limit was given (per run)
   class FixSPHMaterials *materials;
-  // per-atom relaxation rate of pair sph/cleary/heat (the thermal limit),
-  // nullptr when the run has no conduction
-  double **relax_rate;
-  // the conduction pair's switch for those rates: on only in the force
-  // computations whose step chooses dt (their pair-loop terms cost ~5 %)
-  int *relax_rate_wanted;
+  // the conduction pair, whose per-atom relaxation rates set the thermal
+  // limit (nullptr without conduction or that limit); the rates are wanted
+  // only in the force computations whose step chooses dt (they cost in the
+  // pair loop)
+  class PairSPHClearyHeat *heat;
   const double *body_force;    // the run's body force (fix gravity), nullptr when none
 
   double parse_value(int, int, char **, bool);

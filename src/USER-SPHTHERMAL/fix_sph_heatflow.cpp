@@ -16,6 +16,7 @@
 #include "force.h"
 #include "group.h"
 #include "pair_sph_cleary_heat.h"
+#include "sph_hub.h"
 #include "sph_checks.h"
 #include "update.h"
 
@@ -87,8 +88,7 @@ void FixSPHHeatflow::init()
                "Fix sph/heatflow: groups {} and {} share atoms; the heat between them needs "
                "disjoint groups",
                group->names[igroup], from_name);
-  pair = (PairSPHClearyHeat *) force->pair_match("^sph/cleary/heat", 0);
-  if (!pair) error->all(FLERR, "Fix sph/heatflow requires pair style sph/cleary/heat");
+  pair = SPHHub(lmp).require_heat("Fix sph/heatflow");
   flow_index = pair->request_heat_flow(groupbit, from_groupbit);
   reset_dt();
 }

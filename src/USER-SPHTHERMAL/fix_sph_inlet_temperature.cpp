@@ -26,6 +26,7 @@
 ------------------------------------------------------------------------- */
 
 #include "fix_sph_inlet_temperature.h"
+#include "fix_sph_shift.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -38,6 +39,7 @@
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "pair_sph_cleary_heat.h"
+#include "sph_hub.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
 #include "sph_gradient.h"
@@ -129,8 +131,8 @@ int FixSPHInletTemperature::setmask()
 
 void FixSPHInletTemperature::init()
 {
-  pair = dynamic_cast<PairSPHClearyHeat *>(force->pair_match("^sph/cleary/heat", 0));
-  if (!pair) error->all(FLERR, "Fix sph/inlet/temperature requires pair style sph/cleary/heat");
+  SPHHub hub(lmp);
+  pair = hub.require_heat("Fix sph/inlet/temperature");
   const char xyz[] = "xyz";
   if (!domain->periodicity[axis])
     error->all(FLERR,
@@ -143,14 +145,13 @@ void FixSPHInletTemperature::init()
 
   // one plane for all of them: the first removes the pairs across it, each
   // gives its own group its inlet temperature
-  const auto inlets = SPHCompat::fixes_of_style(modify, style);
+  const auto inlets = hub.fixes<FixSPHInletTemperature>();
   cuts_plane = (inlets.front() == this);
-  for (Fix *other : inlets) {
+  for (FixSPHInletTemperature *other : inlets) {
     if (other == this) continue;
-    auto *inlet = dynamic_cast<FixSPHInletTemperature *>(other);
-    if (inlet->axis != axis)
+    if (other->axis != axis)
       error->all(FLERR, "Fix {} {}: its flow is along {}, that of fix {} along {}: one axis only",
-                 id, style, xyz[axis], other->id, xyz[inlet->axis]);
+                 id, style, xyz[axis], other->id, xyz[other->axis]);
     if (SPHCheck::groups_overlap(lmp, groupbit, other->groupbit))
       error->all(FLERR, "Fix {} {}: group {} shares atoms with group {} of fix {}", id, style,
                  group->names[igroup], group->names[other->igroup], other->id);
@@ -161,10 +162,8 @@ void FixSPHInletTemperature::init()
   // the inlet side's particles see all their neighbours, on both sides
   SPHCompat::request_full_list(neighbor, this, instance_me);
 
-  for (Fix *shift : SPHCompat::fixes_of_style(modify, "sph/shift")) {
-    int dim;
-    const int *correct = (const int *) shift->extract("correct", dim);
-    if (correct && *correct && comm->me == 0)
+  for (FixSPHShift *shift : hub.fixes<FixSPHShift>()) {
+    if (shift->corrects() && comm->me == 0)
       error->warning(FLERR,
                      "Fix {} {}: the temperature correction of fix {} sph/shift takes its "
                      "gradient across the inlet plane too",
@@ -497,18 +496,6 @@ void FixSPHInletTemperature::restart(char *buf)
   const double *state = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION);
   energy_reset = state[0];
   energy_plane = state[1];
-}
-
-/* ----------------------------------------------------------------------
-   axis: 0, 1, 2 for the flow along x, y, z (the styles that interpolate
-   near the plane keep to one side of it)
-------------------------------------------------------------------------- */
-
-void *FixSPHInletTemperature::extract(const char *name, int &dim)
-{
-  dim = 0;
-  if (strcmp(name, "axis") == 0) return (void *) &axis;
-  return nullptr;
 }
 
 /* ----------------------------------------------------------------------

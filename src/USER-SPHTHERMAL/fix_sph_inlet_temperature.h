@@ -40,7 +40,9 @@ class FixSPHInletTemperature : public Fix {
   double compute_vector(int) override;
   void write_restart(FILE *) override;
   void restart(char *) override;
-  void *extract(const char *, int &) override;
+  // 0, 1, 2 for the flow along x, y, z (the styles that interpolate near
+  // the plane keep to one side of it)
+  int flow_axis() const { return axis; }
 
   // the periodic image of the box that a coordinate along 'axis' lies in
   // (ghost images across the plane lie in the next ones): which side of the

@@ -17,6 +17,7 @@
 #include "potential_file_reader.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
+#include "sph_hub.h"
 #include "tokenizer.h"
 #include "update.h"
 
@@ -233,11 +234,11 @@ void *FixSPHMaterials::extract(const char *name, int &dim)
 
 FixSPHMaterials *FixSPHMaterials::find(LAMMPS *lmp, const char *who)
 {
-  const std::vector<Fix *> hubs = SPHCompat::fixes_of_style(lmp->modify, "sph/materials");
-  const int count = hubs.size();
+  const std::vector<FixSPHMaterials *> all = SPHHub(lmp).fixes<FixSPHMaterials>();
+  const int count = all.size();
   if (count == 0) lmp->error->all(FLERR, "{} requires fix sph/materials (the material properties)", who);
   if (count > 1) lmp->error->all(FLERR, "{}: only one fix sph/materials may be defined", who);
-  return (FixSPHMaterials *) hubs[0];
+  return all[0];
 }
 
 int FixSPHMaterials::constant(const std::vector<MaterialLaw> &laws)

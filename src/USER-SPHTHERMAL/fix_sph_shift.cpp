@@ -49,7 +49,9 @@
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "pair.h"
+#include "fix_sph_wall_adami.h"
 #include "pair_sph_harmonic_visc.h"
+#include "sph_hub.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
 #include "sph_gradient.h"
@@ -188,11 +190,9 @@ int FixSPHShift::setmask()
 void FixSPHShift::init()
 {
   // the kernel of the flow
-  flow = (PairSPHHarmonicVisc *) force->pair_match("^sph/harmonic/visc", 0);
-  if (!flow) error->all(FLERR, "Fix sph/shift requires pair style sph/harmonic/visc");
-  int dim;
-  kernel_kind = *(int *) flow->extract("kernel_kind", dim);
-  cutoff = *(double *) flow->extract("cutoff", dim);
+  flow = SPHHub(lmp).require_flow("Fix sph/shift");
+  kernel_kind = flow->kernel_settings().kind;
+  cutoff = flow->kernel_settings().cutoff;
   SPHCheck::atom_state(lmp, FLERR, cmd, 0, SPHCheck::RHO | (correct ? SPHCheck::CV : 0));
   check_group();
   warned_cap = 0;
@@ -222,8 +222,8 @@ void FixSPHShift::check_group()
   for (int k = 0; k < modify->nfix; k++) {
     Fix *other = modify->fix[k];
     if (other == this) continue;
-    const bool adami = strcmp(other->style, "sph/wall/adami") == 0;
-    const bool shift = strcmp(other->style, "sph/shift") == 0;
+    const bool adami = dynamic_cast<FixSPHWallAdami *>(other) != nullptr;
+    const bool shift = dynamic_cast<FixSPHShift *>(other) != nullptr;
     if (!adami && !shift) continue;
     if (!SPHCheck::groups_overlap(lmp, groupbit, other->groupbit)) continue;
     if (adami)
@@ -658,13 +658,3 @@ void FixSPHShift::restart(char *buf)
                    who, written, group->names[igroup], energy);
 }
 
-/* ----------------------------------------------------------------------
-   correct: 1 when the temperature follows the shift
-------------------------------------------------------------------------- */
-
-void *FixSPHShift::extract(const char *name, int &dim)
-{
-  dim = 0;
-  if (strcmp(name, "correct") == 0) return (void *) &correct;
-  return nullptr;
-}

@@ -40,7 +40,8 @@ class FixSPHShift : public Fix {
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
   void restart(char *) override;
-  void *extract(const char *, int &) override;
+  // whether the temperature follows the shift ('correct yes')
+  bool corrects() const { return correct != 0; }
 
  protected:
   enum { SKILLEN, DELTAPLUS };

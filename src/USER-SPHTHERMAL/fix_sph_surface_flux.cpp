@@ -13,8 +13,11 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_sph_wall_adiabatic.h"
+#include "fix_sph_wall_dirichlet.h"
 #include "force.h"
 #include "sph_checks.h"
+#include "sph_hub.h"
 #include "update.h"
 
 #include <cmath>
@@ -101,7 +104,8 @@ void FixSPHSurfaceFlux::reset_dt()
 
 void FixSPHSurfaceFlux::init()
 {
-  SPHCheck::group_of_kind(lmp, this, {"sph/wall/dirichlet", "sph/wall/adiabatic"}, true, true);
+  SPHCheck::group_of_kind(
+      lmp, this, SPHHub(lmp).fixes_of_any<FixSPHWallDirichlet, FixSPHWallAdiabatic>(), true, true);
   SPHCheck::atom_state(lmp, FLERR, "Fix sph/surface/flux", groupbit, SPHCheck::CV | SPHCheck::ESPH);
   reset_dt();
   area = pow(spacing, domain->dimension - 1);

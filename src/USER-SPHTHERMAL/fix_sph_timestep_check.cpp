@@ -14,10 +14,12 @@
 #include "fix_sph_materials.h"
 #include "force.h"
 #include "modify.h"
-#include "pair.h"
+#include "pair_sph_cleary_heat.h"
+#include "pair_sph_harmonic_visc.h"
 #include "sph_body_force.h"
 #include "sph_compat.h"
 #include "sph_eos.h"
+#include "sph_hub.h"
 #include "update.h"
 
 #include <cmath>
@@ -34,7 +36,7 @@ static constexpr double BIG = 1.0e300;
 /* ---------------------------------------------------------------------- */
 
 FixSPHTimestepCheck::FixSPHTimestepCheck(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), check_dt(0), relax_rate_wanted(nullptr), warned_sound(0)
+    Fix(lmp, narg, arg), check_dt(0), heat_asked(nullptr), warned_sound(0)
 {
   for (int k = 0; k < SPHTimestep::NLIMITS; k++) warned_dt[k] = 0.0;
 }
@@ -59,20 +61,14 @@ void FixSPHTimestepCheck::ensure(LAMMPS *lmp)
 
 void FixSPHTimestepCheck::init()
 {
-  relax_rate_wanted = nullptr;
-  check_dt = (update->whichflag == 1);
-  for (int i = 0; i < modify->nfix; i++)
-    if (strcmp(modify->fix[i]->style, "sph/dt/reset") == 0 ||
-        strcmp(modify->fix[i]->style, "dt/reset") == 0)
-      check_dt = 0;
+  heat_asked = nullptr;
+  SPHHub hub(lmp);
+  check_dt = (update->whichflag == 1) && !hub.timestep_resetter(this);
   if (!check_dt) return;
-  Pair *heat = force->pair_match("^sph/cleary/heat", 0);
-  const bool integrated = !SPHCompat::fixes_of_style(modify, "sph").empty() ||
-      !SPHCompat::fixes_of_style(modify, "sph/stationary").empty();
-  if (heat && integrated) {
-    int dim;
-    relax_rate_wanted = (int *) heat->extract("relax_rate_wanted", dim);
-    if (relax_rate_wanted) *relax_rate_wanted = 1;
+  PairSPHClearyHeat *heat = hub.heat();
+  if (heat && (hub.moved_by_fix_sph() || hub.held_by_fix_sph_stationary())) {
+    heat_asked = heat;
+    heat->want_relax_rates(true);
   }
 }
 
@@ -82,8 +78,8 @@ void FixSPHTimestepCheck::setup(int /*vflag*/)
 {
   if (update->whichflag != 1) return;
   if (check_dt) check_timestep();
-  if (relax_rate_wanted) *relax_rate_wanted = 0;
-  relax_rate_wanted = nullptr;
+  if (heat_asked) heat_asked->want_relax_rates(false);
+  heat_asked = nullptr;
   check_sound_speed();
 }
 
@@ -98,11 +94,10 @@ void FixSPHTimestepCheck::check_timestep()
   const double h = SPHTimestep::smoothing_length(lmp);
   if (h <= 0.0) return;
   int moving = 0, heated = 0;
-  for (Fix *fix : SPHCompat::fixes_of_style(modify, "sph")) moving |= fix->groupbit;
-  heated = moving;
-  for (Fix *fix : SPHCompat::fixes_of_style(modify, "sph/stationary")) heated |= fix->groupbit;
-  Pair *flow = force->pair_match("^sph/harmonic/visc", 0);
-  Pair *heat = force->pair_match("^sph/cleary/heat", 0);
+  SPHHub hub(lmp);
+  moving = hub.moved_by_fix_sph();
+  heated = moving | hub.held_by_fix_sph_stationary();
+  const PairSPHHarmonicVisc *flow = hub.flow();
 
   double local[SPHTimestep::NLIMITS], limit[SPHTimestep::NLIMITS];
   int bad[SPHTimestep::NLIMITS];
@@ -122,9 +117,8 @@ void FixSPHTimestepCheck::check_timestep()
     scan.body_force = SPHBodyForce::find(lmp, "Pair style sph/harmonic/visc");
     SPHTimestep::local_limits(lmp, scan, BIG, local, bad);
   }
-  int dim;
-  double **relax = heat ? (double **) heat->extract("relax_rate", dim) : nullptr;
-  if (relax && relax_rate_wanted && heated) {
+  const double *relax = heat_asked ? heat_asked->relax_rates() : nullptr;
+  if (relax && heated) {
     double thermal[SPHTimestep::NLIMITS];
     for (int k = 0; k < SPHTimestep::NLIMITS; k++) scan.coeff[k] = 0.0;
     scan.coeff[SPHTimestep::THERMAL] = COEFF_THERMAL;
@@ -180,8 +174,9 @@ void FixSPHTimestepCheck::check_timestep()
 
 void FixSPHTimestepCheck::check_sound_speed()
 {
-  if (warned_sound || !force->pair_match("^sph/harmonic/visc", 0)) return;
-  if (SPHCompat::fixes_of_style(modify, "sph/materials").size() != 1) return;
+  SPHHub hub(lmp);
+  if (warned_sound || !hub.flow()) return;
+  if (hub.fixes<FixSPHMaterials>().size() != 1) return;
   const FixSPHMaterials *materials = FixSPHMaterials::find(lmp, "Pair style sph/harmonic/visc");
   const double s = force->ftm2v;
   const double *const *const v = atom->v;

@@ -44,7 +44,9 @@ class FixSPHTimestepCheck : public Fix {
 
  protected:
   int check_dt;              // this run: compare the fixed timestep with the limits
-  int *relax_rate_wanted;    // pair sph/cleary/heat's switch of its relaxation rates
+  // the conduction pair while this fix wants its relaxation rates (from
+  // init to the end of setup), else nullptr
+  class PairSPHClearyHeat *heat_asked;
   // the timestep of the last warning of each limit (a warning is repeated
   // only for another timestep), and whether the speed of sound was reported
   double warned_dt[SPHTimestep::NLIMITS];

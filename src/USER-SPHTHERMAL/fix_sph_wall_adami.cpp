@@ -24,11 +24,12 @@
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
-#include "pair.h"
+#include "pair_sph_harmonic_visc.h"
 #include "sph_body_force.h"
 #include "sph_buoyancy.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
+#include "sph_hub.h"
 #include "sph_kernels.h"
 #include "update.h"
 
@@ -109,14 +110,13 @@ int FixSPHWallAdami::setmask()
 void FixSPHWallAdami::init()
 {
   // the kernel and its support are those of the flow pair style
-  Pair *pair = force->pair_match("^sph/harmonic/visc", 0);
-  if (!pair) error->all(FLERR, "Fix sph/wall/adami requires pair style sph/harmonic/visc");
-  int dim;
-  kernel_kind = *(int *) pair->extract("kernel_kind", dim);
-  cutoff = *(double *) pair->extract("cutoff", dim);
+  SPHHub hub(lmp);
+  const SPHKernelSettings given = hub.require_flow("Fix sph/wall/adami")->kernel_settings();
+  kernel_kind = given.kind;
+  cutoff = given.cutoff;
   materials = FixSPHMaterials::find(lmp, "Fix sph/wall/adami");
   // ghost velocities: turned on and checked by the pair, which this fix requires
-  SPHCheck::group_of_kind(lmp, this, {"sph/wall/adami"}, false, false);
+  SPHCheck::group_of_kind(lmp, this, hub.fixes_of_any<FixSPHWallAdami>(), false, false);
   // a wall type without an equation of state is a solid of its own density
   int local_solid = 0;
   for (int t = 1; t <= atom->ntypes; t++) solid_type[t] = materials->eos(t) ? 0 : 1;
@@ -142,9 +142,7 @@ void FixSPHWallAdami::init()
   // each fluid particle's own buoyancy, which varies with its temperature
   buoyancy = SPHBodyForce::find_buoyancy(lmp);
 
-  wall_groupbit = 0;
-  for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/adami"))
-    wall_groupbit |= wall->groupbit;
+  wall_groupbit = hub.groupbits<FixSPHWallAdami>();
   fluid_near_valid = false;
 
   // moving walls: a fix that moves atoms of this group (auto), or the keyword
@@ -153,8 +151,7 @@ void FixSPHWallAdami::init()
     int local = 0, any = 0;
     for (int ifix = 0; ifix < modify->nfix; ifix++) {
       Fix *other = modify->fix[ifix];
-      if (!utils::strmatch(other->style, "^rigid") && !utils::strmatch(other->style, "^move"))
-        continue;
+      if (!hub.moves_bodies(other)) continue;
       for (int i = 0; i < atom->nlocal; i++)
         if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit)) local = 1;
     }

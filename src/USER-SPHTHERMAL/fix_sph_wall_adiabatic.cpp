@@ -23,10 +23,14 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_sph_surface_flux.h"
+#include "fix_sph_wall_dirichlet.h"
+#include "fix_sph_wall_isothermal.h"
 #include "force.h"
-#include "pair.h"
+#include "pair_sph_cleary_heat.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
+#include "sph_hub.h"
 #include "sph_interpolation.h"
 #include "sph_mirror.h"
 
@@ -100,14 +104,13 @@ void FixSPHWallAdiabatic::pre_neighbor()
 void FixSPHWallAdiabatic::init()
 {
   // the kernel and its support are those of the conduction pair style
-  Pair *pair = force->pair_match("^sph/cleary/heat", 0);
-  if (!pair) error->all(FLERR, "Fix sph/wall/adiabatic requires pair style sph/cleary/heat");
-  int dim;
-  const int kernel_kind = *(int *) pair->extract("kernel_kind", dim);
-  const double cutoff = *(double *) pair->extract("cutoff", dim);
+  const SPHKernelSettings given =
+      SPHHub(lmp).require_heat("Fix sph/wall/adiabatic")->kernel_settings();
+  const int kernel_kind = given.kind;
+  const double cutoff = given.cutoff;
   SPHCheck::group_of_kind(lmp, this,
-                          {"sph/wall/isothermal", "sph/wall/dirichlet", "sph/wall/adiabatic",
-                           "sph/surface/flux"},
+                          SPHHub(lmp).fixes_of_any<FixSPHWallIsothermal, FixSPHWallDirichlet,
+                                                   FixSPHWallAdiabatic, FixSPHSurfaceFlux>(),
                           false, false);
   mirror->init(groupbit, kernel_kind, cutoff, id);
 }

@@ -21,13 +21,17 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_sph_surface_flux.h"
+#include "fix_sph_wall_adiabatic.h"
+#include "fix_sph_wall_isothermal.h"
 #include "force.h"
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
-#include "pair.h"
+#include "pair_sph_cleary_heat.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
+#include "sph_hub.h"
 #include "sph_interpolation.h"
 #include "sph_kernels.h"
 #include "sph_mirror.h"
@@ -94,22 +98,19 @@ void FixSPHWallDirichlet::pre_neighbor()
 void FixSPHWallDirichlet::init()
 {
   // the kernel and its support are those of the conduction pair style
-  Pair *pair = force->pair_match("^sph/cleary/heat", 0);
-  if (!pair) error->all(FLERR, "Fix sph/wall/dirichlet requires pair style sph/cleary/heat");
-  int dim;
-  kernel_kind = *(int *) pair->extract("kernel_kind", dim);
-  cutoff = *(double *) pair->extract("cutoff", dim);
+  SPHHub hub(lmp);
+  const SPHKernelSettings given = hub.require_heat("Fix sph/wall/dirichlet")->kernel_settings();
+  kernel_kind = given.kind;
+  cutoff = given.cutoff;
   SPHCheck::group_of_kind(lmp, this,
-                          {"sph/wall/isothermal", "sph/wall/dirichlet", "sph/wall/adiabatic",
-                           "sph/surface/flux"},
+                          SPHHub(lmp).fixes_of_any<FixSPHWallIsothermal, FixSPHWallDirichlet,
+                                                   FixSPHWallAdiabatic, FixSPHSurfaceFlux>(),
                           false, false);
   // (the cv of its group: the pair, required above, has checked every atom's
   // at its init, which comes before the fixes')
   if (mirror) mirror->init(groupbit, kernel_kind, cutoff, id);
 
-  dummy_groupbit = 0;
-  for (Fix *wall : SPHCompat::fixes_of_style(modify, "sph/wall/dirichlet"))
-    dummy_groupbit |= wall->groupbit;
+  dummy_groupbit = hub.groupbits<FixSPHWallDirichlet>();
 
   if (!mirror) SPHCompat::request_full_list(neighbor, this, instance_me);
 }
@@ -218,13 +219,3 @@ void FixSPHWallDirichlet::unpack_forward_comm(int n, int first, double *buf)
   for (int k = 0; k < n; k++) atom->esph[first + k] = buf[k];
 }
 
-/* ----------------------------------------------------------------------
-   t_wall: pair sph/cleary/heat evaluates the dummies' conductivity there
-------------------------------------------------------------------------- */
-
-void *FixSPHWallDirichlet::extract(const char *name, int &dim)
-{
-  dim = 0;
-  if (strcmp(name, "t_wall") == 0) return (void *) &t_wall;
-  return nullptr;
-}

@@ -33,8 +33,9 @@ class FixSPHWallDirichlet : public FixSPHWallTally {
   void post_force(int) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
-  void *extract(const char *, int &) override;
 
+  // T_wall (pair sph/cleary/heat evaluates the dummies' conductivity there)
+  double wall_temperature() const { return t_wall; }
   // with a surface: the temperature gradient along the surface normal
   // (into the medium) on the surface next to owned wall atom i, between
   // T_wall there and T at i's ghost point at 'depth' from it, as found in

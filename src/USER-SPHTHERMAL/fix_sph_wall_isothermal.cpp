@@ -11,7 +11,10 @@
 
 #include "atom.h"
 #include "error.h"
+#include "fix_sph_wall_adiabatic.h"
+#include "fix_sph_wall_dirichlet.h"
 #include "sph_checks.h"
+#include "sph_hub.h"
 
 #include <cstring>
 
@@ -56,7 +59,10 @@ int FixSPHWallIsothermal::setmask()
 
 void FixSPHWallIsothermal::init()
 {
-  SPHCheck::group_of_kind(lmp, this, {"sph/wall/isothermal", "sph/wall/dirichlet", "sph/wall/adiabatic"}, false, true);
+  SPHCheck::group_of_kind(
+      lmp, this,
+      SPHHub(lmp).fixes_of_any<FixSPHWallIsothermal, FixSPHWallDirichlet, FixSPHWallAdiabatic>(),
+      false, true);
   SPHCheck::atom_state(lmp, FLERR, "Fix sph/wall/isothermal", groupbit, SPHCheck::CV);
   // the wall is at its temperature before the first force evaluation
   const double *const cv = atom->cv;

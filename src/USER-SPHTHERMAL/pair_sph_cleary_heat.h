@@ -13,6 +13,7 @@ PairStyle(sph/cleary/heat,PairSPHClearyHeat);
 #define LMP_PAIR_SPH_CLEARY_HEAT_H
 
 #include "pair_sph_kernel.h"
+#include "sph_conduction.h"
 #include "sph_second_moment.h"
 
 #include <string>
@@ -32,7 +33,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   double memory_usage() override;
-  void *extract(const char *, int &) override;
+  bool conducts() const override { return true; }
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
   int pack_reverse_comm(int, int, double *) override;
@@ -72,6 +73,22 @@ class PairSPHClearyHeat : public PairSPHKernel {
   };
   FlowLoopTerm begin_flow_loop_term();
   void end_flow_loop_term();
+
+  // each atom's relaxation rate (owned atoms, after compute()), made from
+  // the next compute() on while wanted (the timestep's thermal limit);
+  // nullptr before
+  void want_relax_rates(bool wanted) { relax_wanted = wanted ? 1 : 0; }
+  const double *relax_rates() const { return relax_rate; }
+  // 'correction consistent' or 'second' on, and per atom (from init on,
+  // filled by compute()): 1 where it corrects the atom's pair terms, 0 where
+  // the atom keeps the plain term (incomplete support)
+  bool corrects() const { return correct != 0; }
+  const double *correction_states() const { return corr_state; }
+  // 'mean interface', and per atom (from init on, filled by compute()) the
+  // distance from the interface, -1 where no atom of another material is
+  // within the support
+  bool interface_mean() const { return mean == SPHC_INTERFACE; }
+  const double *interface_distances() const { return iface_distance; }
 
  protected:
   int mean;                   // SPHC_HARMONIC, SPHC_ARITHMETIC or SPHC_INTERFACE
@@ -210,6 +227,9 @@ class PairSPHClearyHeat : public PairSPHKernel {
   void eval_pairs(int ifrom, int ito, double *desph, double *relax);
   void end_compute();
   void zero_relax_rate();
+  // the support's pairs, factors and distances for this step's positions
+  // (pair_sph_cleary_heat_support.cpp)
+  void refresh_support();
   template <int KERNEL> void update_pairs();
   template <int KERNEL> void eval_kernel(int ifrom, int ito, double *desph, double *relax);
   template <int KERNEL, int MEAN>

@@ -31,7 +31,7 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   double memory_usage() override;
-  void *extract(const char *, int &) override;
+  bool conducts() const override { return false; }
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
   int pack_reverse_comm(int, int, double *) override;
@@ -129,6 +129,9 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
                           double delz, void *thread);
 
   void update_atom_state();
+  // the inverse moments for this step's positions
+  // (pair_sph_harmonic_visc_state.cpp)
+  void refresh_gradient_correction();
   template <int KERNEL> void update_gradient_correction();
   double hold_mean_pressure();
   template <int KERNEL> void eval_kernel(int ifrom, int ito, const Rates &rates);

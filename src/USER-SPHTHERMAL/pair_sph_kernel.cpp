@@ -15,6 +15,7 @@
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
+#include "pair_sph_harmonic_visc.h"
 #include "sph_checks.h"
 #include "update.h"
 
@@ -84,10 +85,13 @@ double PairSPHKernel::init_kernel()
                style, cut_global, extent);
 
   // in hybrid/overlay: no type pair twice in this style (its heat or force
-  // would count twice); the flow pair with the heat pair's kernel
-  for (int n = 2;; n++) {
-    PairSPHKernel *other = (PairSPHKernel *) force->pair_match(style, 1, n);
-    if (!other || other == force->pair_match(style, 1, n - 1)) break;
+  // would count twice); one instance only; the flow pair with the heat
+  // pair's kernel
+  const std::vector<PairSPHKernel *> pairs = SPHHub(lmp).pairs();
+  int instances = 0;
+  for (PairSPHKernel *other : pairs) {
+    if (!same_family(other)) continue;
+    instances++;
     if (other == this) continue;
     for (int i = 1; i <= atom->ntypes; i++)
       for (int j = i; j <= atom->ntypes; j++)
@@ -97,19 +101,14 @@ double PairSPHKernel::init_kernel()
                      "would be counted twice",
                      style, force->pair_style, i, j);
   }
-  // the fixes and computes that read this pair style find it by its name
-  // (Force::pair_match), which fails for two instances: one takes all pairs
-  const char *family = (strncmp(style, "sph/cleary/heat", 15) == 0) ? "sph/cleary/heat"
-                                                                    : "sph/harmonic/visc";
-  if (force->pair_match(std::string("^") + family, 0) != this)
+  if (instances > 1)
     error->all(FLERR,
                "Pair style {} appears more than once in pair_style {}: give all its type pairs to "
                "one instance (the styles that read its kernel, conductivity or forces find only "
                "one)",
                style, force->pair_style);
-  // (the /omp styles too, named as such in the hybrid)
-  PairSPHKernel *flow = (PairSPHKernel *) force->pair_match("^sph/harmonic/visc", 0);
-  if (strcmp(style, "sph/cleary/heat") == 0 && flow && !same_kernel(flow))
+  const PairSPHHarmonicVisc *flow = SPHHub(lmp).flow();
+  if (conducts() && flow && !same_kernel(flow))
     error->warning(FLERR,
                    "Pair styles sph/cleary/heat ({} kernel, cutoff {}) and sph/harmonic/visc ({} "
                    "kernel, cutoff {}) differ: the flow and the heat see different neighbourhoods",
@@ -164,19 +163,6 @@ void PairSPHKernel::read_restart(FILE *fp)
       if (comm->me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
     }
-}
-
-/* ----------------------------------------------------------------------
-   the kernel settings, for styles that evaluate the same kernel
-------------------------------------------------------------------------- */
-
-void *PairSPHKernel::extract(const char *name, int &dim)
-{
-  dim = 0;
-  if (strcmp(name, "kernel_kind") == 0) return (void *) &kernel_kind;
-  if (strcmp(name, "cutoff") == 0) return (void *) &cut_global;
-  if (strcmp(name, "eta_factor") == 0) return (void *) &eta_factor;
-  return nullptr;
 }
 
 /* ----------------------------------------------------------------------

@@ -7,6 +7,7 @@
 #define LMP_PAIR_SPH_KERNEL_H
 
 #include "pair.h"
+#include "sph_hub.h"
 #include "sph_kernels.h"
 
 #include <string>
@@ -17,7 +18,7 @@ namespace LAMMPS_NS {
 // and its support radius from 'pair_style <style> <kernel> <cutoff> ...',
 // 'pair_coeff * *' without coefficients (the materials come from fix
 // sph/materials), restart of the type pairs, and the kernel settings that
-// fixes and computes read through extract().
+// fixes and computes read (found through SPHHub).
 class PairSPHKernel : public Pair {
  public:
   PairSPHKernel(class LAMMPS *, const char *style, const char *from_materials);
@@ -25,7 +26,11 @@ class PairSPHKernel : public Pair {
   void coeff(int, char **) override;
   void write_restart(FILE *) override;
   void read_restart(FILE *) override;
-  void *extract(const char *, int &) override;
+  // the kernel as given, for the styles that evaluate the same kernel
+  SPHKernelSettings kernel_settings() const { return {kernel_kind, cut_global, eta_factor}; }
+  // the conduction pair (sph/cleary/heat and its /omp) or the flow pair
+  virtual bool conducts() const = 0;
+  bool same_family(const PairSPHKernel *other) const { return other->conducts() == conducts(); }
   // the same kernel on the same support (two styles can share a pair loop)
   int same_kernel(const PairSPHKernel *other) const
   {

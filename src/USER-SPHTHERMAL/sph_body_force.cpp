@@ -11,8 +11,10 @@
 #include "error.h"
 #include "fix.h"
 #include "fix_gravity.h"
+#include "fix_sph_boussinesq.h"
 #include "lammps.h"
 #include "modify.h"
+#include "sph_hub.h"
 
 #include <cmath>
 
@@ -72,11 +74,7 @@ void SPHBodyForce::check_finite(LAMMPS *lmp, const char *file, int line, const c
 
 const SPHBodyForce::Buoyancy *SPHBodyForce::find_buoyancy(LAMMPS *lmp)
 {
-  for (int i = 0; i < lmp->modify->nfix; i++) {
-    int dim = 0;
-    const auto *buoyancy = (const Buoyancy *) lmp->modify->fix[i]->extract("buoyancy", dim);
-    if (buoyancy) return buoyancy;
-  }
+  for (FixSPHBoussinesq *fix : SPHHub(lmp).fixes<FixSPHBoussinesq>()) return &fix->added_buoyancy();
   return nullptr;
 }
 

@@ -13,8 +13,11 @@
 #include "fix.h"
 #include "group.h"
 #include "modify.h"
+#include "sph_hub.h"
 #include "update.h"
 #include "utils.h"
+
+#include <algorithm>
 
 #include <cmath>
 #include <cstring>
@@ -295,7 +298,7 @@ std::string SPHCheck::unpack_name(const double *state, int &at)
 
 /* ---------------------------------------------------------------------- */
 
-void SPHCheck::group_of_kind(LAMMPS *lmp, Fix *fix, std::initializer_list<const char *> exclusive,
+void SPHCheck::group_of_kind(LAMMPS *lmp, Fix *fix, const std::vector<Fix *> &exclusive,
                              bool every_ok, bool moving_ok)
 {
   Error *error = lmp->error;
@@ -313,15 +316,14 @@ void SPHCheck::group_of_kind(LAMMPS *lmp, Fix *fix, std::initializer_list<const 
   for (int i = 0; i < modify->nfix; i++) {
     Fix *other = modify->fix[i];
     if (other == fix) continue;
-    bool clash = false;
-    for (const char *style : exclusive) clash = clash || strcmp(other->style, style) == 0;
+    const bool clash = std::find(exclusive.begin(), exclusive.end(), other) != exclusive.end();
     if (clash && groups_overlap(lmp, fix->groupbit, other->groupbit))
       error->all(FLERR,
                  "Fix {} (style {}) and fix {} (style {}) share atoms of groups {} and {}: a "
                  "particle can be one of them only",
                  fix->id, fix->style, other->id, other->style, group,
                  lmp->group->names[other->igroup]);
-    if (strcmp(other->style, "sph") == 0 && groups_overlap(lmp, fix->groupbit, other->groupbit)) {
+    if (SPHHub(lmp).fix_sph_moves(other) && groups_overlap(lmp, fix->groupbit, other->groupbit)) {
       if (!moving_ok)
         error->all(FLERR,
                    "Fix {} (style {}): atoms of group {} are also moved by fix {} (style sph); "

@@ -62,8 +62,8 @@ namespace SPHCheck {
   // atom (unless every_ok), or shares atoms with a fix of one of the styles
   // 'exclusive' (a particle can be one kind of wall only); integrated by
   // fix sph (moving with the flow) an error, or a warning when moving_ok
-  void group_of_kind(LAMMPS *lmp, Fix *fix, std::initializer_list<const char *> exclusive,
-                     bool every_ok, bool moving_ok);
+  void group_of_kind(LAMMPS *lmp, Fix *fix, const std::vector<Fix *> &exclusive, bool every_ok,
+                     bool moving_ok);
 
   // 1 when some atom is in both groups (collective)
   int groups_overlap(LAMMPS *lmp, int groupbit1, int groupbit2);

@@ -159,16 +159,6 @@ namespace SPHCompat {
 #endif
   }
 
-  // ---------------------------------------------------- fix look-up
-  // every fix whose style is exactly 'style', in the order they were defined
-  inline std::vector<Fix *> fixes_of_style(Modify *modify, const char *style)
-  {
-    std::vector<Fix *> found;
-    for (int i = 0; i < modify->nfix; i++)
-      if (strcmp(modify->fix[i]->style, style) == 0) found.push_back(modify->fix[i]);
-    return found;
-  }
-
   // -------------------------------------------------------- file paths
   inline std::string path_basename(const std::string &path)
   {

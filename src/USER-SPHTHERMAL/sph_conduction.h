@@ -59,6 +59,19 @@ static inline double sphc_conductance(int mean, double k_a, double k_b)
                                    : sphc_harmonic_conductance(k_a, k_b);
 }
 
+/* the conductance of a pair a b, the one choice that every evaluation of
+   the term makes: across an interface (crosses, with SPHC_INTERFACE) the
+   series conductance from the distances d_a, d_b; otherwise the mean of
+   the per-atom conductivities when they vary with T (varying), or the
+   per-type-pair value 'tabulated' (the mean of constant conductivities,
+   made once). With compile-time mean and varying the choice folds. */
+static inline double sphc_pair_conductance(int mean, int varying, int crosses, double k_a,
+                                           double k_b, double tabulated, double d_a, double d_b)
+{
+  if (mean == SPHC_INTERFACE && crosses) return sphc_interface_conductance(k_a, k_b, d_a, d_b);
+  return varying ? sphc_conductance(mean, k_a, k_b) : tabulated;
+}
+
 /* Cleary 1998, eq 6:
      F_ab = conductance / (rho_a rho_b) * T_ab * r dW/dr / (r^2 + eta^2)
    with a conductance above, T_ab = T_a - T_b, r dW/dr = r_ab . grad_a W_ab,
@@ -82,7 +95,19 @@ static inline double sphc_cleary_pair_inv(double conductance, double T_ab, doubl
 static inline double sphc_cleary_pair(double conductance, double T_ab, double rho_a, double rho_b,
                                       double r, double dwdr, double eta2)
 {
-  return conductance * T_ab * r * dwdr / sphc_cleary_denominator(rho_a, rho_b, r * r, eta2);
+  return sphc_cleary_pair_inv(conductance, T_ab, r * dwdr,
+                              1.0 / sphc_cleary_denominator(rho_a, rho_b, r * r, eta2));
+}
+
+/* Cleary 1998, eq 9: the heat flux into wall particle a from its neighbour
+   b along a's outward normal n_a,
+     2 m_b k_b T_ab (r_ab . n_a) (r_ab . grad_a W_ab) / (r_ab^2 + eta^2)
+   with r_ab . grad_a W_ab = r dW/dr; negative for heat flowing into the
+   wall as printed (the caller reports the inflow) */
+static inline double sphc_cleary_wall_flux(double mass_b, double k_b, double T_ab, double r_dot_n,
+                                           double r, double dwdr, double rsq, double eta2)
+{
+  return 2.0 * mass_b * k_b * T_ab * r_dot_n * r * dwdr / (rsq + eta2);
 }
 
 #endif

@@ -13,11 +13,15 @@
 #include "error.h"
 #include "fix.h"
 #include "fix_sph_inlet_temperature.h"
+#include "fix_sph_wall_adiabatic.h"
+#include "fix_sph_wall_dirichlet.h"
+#include "fix_sph_wall_isothermal.h"
 #include "modify.h"
 #include "neighbor.h"
 #include "region.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
+#include "sph_hub.h"
 #include "sph_interpolation.h"
 #include "sph_kernels.h"
 #include "update.h"
@@ -26,10 +30,6 @@
 #include <cstring>
 
 using namespace LAMMPS_NS;
-
-// the thermal wall styles: their particles are not part of the medium
-static const char *const thermal_walls[] = {"sph/wall/adiabatic", "sph/wall/dirichlet",
-                                            "sph/wall/isothermal"};
 
 /* ---------------------------------------------------------------------- */
 
@@ -75,18 +75,15 @@ void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
   // sph/cleary/heat, which the mirror walls require, has checked every
   // atom's rho, cv and esph at its init, which comes before the fixes'
 
+  SPHHub hub(lmp);
   inlet_axis = -1;
-  for (Fix *inlet : SPHCompat::fixes_of_style(modify, "sph/inlet/temperature")) {
-    int dim;
-    inlet_axis = *(const int *) inlet->extract("axis", dim);
-  }
+  for (FixSPHInletTemperature *inlet : hub.fixes<FixSPHInletTemperature>())
+    inlet_axis = inlet->flow_axis();
 
-  medium_exclude = held_walls = 0;
-  for (const char *style : thermal_walls)
-    for (Fix *wall : SPHCompat::fixes_of_style(modify, style)) {
-      medium_exclude |= wall->groupbit;
-      if (strcmp(style, "sph/wall/adiabatic") != 0) held_walls |= wall->groupbit;
-    }
+  // the thermal walls' particles are not part of the medium; those that
+  // hold a temperature are not the medium's either way
+  held_walls = hub.groupbits<FixSPHWallDirichlet>() | hub.groupbits<FixSPHWallIsothermal>();
+  medium_exclude = held_walls | hub.groupbits<FixSPHWallAdiabatic>();
 
   // every wall atom lies outside the region; the farthest one within the
   // kernel's reach sets how far the ghost points lie from their wall atoms

@@ -10,7 +10,8 @@
 #include "atom.h"
 #include "fix_sph_materials.h"
 #include "force.h"
-#include "pair.h"
+#include "pair_sph_kernel.h"
+#include "sph_hub.h"
 #include "sph_eos.h"
 #include "sph_kernels.h"
 
@@ -44,7 +45,7 @@ void SPHTimestep::local_limits(LAMMPS *lmp, const Scan &scan, double none, doubl
   const double s = lmp->force->ftm2v;
   const double h = scan.h;
   const double *const coeff = scan.coeff;
-  const double *const lambda = scan.relax_rate ? *scan.relax_rate : nullptr;
+  const double *const lambda = scan.relax_rate;
 
   for (int k = 0; k < NLIMITS; k++) local[k] = none, bad[k] = 0;
   // a limit of 0 or not a number (zero rho, overflow, ...) is bad
@@ -104,18 +105,12 @@ void SPHTimestep::local_limits(LAMMPS *lmp, const Scan &scan, double none, doubl
 
 double SPHTimestep::smoothing_length(LAMMPS *lmp)
 {
-  // the package's pair styles that know their kernel (extract "kernel_kind", "cutoff")
-  static const char *const sph_pairs[] = {"sph/harmonic/visc", "sph/cleary/heat"};
+  // the package's pair styles (each knows its kernel)
   double hmin = 0.0;
-  for (const char *style : sph_pairs) {
-    // also the /omp styles
-    Pair *pair = lmp->force->pair_match(std::string("^") + style, 0);
-    if (!pair) continue;
-    int dim;
-    const int *kind = (const int *) pair->extract("kernel_kind", dim);
-    const double *cut = (const double *) pair->extract("cutoff", dim);
-    if (!kind || !cut || sphk_support(*kind) <= 0.0) continue;
-    const double hpair = *cut / sphk_support(*kind);
+  for (const PairSPHKernel *pair : SPHHub(lmp).pairs()) {
+    const SPHKernelSettings given = pair->kernel_settings();
+    if (sphk_support(given.kind) <= 0.0) continue;
+    const double hpair = given.cutoff / sphk_support(given.kind);
     if (hmin == 0.0 || hpair < hmin) hmin = hpair;
   }
   return hmin;

@@ -73,7 +73,7 @@ namespace SPHTimestep {
     double h;                      // smoothing length
     int groupbit;                  // the atoms whose limits count
     FixSPHMaterials *materials;    // eos and viscosity (acoustic, viscous limits)
-    double *const *relax_rate;     // pair sph/cleary/heat's lambda_i (thermal), or nullptr
+    const double *relax_rate;      // pair sph/cleary/heat's lambda_i (thermal), or nullptr
     const double *body_force;      // fix gravity's acceleration, or nullptr
     const char *who;               // for the messages of the viscosity laws
   };

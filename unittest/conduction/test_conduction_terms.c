@@ -4,6 +4,7 @@
 #include "sph_conduction.h"
 #include "sph_kernels.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -158,10 +159,52 @@ static void check_interface(void)
          sphc_harmonic_conductance(1.0, 3.0));
 }
 
+/* the one choice of conductance (sphc_pair_conductance) and Cleary's
+   eq 9 (sphc_cleary_wall_flux) */
+static void check_choice(void)
+{
+  const double ka = 2.0, kb = 6.0, table = 7.5, da = 0.3, db = 0.7;
+  /* constant conductivities: the tabulated value, whatever the mean */
+  expect(sphc_pair_conductance(SPHC_HARMONIC, 0, 0, ka, kb, table, da, db) == table,
+         "constant k: the table's value", sphc_pair_conductance(SPHC_HARMONIC, 0, 0, ka, kb, table, da, db), table);
+  /* varying: the mean of the two, harmonic or arithmetic */
+  expect(sphc_pair_conductance(SPHC_HARMONIC, 1, 0, ka, kb, table, da, db) == 6.0,
+         "varying k, harmonic: 2 ka kb / (ka + kb)", sphc_pair_conductance(SPHC_HARMONIC, 1, 0, ka, kb, table, da, db), 6.0);
+  expect(sphc_pair_conductance(SPHC_ARITHMETIC, 1, 0, ka, kb, table, da, db) == sphc_arithmetic_conductance(ka, kb),
+         "varying k, arithmetic", sphc_pair_conductance(SPHC_ARITHMETIC, 1, 0, ka, kb, table, da, db),
+         sphc_arithmetic_conductance(ka, kb));
+  /* across an interface: the series conductance, constant or varying; not
+     across: as without the interface */
+  for (int varying = 0; varying <= 1; varying++) {
+    const double got = sphc_pair_conductance(SPHC_INTERFACE, varying, 1, ka, kb, table, da, db);
+    expect(got == sphc_interface_conductance(ka, kb, da, db), "across an interface: series", got,
+           sphc_interface_conductance(ka, kb, da, db));
+  }
+  expect(sphc_pair_conductance(SPHC_INTERFACE, 0, 0, ka, kb, table, da, db) == table,
+         "interface mean, same material, constant k: the table's value",
+         sphc_pair_conductance(SPHC_INTERFACE, 0, 0, ka, kb, table, da, db), table);
+  /* the interface pair ignores the flag 'crosses' for the other means */
+  expect(sphc_pair_conductance(SPHC_HARMONIC, 0, 1, ka, kb, table, da, db) == table,
+         "crosses without mean interface: the table's value",
+         sphc_pair_conductance(SPHC_HARMONIC, 0, 1, ka, kb, table, da, db), table);
+
+  /* eq 9: 2 m_b k_b T_ab (r . n) r dW/dr / (r^2 + eta^2), odd in T_ab and
+     in the normal, 0 for a neighbour in the wall's plane */
+  const double m = 0.25, k = 3.0, T = 2.0, rn = 0.01, r = 0.02, dwdr = -50.0, eta2 = 1e-6;
+  const double want = 2.0 * m * k * T * rn * r * dwdr / (r * r + eta2);
+  const double flux = sphc_cleary_wall_flux(m, k, T, rn, r, dwdr, r * r, eta2);
+  expect(fabs(flux - want) <= 1e-15 * fabs(want), "eq 9 as printed", flux, want);
+  expect(sphc_cleary_wall_flux(m, k, -T, rn, r, dwdr, r * r, eta2) == -flux, "eq 9 odd in T_ab",
+         sphc_cleary_wall_flux(m, k, -T, rn, r, dwdr, r * r, eta2), -flux);
+  expect(sphc_cleary_wall_flux(m, k, T, 0.0, r, dwdr, r * r, eta2) == 0.0, "eq 9: no flux along the wall",
+         sphc_cleary_wall_flux(m, k, T, 0.0, r, dwdr, r * r, eta2), 0.0);
+  expect(flux < 0.0, "eq 9 is negative for heat into the wall (T_ab > 0, r . n > 0)", flux, -1.0);
+}
+
 int main(int argc, char **argv)
 {
   if (argc != 2) {
-    fprintf(stderr, "usage: %s symmetry | limits | conservation | interface\n", argv[0]);
+    fprintf(stderr, "usage: %s symmetry | limits | conservation | interface | choice\n", argv[0]);
     return 2;
   }
   if (strcmp(argv[1], "symmetry") == 0)
@@ -172,6 +215,8 @@ int main(int argc, char **argv)
     check_conservation();
   else if (strcmp(argv[1], "interface") == 0)
     check_interface();
+  else if (strcmp(argv[1], "choice") == 0)
+    check_choice();
   else {
     fprintf(stderr, "unknown check %s\n", argv[1]);
     return 2;

@@ -2,7 +2,7 @@
 
 # ------------------------------------------------------------ C terms
 add_header_test(test_conduction_terms conduction/test_conduction_terms.c)
-sphthermal_unit_checks(conduction.terms test_conduction_terms symmetry limits conservation interface)
+sphthermal_unit_checks(conduction.terms test_conduction_terms symmetry limits conservation interface choice)
 
 add_header_test(test_material_laws conduction/test_material_laws.c)
 sphthermal_test(conduction.laws LABELS unit COMMAND test_material_laws)

@@ -1,0 +1,323 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   pair sph/cleary/heat: the term for other styles: evaluated in the loop of pair
+   sph/harmonic/visc, pair by pair (pair_term), the heat flows between
+   groups, and the communication of the per-atom state.
+------------------------------------------------------------------------- */
+
+#include "pair_sph_cleary_heat.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_sph_materials.h"
+#include "fix_sph_wall_dirichlet.h"
+#include "force.h"
+#include "math_extra.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "pair_sph_harmonic_visc.h"
+#include "sph_checks.h"
+#include "sph_compat.h"
+#include "sph_conduction.h"
+#include "sph_consistent.h"
+#include "sph_hub.h"
+#include "sph_support.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+/* ----------------------------------------------------------------------
+   the term in pair sph/harmonic/visc's loop: possible when that style is
+   the only flow pair and this the only heat pair, both with one kernel and
+   cutoff on the same type pairs (so on the same neighbour list), and the
+   term needs only the pair: no correction, no interface distances, a mean
+   of per-atom conductivities only when harmonic (per type pair otherwise)
+------------------------------------------------------------------------- */
+
+int PairSPHClearyHeat::flow_loop_possible()
+{
+  if (loop_own || correct || mean == SPHC_INTERFACE) return 0;
+  if (conductivity_varies && mean != SPHC_HARMONIC) return 0;
+  // (the /omp styles too, named as such in the hybrid)
+  SPHHub hub(lmp);
+  if (hub.heat() != this) return 0;
+  const PairSPHHarmonicVisc *flow = hub.flow();
+  if (!flow || !same_kernel(flow)) return 0;
+  // the flow's list holds every pair of this style's; on type pairs only
+  // the flow covers, a zero conductance (per type pair) keeps the term out
+  int same_pairs = 1;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (setflag[i][j] && !flow->setflag[i][j]) return 0;
+      if (setflag[i][j] != flow->setflag[i][j]) same_pairs = 0;
+    }
+  return same_pairs || !conductivity_varies;
+}
+
+/* ----------------------------------------------------------------------
+   this step's temperature and mass of every owned and ghost atom (and
+   conductivity, and zeroed relax_rate) for the flow pair's loop
+------------------------------------------------------------------------- */
+
+PairSPHClearyHeat::FlowLoopTerm PairSPHClearyHeat::begin_flow_loop_term()
+{
+  if (conductivity_varies) update_conductivity();
+  if (update->setupflag) check_neighbours();
+  update_temperature();
+  if (relax_wanted) zero_relax_rate();
+  // the heat style's mass of every atom (the flow's differs for solids)
+  const int nall = atom->nlocal + atom->nghost;
+  if (atom->rmass_flag && atom->rmass)
+    memcpy(mass_of, atom->rmass, nall * sizeof(double));
+  else
+    for (int i = 0; i < nall; i++) mass_of[i] = atom->mass[atom->type[i]];
+  FlowLoopTerm term;
+  term.temperature = temperature;
+  term.mass = mass_of;
+  term.rho = atom->rho;
+  term.conductivity = conductivity_varies ? conductivity : nullptr;
+  term.conductance = loop_conductance;
+  term.relax_rate = relax_wanted ? relax_rate : nullptr;
+  term.eta2 = eta2;
+  return term;
+}
+
+/* ----------------------------------------------------------------------
+   T = esph / cv of every owned and ghost atom, once per step rather than
+   once per pair (and room for the masses of the flow pair's loop)
+------------------------------------------------------------------------- */
+
+void PairSPHClearyHeat::update_temperature()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  if (atom->nmax > nmax_flow_loop) {
+    nmax_flow_loop = atom->nmax;
+    memory->destroy(temperature);
+    memory->destroy(mass_of);
+    memory->create(temperature, nmax_flow_loop, "pair:temperature");
+    memory->create(mass_of, nmax_flow_loop, "pair:mass_of");
+  }
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+  for (int i = 0; i < nall; i++) temperature[i] = esph[i] / cv[i];
+}
+
+void PairSPHClearyHeat::end_flow_loop_term()
+{
+  check_rates(atom->desph, "desph");
+  if (!flows.empty()) tally_flows();
+  if (relax_wanted) finish_relax();
+}
+
+/* ----------------------------------------------------------------------
+   the heat flows asked for: the pair terms of eval() between atoms of the
+   two groups, with the energy each side receives (the j side only where
+   eval() gives it to an atom of this rank), summed over the ranks
+------------------------------------------------------------------------- */
+
+int PairSPHClearyHeat::request_heat_flow(int to_groupbit, int from_groupbit)
+{
+  flows.push_back({to_groupbit, from_groupbit, 0.0});
+  return (int) flows.size() - 1;
+}
+
+double PairSPHClearyHeat::pair_term(int i, int j, double rsq, double temp_ij) const
+{
+  const double r = sqrt(rsq);
+  const double inv_denominator = 1.0 / sphc_cleary_denominator(atom->rho[i], atom->rho[j], rsq, eta2);
+  return pair_weight(i, j, r) *
+      sphc_cleary_pair_inv(pair_conductance(i, j), temp_ij, r * kernel_dwdr(r), inv_denominator);
+}
+
+double PairSPHClearyHeat::pair_conductance(int i, int j) const
+{
+  const int *const type = atom->type;
+  const double k_i = conductivity_varies ? conductivity[i] : type_conductivity[type[i]];
+  const double k_j = conductivity_varies ? conductivity[j] : type_conductivity[type[j]];
+  const int crosses = (mean == SPHC_INTERFACE) && interface_types[type[i]][type[j]];
+  return sphc_pair_conductance(mean, conductivity_varies, crosses, k_i, k_j,
+                               conductance[type[i]][type[j]], crosses ? iface_distance[i] : 0.0,
+                               crosses ? iface_distance[j] : 0.0);
+}
+
+double PairSPHClearyHeat::pair_weight(int i, int j, double r) const
+{
+  if (!correct) return 1.0;
+  const double *const *const x = atom->x;
+  const double r_ij[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+  if (correct == CORRECT_SECOND) {
+    const int dim = domain->dimension;
+    const int n = sphs_count(dim);
+    double f[SPHS_MAX];
+    sphs_basis(dim, r_ij, kernel.inv_h, f);
+    return sphs_factor(dim, f, &second_nu[(size_t) i * n], &second_nu[(size_t) j * n]);
+  }
+  const double e_ij[3] = {r_ij[0] / r, r_ij[1] / r, r_ij[2] / r};
+  return sphc_second_factor(corr_s[i], corr_s[j], e_ij) *
+      sphc_first_factor(corr_lambda[i], corr_lambda[j], r_ij);
+}
+
+void PairSPHClearyHeat::tally_flows()
+{
+  const double *const *const x = atom->x;
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+  const double *const mass = atom->mass;
+  const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const int newton = force->newton_pair;
+  const double cutsq_kernel = cut_global * cut_global;
+  int either = 0;
+  for (const auto &flow : flows) either |= flow.to | flow.from;
+
+  std::vector<double> local(flows.size(), 0.0);
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    if (!(mask[i] & either)) continue;
+    const int *const jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (!(mask[j] & either)) continue;
+      const double delx = x[i][0] - x[j][0];
+      const double dely = x[i][1] - x[j][1];
+      const double delz = x[i][2] - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      if (rsq >= cutsq_kernel) continue;
+      const double f_ij = pair_term(i, j, rsq, esph[i] / cv[i] - esph[j] / cv[j]);
+      const double energy = (rmass ? rmass[i] : mass[type[i]]) *
+          (rmass ? rmass[j] : mass[type[j]]) * f_ij;    // into i, out of j
+      for (size_t k = 0; k < flows.size(); k++) {
+        if ((mask[i] & flows[k].to) && (mask[j] & flows[k].from)) local[k] += energy;
+        if ((mask[j] & flows[k].to) && (mask[i] & flows[k].from) && (newton || j < nlocal))
+          local[k] -= energy;
+      }
+    }
+  }
+  std::vector<double> total(flows.size(), 0.0);
+  MPI_Allreduce(local.data(), total.data(), (int) flows.size(), MPI_DOUBLE, MPI_SUM, world);
+  for (size_t k = 0; k < flows.size(); k++) flows[k].power = total[k];
+}
+
+/* ---------------------------------------------------------------------- */
+
+int PairSPHClearyHeat::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/,
+                                         int * /*pbc*/)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int i = send[k];
+    if (comm_stage == COMM_STATE) {
+      for (int c = 0; c < 6; c++) buf[m++] = corr_s[i][c];
+      buf[m++] = corr_state[i];
+    } else if (comm_stage == COMM_IFACE_VECTOR) {
+      for (int c = 0; c < 3; c++) buf[m++] = iface_vector[i][c];
+    } else if (comm_stage == COMM_IFACE_NORMAL) {
+      for (int c = 0; c < 3; c++) buf[m++] = iface_normal[i][c];
+    } else if (comm_stage == COMM_IFACE_DISTANCE) {
+      buf[m++] = iface_distance[i];
+    } else if (comm_stage == COMM_IFACE_NEAR) {
+      buf[m++] = iface_near[i];
+    } else if (comm_stage == COMM_SECOND) {
+      for (int c = 0; c < comm_count; c++) buf[m++] = comm_values[(size_t) i * comm_count + c];
+    } else {    // COMM_LAMBDA
+      for (int c = 0; c < 3; c++) buf[m++] = corr_lambda[i][c];
+    }
+  }
+  return m;
+}
+
+void PairSPHClearyHeat::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    if (comm_stage == COMM_STATE) {
+      for (int c = 0; c < 6; c++) corr_s[i][c] = buf[m++];
+      corr_state[i] = buf[m++];
+    } else if (comm_stage == COMM_IFACE_VECTOR) {
+      for (int c = 0; c < 3; c++) iface_vector[i][c] = buf[m++];
+    } else if (comm_stage == COMM_IFACE_NORMAL) {
+      for (int c = 0; c < 3; c++) iface_normal[i][c] = buf[m++];
+    } else if (comm_stage == COMM_IFACE_DISTANCE) {
+      iface_distance[i] = buf[m++];
+    } else if (comm_stage == COMM_IFACE_NEAR) {
+      iface_near[i] = buf[m++];
+    } else if (comm_stage == COMM_SECOND) {
+      for (int c = 0; c < comm_count; c++) comm_values[(size_t) i * comm_count + c] = buf[m++];
+    } else {
+      for (int c = 0; c < 3; c++) corr_lambda[i][c] = buf[m++];
+    }
+  }
+}
+
+int PairSPHClearyHeat::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    if (comm_stage == COMM_RELAX) {
+      buf[m++] = relax_rate[i];
+    } else if (comm_stage == COMM_MOMENT) {
+      for (int c = 0; c < 6; c++) buf[m++] = corr_s[i][c];
+    } else if (comm_stage == COMM_FIRST) {
+      for (int c = 0; c < 6; c++) buf[m++] = corr_kinv[i][c];
+      for (int c = 0; c < 3; c++) buf[m++] = corr_deficit[i][c];
+    } else if (comm_stage == COMM_IFACE_MOMENT) {
+      for (int c = 0; c < 6; c++) buf[m++] = iface_moment[i][c];
+      for (int c = 0; c < 3; c++) buf[m++] = iface_vector[i][c];
+    } else if (comm_stage == COMM_IFACE_SMOOTH) {
+      for (int c = 0; c < 3; c++) buf[m++] = iface_sum[i][c];
+    } else if (comm_stage == COMM_IFACE_MARGIN || comm_stage == COMM_IFACE_PLANE) {
+      for (int c = 0; c < 2; c++) buf[m++] = iface_sum[i][c];
+    } else if (comm_stage == COMM_IFACE_NEAR) {
+      buf[m++] = iface_near[i];
+    } else if (comm_stage == COMM_SECOND) {
+      for (int c = 0; c < comm_count; c++) buf[m++] = comm_values[(size_t) i * comm_count + c];
+    } else {    // COMM_COUPLING
+      for (int c = 0; c < 3; c++) buf[m++] = corr_coupling[i][c];
+    }
+  }
+  return m;
+}
+
+void PairSPHClearyHeat::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int i = list[k];
+    if (comm_stage == COMM_RELAX) {
+      relax_rate[i] += buf[m++];
+    } else if (comm_stage == COMM_MOMENT) {
+      for (int c = 0; c < 6; c++) corr_s[i][c] += buf[m++];
+    } else if (comm_stage == COMM_FIRST) {
+      for (int c = 0; c < 6; c++) corr_kinv[i][c] += buf[m++];
+      for (int c = 0; c < 3; c++) corr_deficit[i][c] += buf[m++];
+    } else if (comm_stage == COMM_IFACE_MOMENT) {
+      for (int c = 0; c < 6; c++) iface_moment[i][c] += buf[m++];
+      for (int c = 0; c < 3; c++) iface_vector[i][c] += buf[m++];
+    } else if (comm_stage == COMM_IFACE_SMOOTH) {
+      for (int c = 0; c < 3; c++) iface_sum[i][c] += buf[m++];
+    } else if (comm_stage == COMM_IFACE_MARGIN) {
+      // the farthest own-material atom and the nearest other one
+      iface_sum[i][0] = std::max(iface_sum[i][0], buf[m++]);
+      iface_sum[i][1] = std::min(iface_sum[i][1], buf[m++]);
+    } else if (comm_stage == COMM_IFACE_PLANE) {
+      for (int c = 0; c < 2; c++) iface_sum[i][c] += buf[m++];
+    } else if (comm_stage == COMM_IFACE_NEAR) {
+      iface_near[i] = std::max(iface_near[i], buf[m++]);
+    } else if (comm_stage == COMM_SECOND) {
+      for (int c = 0; c < comm_count; c++) comm_values[(size_t) i * comm_count + c] += buf[m++];
+    } else {
+      for (int c = 0; c < 3; c++) corr_coupling[i][c] += buf[m++];
+    }
+  }
+}

@@ -1,0 +1,393 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   pair sph/harmonic/visc: its command, settings, restart and communication, and
+   the shift sums it makes for fix sph/shift.
+------------------------------------------------------------------------- */
+
+#include "pair_sph_harmonic_visc.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix.h"
+#include "fix_sph_materials.h"
+#include "fix_sph_wall_adami.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "pair_sph_cleary_heat.h"
+#include "sph_body_force.h"
+#include "sph_checks.h"
+#include "sph_compat.h"
+#include "sph_hub.h"
+#include "sph_conduction.h"
+#include "sph_consistent.h"
+#include "sph_flow.h"
+#include "sph_support.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+
+static const char cmd[] = "pair_style sph/harmonic/visc";
+
+// the layout of the restart settings: raise it when a setting is added
+static constexpr int RESTART_VERSION = 1;
+
+/* ---------------------------------------------------------------------- */
+
+bool PairSPHHarmonicVisc::provide_shift_sums(int groupbit)
+{
+  // the corrected loop does not make them (fix sph/shift then sums them itself)
+  if (pressure_form != SPHF_P_AVERAGED || gradient_correction) return false;
+  const int ntypes = atom->ntypes;
+  std::vector<int> group_type(ntypes + 1, 0), group_type_all(ntypes + 1, 0);
+  int in_wall = 0, in_wall_any = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) {
+      group_type[atom->type[i]] = 1;
+      if (atom->mask[i] & wall_groupbit) in_wall = 1;
+    }
+  MPI_Allreduce(group_type.data(), group_type_all.data(), ntypes + 1, MPI_INT, MPI_MAX, world);
+  MPI_Allreduce(&in_wall, &in_wall_any, 1, MPI_INT, MPI_MAX, world);
+  if (in_wall_any) return false;
+  for (int t = 1; t <= ntypes; t++)
+    if (group_type_all[t])
+      for (int u = 1; u <= ntypes; u++)
+        if (!setflag[MIN(t, u)][MAX(t, u)]) return false;
+  shift_sums_wanted = 1;
+  return true;
+}
+
+int PairSPHHarmonicVisc::pack_reverse_comm(int n, int first, double *buf)
+{
+  if (comm_stage == COMM_GRADIENT_MOMENT) {
+    int m = 0;
+    for (int i = first; i < first + n; i++)
+      for (int k = 0; k < 6; k++) buf[m++] = gradient_inverse[i][k];
+    return m;
+  }
+  memcpy(buf, &shift_sum[3 * (size_t) first], 3 * sizeof(double) * n);
+  return 3 * n;
+}
+
+void PairSPHHarmonicVisc::unpack_reverse_comm(int n, int *list_send, double *buf)
+{
+  if (comm_stage == COMM_GRADIENT_MOMENT) {
+    for (int k = 0; k < n; k++)
+      for (int a = 0; a < 6; a++) gradient_inverse[list_send[k]][a] += buf[6 * k + a];
+    return;
+  }
+  for (int k = 0; k < n; k++)
+    for (int a = 0; a < 3; a++) shift_sum[3 * (size_t) list_send[k] + a] += buf[3 * k + a];
+}
+
+/* ----------------------------------------------------------------------
+   pair_style sph/harmonic/visc kernel cutoff [pressure symmetric|sum|averaged]
+     [viscosity cleary|adami|morris] [xi value] [eta f] [delta value]
+     [diffusion fourtakas|molteni] [fourtakas gx gy gz] [heating fraction]
+     [mean_pressure P|none] [correction none|gradient]
+------------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::settings(int narg, char **arg)
+{
+  int iarg = parse_kernel(narg, arg);
+  pressure_form = SPHF_P_AVERAGED;
+  viscosity_form = SPHF_V_ADAMI;
+  xi = SPHF_XI_CLEARY;
+  xi_given = 0;
+  eta_factor = -1.0;    // the default depends on the viscosity form
+  delta = 0.1;    // Ng et al. 2020: "not a tunable parameter", 0.1 for all flows
+  heating = 0.0;    // Reece et al. 2024 and Ng et al. 2020 neglect it
+  mean_pressure_held = 0;
+  mean_pressure = 0.0;
+  gradient_correction = 0;
+  // Fourtakas's form equals Molteni's without gravity and keeps a column at
+  // rest with it (examples/flow-hydrostatic): the default
+  diffusion_form = DIFFUSION_BODY_FORCE;
+  hydrostatic = 0;
+  gravity[0] = gravity[1] = gravity[2] = 0.0;
+  while (iarg < narg) {
+    if (iarg + 1 >= narg)
+      error->all(FLERR, "Illegal {} command: missing value after '{}'", cmd, arg[iarg]);
+    const char *value = arg[iarg + 1];
+    if (strcmp(arg[iarg], "pressure") == 0) {
+      pressure_form = sphf_pressure_lookup(value);
+      if (pressure_form < 0)
+        error->all(FLERR,
+                   "Illegal {} command: unknown pressure form '{}' (symmetric, sum or averaged)",
+                   cmd, value);
+    } else if (strcmp(arg[iarg], "viscosity") == 0) {
+      viscosity_form = sphf_viscosity_lookup(value);
+      if (viscosity_form < 0)
+        error->all(FLERR,
+                   "Illegal {} command: unknown viscosity form '{}' (cleary, adami or morris)",
+                   cmd, value);
+    } else if (strcmp(arg[iarg], "xi") == 0) {
+      xi = utils::numeric(FLERR, value, false, lmp);
+      xi_given = 1;
+      if (xi <= 0.0) error->all(FLERR, "Illegal {} command: xi {} must be > 0", cmd, value);
+    } else if (strcmp(arg[iarg], "eta") == 0) {
+      eta_factor = utils::numeric(FLERR, value, false, lmp);
+      if (eta_factor < 0.0)
+        error->all(FLERR, "Illegal {} command: eta {} must be >= 0", cmd, value);
+    } else if (strcmp(arg[iarg], "diffusion") == 0) {
+      if (strcmp(value, "fourtakas") == 0)
+        diffusion_form = DIFFUSION_BODY_FORCE;
+      else if (strcmp(value, "molteni") == 0)
+        diffusion_form = DIFFUSION_MOLTENI;
+      else
+        error->all(FLERR, "Illegal {} command: unknown diffusion '{}' (fourtakas or molteni)", cmd,
+                   value);
+    } else if (strcmp(arg[iarg], "fourtakas") == 0) {
+      if (iarg + 3 >= narg)
+        error->all(FLERR,
+                   "Illegal {} command: 'fourtakas' needs 3 values (gx gy gz); without them, "
+                   "'diffusion fourtakas' (the default) reads fix gravity",
+                   cmd);
+      diffusion_form = DIFFUSION_GIVEN;
+      hydrostatic = 1;
+      for (int k = 0; k < 3; k++) gravity[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
+      iarg += 4;
+      continue;
+    } else if (strcmp(arg[iarg], "heating") == 0) {
+      heating = utils::numeric(FLERR, value, false, lmp);
+      if (heating < 0.0 || heating > 1.0)
+        error->all(FLERR,
+                   "Illegal {} command: heating {} must be in [0, 1] (the fraction of the "
+                   "viscous work turned into heat)",
+                   cmd, value);
+    } else if (strcmp(arg[iarg], "mean_pressure") == 0) {
+      mean_pressure_held = (strcmp(value, "none") != 0);
+      mean_pressure = mean_pressure_held ? utils::numeric(FLERR, value, false, lmp) : 0.0;
+    } else if (strcmp(arg[iarg], "correction") == 0) {
+      if (strcmp(value, "gradient") == 0)
+        gradient_correction = 1;
+      else if (strcmp(value, "none") == 0)
+        gradient_correction = 0;
+      else
+        error->all(FLERR, "Illegal {} command: unknown correction '{}' (none or gradient)", cmd,
+                   value);
+    } else if (strcmp(arg[iarg], "delta") == 0) {
+      delta = utils::numeric(FLERR, value, false, lmp);
+      if (delta < 0.0) error->all(FLERR, "Illegal {} command: delta {} must be >= 0", cmd, value);
+    } else
+      error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
+    iarg += 2;
+  }
+  if (xi_given && viscosity_form != SPHF_V_CLEARY)
+    error->all(FLERR,
+               "Illegal {} command: xi is a factor of the cleary viscosity form only; viscosity {} "
+               "does not use it",
+               cmd, sphf_viscosity_name(viscosity_form));
+  if (gradient_correction && pressure_form != SPHF_P_AVERAGED)
+    error->all(FLERR,
+               "Illegal {} command: correction gradient needs the averaged pressure form (the "
+               "default), not pressure {}",
+               cmd, sphf_pressure_name(pressure_form));
+  if (diffusion_form == DIFFUSION_GIVEN && gravity[0] == 0.0 && gravity[1] == 0.0 &&
+      gravity[2] == 0.0)
+    error->all(FLERR,
+               "Illegal {} command: fourtakas 0 0 0 is Molteni's diffusion: give the gravity "
+               "vector, or use 'diffusion molteni'",
+               cmd);
+  // Cleary's xi was calibrated with eta = 0.1 h; the consistent forms only
+  // need eta against r -> 0, and 0.1 h would lower their viscosity by 1-4 %
+  if (eta_factor < 0.0) eta_factor = (viscosity_form == SPHF_V_CLEARY) ? 0.1 : 0.01;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::init_style()
+{
+  if (!atom->rho_flag || !atom->vest_flag || !atom->esph_flag || !atom->cv_flag)
+    error->all(FLERR, "Pair style sph/harmonic/visc requires atom style sph (rho, drho, vest)");
+
+  // turned on by the constructor; off only after an explicit comm_modify vel no
+  if (!comm->ghost_velocity)
+    error->all(FLERR, "Pair style sph/harmonic/visc requires ghost velocities: remove comm_modify vel no");
+
+  materials = FixSPHMaterials::find(lmp, "Pair style sph/harmonic/visc");
+  // the walls first: a wall type without an equation of state is a solid
+  wall_groupbit = 0;
+  adami_walls.clear();
+  for (FixSPHWallAdami *wall : SPHHub(lmp).fixes<FixSPHWallAdami>()) {
+    wall_groupbit |= wall->groupbit;
+    adami_walls.push_back(wall);
+  }
+  // a body moved by a fix rigid is a moving wall: its particles must be in
+  // a fix sph/wall/adami group, or the flow would treat them as fluid
+  for (int ifix = 0; ifix < modify->nfix; ifix++) {
+    Fix *rigid = modify->fix[ifix];
+    if (!SPHHub(lmp).rigid(rigid)) continue;
+    tagint first = MAXTAGINT, first_all;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & rigid->groupbit) && !(atom->mask[i] & wall_groupbit))
+        first = MIN(first, atom->tag[i]);
+    MPI_Allreduce(&first, &first_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    if (first_all != MAXTAGINT)
+      error->all(FLERR,
+                 "Pair style sph/harmonic/visc: atom {} of fix {} ({}) is in no fix sph/wall/adami "
+                 "group: the particles of a rigid body must be walls of fix sph/wall/adami, which "
+                 "moves them with the body",
+                 first_all, rigid->id, rigid->style);
+  }
+  // every particle that is not such a wall needs its fluid's properties
+  tagint bad_tag = MAXTAGINT;
+  int bad_type = 0, bad_missing = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (atom->mask[i] & wall_groupbit) continue;
+    const int t = atom->type[i];
+    const int missing = !materials->eos(t) ? 1 : (!materials->viscosity(t) ? 2 : 0);
+    if (missing && atom->tag[i] < bad_tag) bad_tag = atom->tag[i], bad_type = t, bad_missing = missing;
+  }
+  tagint bad_all;
+  MPI_Allreduce(&bad_tag, &bad_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (bad_all != MAXTAGINT) {
+    int info[2] = {bad_tag == bad_all ? bad_type : 0, bad_tag == bad_all ? bad_missing : 0};
+    int info_all[2];
+    MPI_Allreduce(info, info_all, 2, MPI_INT, MPI_MAX, world);
+    error->all(FLERR,
+               "Pair style sph/harmonic/visc: atom type {} has no {} in fix sph/materials (atom {} "
+               "is a fluid particle; only the solid particles of fix sph/wall/adami may lack it)",
+               info_all[0], info_all[1] == 1 ? "equation of state (eos)" : "viscosity", bad_all);
+  }
+  viscosity_varies = !materials->viscosity_constant();
+  // the per-atom arrays are sized again with the diffused density
+  if (materials->thermal_expansion() != thermal_expansion) {
+    thermal_expansion = materials->thermal_expansion();
+    nmax = 0;
+  }
+  SPHCheck::atom_state(lmp, FLERR, "Pair style sph/harmonic/visc", 0,
+      SPHCheck::RHO |
+          ((viscosity_varies || thermal_expansion) ? SPHCheck::CV | SPHCheck::ESPH : 0));
+
+  // the hydrostatic diffusion reads the body force of the run, or assumes one
+  body_force = SPHBodyForce::find(lmp, "Pair style sph/harmonic/visc");
+  if (diffusion_form == DIFFUSION_MOLTENI) {
+    hydrostatic = 0;
+  } else if (diffusion_form == DIFFUSION_BODY_FORCE) {
+    for (int k = 0; k < 3; k++) gravity[k] = body_force ? body_force[k] : 0.0;
+    hydrostatic = (gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0);
+  } else {
+    int other_force = 0;
+    for (int ifix = 0; ifix < modify->nfix; ifix++)
+      if (SPHHub(lmp).adds_force(modify->fix[ifix])) other_force = 1;
+    if (!body_force && !other_force)
+      error->warning(FLERR,
+                     "Pair style sph/harmonic/visc: fourtakas {} {} {} assumes gravity, but no fix "
+                     "gravity or addforce is defined",
+                     gravity[0], gravity[1], gravity[2]);
+    else if (body_force && (body_force[0] != gravity[0] || body_force[1] != gravity[1] ||
+                            body_force[2] != gravity[2]))
+      error->warning(FLERR,
+                     "Pair style sph/harmonic/visc: fourtakas {} {} {} differs from the body "
+                     "force of fix gravity ({} {} {}); 'diffusion fourtakas' (the default) reads it",
+                     gravity[0], gravity[1], gravity[2], body_force[0], body_force[1],
+                     body_force[2]);
+  }
+
+
+  eta2 = init_kernel();
+  eos_of.assign(atom->ntypes + 1, nullptr);
+  for (int t = 1; t <= atom->ntypes; t++) eos_of[t] = materials->eos(t);
+  // sph/cleary/heat decides at its init whether this loop evaluates its term
+  heat = SPHHub(lmp).heat();
+  // fix sph/shift asks again at its init
+  shift_sums_wanted = 0;
+
+  SPHCompat::request_half_list(neighbor, this, instance_me);
+}
+
+double PairSPHHarmonicVisc::init_one(int, int)
+{
+  return cut_global;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::write_restart_settings(FILE *fp)
+{
+  const int ints[6] = {kernel_kind,    pressure_form,      viscosity_form,
+                       diffusion_form, mean_pressure_held, gradient_correction};
+  // xi_given only checks the command line
+  const double doubles[9] = {cut_global, xi,         eta_factor, delta,        gravity[0],
+                             gravity[1], gravity[2], heating,    mean_pressure};
+  SPHCheck::write_restart_head(fp, RESTART_VERSION);
+  fwrite(ints, sizeof(int), 6, fp);
+  fwrite(doubles, sizeof(double), 9, fp);
+}
+
+void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
+{
+  SPHCheck::read_restart_head(lmp, fp, "pair sph/harmonic/visc", RESTART_VERSION);
+  int ints[6];
+  double doubles[9];
+  if (comm->me == 0) {
+    utils::sfread(FLERR, ints, sizeof(int), 6, fp, nullptr, error);
+    utils::sfread(FLERR, doubles, sizeof(double), 9, fp, nullptr, error);
+  }
+  MPI_Bcast(ints, 6, MPI_INT, 0, world);
+  MPI_Bcast(doubles, 9, MPI_DOUBLE, 0, world);
+  // the body force is read again from fix gravity at init
+  diffusion_form = ints[3];
+  hydrostatic = (diffusion_form == DIFFUSION_GIVEN);
+  for (int k = 0; k < 3; k++) gravity[k] = doubles[4 + k];
+  kernel_kind = ints[0];
+  pressure_form = ints[1];
+  viscosity_form = ints[2];
+  cut_global = doubles[0];
+  xi = doubles[1];
+  eta_factor = doubles[2];
+  delta = doubles[3];
+  heating = doubles[7];
+  mean_pressure_held = ints[4];
+  mean_pressure = doubles[8];
+  gradient_correction = ints[5];
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairSPHHarmonicVisc::memory_usage()
+{
+  return Pair::memory_usage() +
+      (5.0 * nmax + 3.0 * nmax_shift + 6.0 * nmax_gradient) * sizeof(double);
+}
+
+/* ----------------------------------------------------------------------
+   vest of the ghost atoms, at setup
+------------------------------------------------------------------------- */
+
+int PairSPHHarmonicVisc::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/,
+                                           int * /*pbc*/)
+{
+  int m = 0;
+  if (comm_stage == COMM_GRADIENT_INVERSE) {
+    for (int k = 0; k < n; k++)
+      for (int a = 0; a < 6; a++) buf[m++] = gradient_inverse[send[k]][a];
+    return m;
+  }
+  for (int k = 0; k < n; k++)
+    for (int d = 0; d < 3; d++) buf[m++] = atom->vest[send[k]][d];
+  return m;
+}
+
+void PairSPHHarmonicVisc::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  if (comm_stage == COMM_GRADIENT_INVERSE) {
+    for (int i = first; i < first + n; i++)
+      for (int a = 0; a < 6; a++) gradient_inverse[i][a] = buf[m++];
+    return;
+  }
+  for (int i = first; i < first + n; i++)
+    for (int d = 0; d < 3; d++) atom->vest[i][d] = buf[m++];
+}

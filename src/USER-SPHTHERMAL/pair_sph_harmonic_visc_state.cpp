@@ -1,0 +1,251 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   pair sph/harmonic/visc: the per-atom state its loops read, made once per force
+   evaluation for owned and ghost atoms: pressure, viscosity, volume, the
+   held mean pressure, and the inverse moments of 'correction gradient'.
+------------------------------------------------------------------------- */
+
+#include "pair_sph_harmonic_visc.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix.h"
+#include "fix_sph_materials.h"
+#include "fix_sph_wall_adami.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "pair_sph_cleary_heat.h"
+#include "sph_body_force.h"
+#include "sph_checks.h"
+#include "sph_compat.h"
+#include "sph_hub.h"
+#include "sph_conduction.h"
+#include "sph_consistent.h"
+#include "sph_flow.h"
+#include "sph_support.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+
+void PairSPHHarmonicVisc::refresh_gradient_correction()
+{
+  switch (kernel_kind) {
+    case SPHK_LUCY:
+      update_gradient_correction<SPHK_LUCY>();
+      break;
+    case SPHK_CUBIC:
+      update_gradient_correction<SPHK_CUBIC>();
+      break;
+    case SPHK_QUINTIC:
+      update_gradient_correction<SPHK_QUINTIC>();
+      break;
+    case SPHK_WENDLAND:
+      update_gradient_correction<SPHK_WENDLAND>();
+      break;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   'correction gradient': B = M^-1 per fluid atom, with the moment
+     M_i = sum_j V_j (-dW/dr / r) r_ij (x) r_ij = -sum_j V_j r_ij (x) grad_i W_ij
+   over every neighbour in the support (fluid and wall), which is I for a
+   complete support in the continuum (0.974 I on a square lattice with
+   Wendland C2 and h = 1.3 dx, about 0.95 I on particles that have
+   rearranged). With B grad W in place of grad W (Bonet & Lok 1999) the pair
+   force of a linear pressure field is exactly -V grad p where the
+   neighbours' B are equal and sum_j V_j grad W_ij = 0 (any lattice; test
+   flow.gradient.linear); on disordered particles the moment's error is
+   removed and the zeroth-order sum remains, which moves particles towards
+   an even arrangement as in the plain form. Atoms whose smallest
+   eigenvalue of M is below FULL_SUPPORT (a free surface) and wall
+   particles keep B = I.
+------------------------------------------------------------------------- */
+
+// smallest eigenvalue of M that counts as complete support: 0.974 inside a
+// square lattice, about 0.5 in the first row of a free surface
+static constexpr double FULL_SUPPORT = 0.7;
+
+template <int KERNEL> void PairSPHHarmonicVisc::update_gradient_correction()
+{
+  const int dim = domain->dimension;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const int newton_pair = force->newton_pair;
+  if (atom->nmax > nmax_gradient) {
+    nmax_gradient = atom->nmax;
+    memory->destroy(gradient_inverse);
+    memory->create(gradient_inverse, nmax_gradient, 6, "pair:gradient_inverse");
+  }
+  double **const moment = gradient_inverse;    // M until B replaces it
+  for (int i = 0; i < nall; i++)
+    for (int k = 0; k < 6; k++) moment[i][k] = 0.0;
+  const double *const *const x = atom->x;
+  const int *const mask = atom->mask;
+  const double cutsq_kernel = cut_global * cut_global;
+  const double inv_h = kernel.inv_h;
+  const double dwdr_r_scale = kernel.dw_scale * kernel.inv_h;
+  const int *const ilist = list->ilist;
+  const int *const numneigh = list->numneigh;
+  int **const firstneigh = list->firstneigh;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = ilist[ii];
+    const int wall_i = mask[i] & wall_groupbit;
+    const int *const jlist = firstneigh[i];
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const int wall_j = mask[j] & wall_groupbit;
+      if (wall_i && wall_j) continue;
+      const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1],
+                             (dim == 3) ? x[i][2] - x[j][2] : 0.0};
+      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+      if (rsq >= cutsq_kernel) continue;
+      const double g = -dwdr_r_scale * sphk_df_over_q(KERNEL, sqrt(rsq) * inv_h);
+      if (!wall_i) sphc_moment_add(moment[i], g * volume[j], del);
+      if (!wall_j && (newton_pair || j < nlocal)) sphc_moment_add(moment[j], g * volume[i], del);
+    }
+  }
+  comm_stage = COMM_GRADIENT_MOMENT;
+  if (newton_pair) SPHCompat::reverse_comm(comm, this);
+  bigint plain = 0, fluid = 0;
+  for (int i = 0; i < nlocal; i++) {
+    double inverse[6] = {1.0, 1.0, 1.0, 0.0, 0.0, 0.0};
+    if (!(mask[i] & wall_groupbit)) {
+      fluid++;
+      const int full = sphc_sym_min_eigen(dim, moment[i]) >= FULL_SUPPORT &&
+          sphc_sym_inverse(dim, moment[i], inverse) > 0.0;
+      if (!full) {
+        plain++;
+        for (int k = 0; k < 6; k++) inverse[k] = (k < 3) ? 1.0 : 0.0;
+      }
+    }
+    for (int k = 0; k < 6; k++) moment[i][k] = inverse[k];
+  }
+  comm_stage = COMM_GRADIENT_INVERSE;
+  SPHCompat::forward_comm(comm, this);
+  if (update->setupflag) {
+    bigint mine[2] = {plain, fluid}, all[2];
+    MPI_Allreduce(mine, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+    if (comm->me == 0)
+      utils::logmesg(lmp,
+                     "Pair style sph/harmonic/visc: correction gradient on {} fluid atoms; {} keep "
+                     "the plain gradient (incomplete kernel support: free surfaces or too few "
+                     "neighbours)\n",
+                     all[1] - all[0], all[0]);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   pressure, viscosity and mass of every owned and ghost atom (ghosts carry
+   rho, esph, cv: no communication is needed)
+------------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::update_atom_state()
+{
+  if (atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(pressure);
+    memory->destroy(viscosity);
+    memory->destroy(mass_of);
+    memory->destroy(volume);
+    memory->destroy(density);
+    memory->destroy(diffused_density);
+    memory->create(volume, nmax, "pair:volume");
+    if (thermal_expansion) memory->create(diffused_density, nmax, "pair:diffused_density");
+    memory->create(pressure, nmax, "pair:pressure");
+    memory->create(viscosity, nmax, "pair:viscosity");
+    memory->create(mass_of, nmax, "pair:mass_of");
+    memory->create(density, nmax, "pair:density");
+  }
+  const double *const rho = atom->rho;
+  const double *const esph = atom->esph;
+  const double *const cv = atom->cv;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  const int nall = atom->nlocal + atom->nghost;
+  diffusion_rho = thermal_expansion ? diffused_density : rho;
+  if (atom->rmass_flag && atom->rmass)
+    memcpy(mass_of, atom->rmass, nall * sizeof(double));
+  else
+    for (int i = 0; i < nall; i++) mass_of[i] = atom->mass[type[i]];
+  // the walls that hold solid particles (known after the walls' init)
+  std::vector<FixSPHWallAdami *> solid_walls;
+  for (auto wall : adami_walls)
+    if (wall->has_solids()) solid_walls.push_back(wall);
+  for (int i = 0; i < nall; i++) {
+    FixSPHWallAdami *solid = nullptr;
+    for (auto wall : solid_walls)
+      if ((mask[i] & wall->groupbit) && wall->solid(i)) solid = wall;
+    if (solid) {
+      // its own volume, filled with the fluid as the wall extrapolates it and
+      // compressed with it (so that wall and fluid particles keep their share)
+      volume[i] = mass_of[i] / rho[i] * solid->compression(i);
+      pressure[i] = solid->pressure(i);
+      density[i] = solid->fluid_density(i);
+      viscosity[i] = solid->viscosity(i);
+      mass_of[i] = density[i] * volume[i];
+      if (thermal_expansion) diffused_density[i] = rho[i];
+      continue;
+    }
+    const sphe_eos *eos = materials->eos(type[i]);
+    if (eos->thermal) {
+      const double t = esph[i] / cv[i];
+      const double rho_ref = sphe_reference_density(eos, t);
+      if (!(rho_ref > 0.0) || !std::isfinite(rho_ref))
+        SPHCheck::stop(lmp, FLERR, fmt::format(
+                "Pair style sph/harmonic/visc: atom {} (type {}) at T = {} has no reference "
+                "density: 1 + beta (T - T0) = {} of its equation of state's thermal "
+                "expansion must be > 0",
+                atom->tag[i], type[i], t, 1.0 + eos->beta * (t - eos->t0)));
+      pressure[i] = sphe_pressure_ref(eos, rho[i], rho_ref);
+      diffused_density[i] = rho[i] - (rho_ref - eos->rho0);
+    } else {
+      pressure[i] = sphe_pressure(eos, rho[i]);
+      if (thermal_expansion) diffused_density[i] = rho[i];
+    }
+    viscosity[i] = materials->viscosity_at(type[i], viscosity_varies ? esph[i] / cv[i] : 0.0,
+                                           "Pair style sph/harmonic/visc");
+    density[i] = rho[i];
+    volume[i] = mass_of[i] / rho[i];
+  }
+  pvector[0] = mean_pressure_held ? hold_mean_pressure() : 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   'mean_pressure P': every particle's pressure, owned or ghost, wall or
+   fluid, less one offset such that the volume-weighted mean over the
+   fluid (the atoms of no wall group) is P. The pair terms then do not see
+   how the kernel sum of a changing particle arrangement moves the mean
+   pressure of a closed container, and a constant offset of all pressures
+   changes no pair force (the walls extrapolate the fluid's pressure, so
+   their pressure moves with it). Returns the offset.
+------------------------------------------------------------------------- */
+
+double PairSPHHarmonicVisc::hold_mean_pressure()
+{
+  const int *const mask = atom->mask;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  double mine[2] = {0.0, 0.0}, sum[2];
+  for (int i = 0; i < nlocal; i++)
+    if (!(mask[i] & wall_groupbit)) {
+      mine[0] += pressure[i] * volume[i];
+      mine[1] += volume[i];
+    }
+  MPI_Allreduce(mine, sum, 2, MPI_DOUBLE, MPI_SUM, world);
+  // no fluid: nothing to hold
+  if (!(sum[1] > 0.0)) return 0.0;
+  // a non-finite mean makes every force non-finite, which the pair's
+  // check of the forces reports with the atom
+  const double offset = sum[0] / sum[1] - mean_pressure;
+  for (int i = 0; i < nall; i++) pressure[i] -= offset;
+  return offset;
+}
