@@ -215,26 +215,15 @@ template <int KERNEL> void PairSPHClearyHeat::update_correction()
    the solver's tolerance elsewhere
 ------------------------------------------------------------------------- */
 
-// the regularisation epsilon of sph_second_moment.h: measured on the
-// two-material slab jittered by 0.2 spacings (examples/conduction-disorder,
-// distances given), largest error at t1 / 10 t1 and run time (tolerance
-// 1e-10): 1e-4 0.588 / 0.111 %, 2.5 s; 1e-5 0.577 / 0.085 %, 4.4 s; 1e-6
-// 0.611 / 0.064 %, 7.2 s; unregularised 0.657 / 0.061 % (the numpy model,
-// tools/research/disorder_second_order.py), a 108 s solve here; the lattice 0.444 /
-// 0.046 %
+// the regularisation epsilon of sph_second_moment.h: the value of the
+// disordered two-material slab's best accuracy at 10 t1 for its cost among
+// 1e-4 to 1e-6 (doc/src/Howto_sph_theory.rst)
 static constexpr double SECOND_REGULARIZATION = 1e-6;
 // The regularisation leaves the moments off by epsilon nu, and near free
-// edges nu carries a large smooth part (on a lattice a first-moment
-// multiplier of about 100, nearly constant through the interior, that
-// changes no interior pair): a first-moment residual of 1e-4 of V / h,
-// which errs the Laplacian by 2e-4 |grad T| / h. On a 54 x 54 lattice
-// rotated by atan(1/2) with free edges (unittest/robust/test_second_rotated.py)
-// the quadratic field's Laplacian was off by 1.1e-3 deep inside, where the
-// plain term is off by 1.6e-4. So the regularised solution is the start of
-// a second solve of the unregularised problem (the coarse space keeps its
-// smooth part cheap to find: there 9 more Newton and 355 more
-// conjugate-gradient steps, 16 and 606 in all, moments to 1e-14 and the
-// Laplacian exact to 3e-13), which is taken if it converges within these
+// edges nu carries a large smooth part (a nearly constant first-moment
+// multiplier that changes no interior pair), which errs the Laplacian deep
+// inside (test robust.second_rotated). So the regularised solution starts
+// a solve of the unregularised problem, taken if it converges within these
 // Newton steps; otherwise (no weights with the exact moments, where the
 // unregularised multipliers grow without bound) the regularised one stays
 static constexpr int SECOND_EXACT_NEWTON_STEPS = 20;
