@@ -3,6 +3,19 @@
 
 # docs, examples, benchmarks and sources cite the papers, not internal seed numbers
 sphthermal_test(docs.citations LABELS unit COMMAND ${CMAKE_CURRENT_LIST_DIR}/check_citations.sh)
+# every :doc: and :ref: target of the docs exists (the package's pages or
+# those of LAMMPS 4Feb2025, which the docs link to), every relative link of
+# the Markdown files names a file; the self-test must see each broken link
+# (with a LAMMPS tree that has its docs, as Debian's source has)
+if(EXISTS ${LAMMPS_SOURCE_DIR}/doc/src)
+  sphthermal_python_test(docs.links_selftest tools/check_doc_links.py
+    ARGS ${SPHTHERMAL_ROOT} --lammps-doc ${LAMMPS_SOURCE_DIR}/doc/src
+         --expect-broken ${CMAKE_CURRENT_LIST_DIR}/doc_links_broken.rst.txt LABELS unit)
+  if(LAMMPS_RELEASE STREQUAL "4Feb2025")
+    sphthermal_python_test(docs.links tools/check_doc_links.py
+      ARGS ${SPHTHERMAL_ROOT} --lammps-doc ${LAMMPS_SOURCE_DIR}/doc/src LABELS unit)
+  endif()
+endif()
 
 # the state driver refuses atom IDs that would leave rows of its table unset
 sphthermal_test(tools.sph_state.error.ids_gap LABELS unit
