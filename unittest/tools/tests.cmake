@@ -44,3 +44,16 @@ if(LAMMPS_RELEASE STREQUAL "4Feb2025")
          --results ${CMAKE_CURRENT_BINARY_DIR}/rheo_quick
     LABELS validation)
 endif()
+
+# every doc page parses as reStructuredText without a warning (where
+# docutils is installed: Debian's python3-docutils)
+execute_process(COMMAND ${PYTHON_NUMPY} -c "import docutils" RESULT_VARIABLE no_docutils
+                OUTPUT_QUIET ERROR_QUIET)
+if(NOT no_docutils)
+  file(GLOB doc_pages CONFIGURE_DEPENDS ${SPHTHERMAL_ROOT}/doc/src/*.rst)
+  sphthermal_python_test(docs.rst tools/check_rst.py ARGS ${doc_pages} LABELS unit)
+  sphthermal_python_test(docs.rst_selftest tools/check_rst.py
+    ARGS --expect-problems ${CMAKE_CURRENT_LIST_DIR}/rst_faults.rst.txt LABELS unit)
+else()
+  message(STATUS "docs.rst left out: no docutils (apt-get install python3-docutils)")
+endif()
