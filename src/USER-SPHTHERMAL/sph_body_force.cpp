@@ -74,8 +74,9 @@ void SPHBodyForce::check_finite(LAMMPS *lmp, const char *file, int line, const c
 
 const SPHBodyForce::Buoyancy *SPHBodyForce::find_buoyancy(LAMMPS *lmp)
 {
-  for (FixSPHBoussinesq *fix : SPHHub(lmp).fixes<FixSPHBoussinesq>()) return &fix->added_buoyancy();
-  return nullptr;
+  // fix sph/boussinesq's init makes a second one an error
+  const std::vector<FixSPHBoussinesq *> all = SPHHub(lmp).fixes<FixSPHBoussinesq>();
+  return all.empty() ? nullptr : &all.front()->added_buoyancy();
 }
 
 /* ---------------------------------------------------------------------- */

@@ -9,7 +9,6 @@
 #include "lmptype.h"
 
 #include <cstdio>
-#include <initializer_list>
 #include <string>
 #include <vector>
 
