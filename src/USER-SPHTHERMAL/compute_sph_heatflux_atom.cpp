@@ -26,6 +26,7 @@
 #include "sph_gradient.h"
 #include "sph_kernels.h"
 #include "update.h"
+#include "sph_particle.h"
 
 #include <cmath>
 #include <cstring>
@@ -126,6 +127,7 @@ void ComputeSPHHeatfluxAtom::init_list(int /*id*/, NeighList *ptr)
 
 void ComputeSPHHeatfluxAtom::compute_peratom()
 {
+  const SPHParticles particles(atom);
   invoked_peratom = update->ntimestep;
   if (atom->nmax > nmax) {
     nmax = atom->nmax;
@@ -140,11 +142,7 @@ void ComputeSPHHeatfluxAtom::compute_peratom()
   SPHCompat::build_occasional(neighbor, list);
 
   const double *const *const x = atom->x;
-  const double *const esph = atom->esph;
-  const double *const cv = atom->cv;
   const double *const rho = atom->rho;
-  const double *const mass = atom->mass;
-  const double *const rmass = atom->rmass;
   const int *const type = atom->type;
   const int *const mask = atom->mask;
   const int dim = domain->dimension;
@@ -160,7 +158,7 @@ void ComputeSPHHeatfluxAtom::compute_peratom()
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
-    const double temp_i = esph[i] / cv[i];
+    const double temp_i = particles.temperature(i);
     const double k_i = materials->conductivity_at(type[i], temp_i, "Compute sph/heatflux/atom");
     const int *const jlist = list->firstneigh[i];
     const int jnum = list->numneigh[i];
@@ -174,9 +172,9 @@ void ComputeSPHHeatfluxAtom::compute_peratom()
       if (rsq >= cutsq || rsq == 0.0) continue;
       const double r = sqrt(rsq);
       const double dwdr = sphk_dwdr(&kernel, r);
-      const double mass_j = rmass ? rmass[j] : mass[type[j]];
+      const double mass_j = particles.mass(j);
       const double volume_j = mass_j / rho[j];
-      const double temp_j = esph[j] / cv[j];
+      const double temp_j = particles.temperature(j);
       double grad_w[3];    // grad_i W_ij = (r_i - r_j) / r dW/dr
       for (int a = 0; a < 3; a++) grad_w[a] = del[a] * dwdr / r;
       sphg_add(g, L, del, grad_w, volume_j, temp_j - temp_i);

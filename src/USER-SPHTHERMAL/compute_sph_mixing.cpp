@@ -27,6 +27,7 @@
 #include "neighbor.h"
 #include "pair_sph_cleary_heat.h"
 #include "pair_sph_harmonic_visc.h"
+#include "sph_particle.h"
 #include "sph_hub.h"
 #include "sph_compat.h"
 #include "sph_kernels.h"
@@ -150,7 +151,7 @@ void ComputeSPHMixing::setup()
 
 double ComputeSPHMixing::volume(int i) const
 {
-  return (atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]]) / atom->rho[i];
+  return SPHParticles(atom).volume(i);
 }
 
 bool ComputeSPHMixing::in_component(int i) const

@@ -31,6 +31,7 @@
 #include "modify.h"
 #include "sph_checks.h"
 #include "update.h"
+#include "sph_particle.h"
 
 #include <cmath>
 #include <cstring>
@@ -147,13 +148,11 @@ void ComputeSPHNusselt::init()
     error->all(FLERR, "{} {}: group {} has no atoms; give wall atoms of fix {}", cmd, id,
                group->names[igroup], wall_id);
   const int *const mask = atom->mask;
-  tagint stray = MAXTAGINT;
+  SPHCheck::FirstBad stray;
   for (int i = 0; i < atom->nlocal; i++)
-    if ((mask[i] & groupbit) && !(mask[i] & wall->groupbit)) stray = MIN(stray, atom->tag[i]);
-  tagint first = MAXTAGINT;
-  MPI_Allreduce(&stray, &first, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (first != MAXTAGINT)
-    error->all(FLERR, "{}: atom {} of group {} is not in group {} of wall fix {}", cmd, first,
+    if ((mask[i] & groupbit) && !(mask[i] & wall->groupbit)) stray.consider(atom->tag[i]);
+  if (stray.agree(lmp))
+    error->all(FLERR, "{}: atom {} of group {} is not in group {} of wall fix {}", cmd, stray.tag,
                group->names[igroup], group->names[wall->igroup], wall_id);
 
   // the surface is looked at in the first evaluation of the run, once the
@@ -297,6 +296,7 @@ double ComputeSPHNusselt::first_layer_depth()
 
 void ComputeSPHNusselt::check_surface(double depth_min)
 {
+  const SPHParticles particles(atom);
   if (!std::isfinite(depth_min)) return;    // no ghost points yet (on any rank)
   surface_checked = 1;
   staircase_spacing = 0.0;
@@ -308,7 +308,7 @@ void ComputeSPHNusselt::check_surface(double depth_min)
     double gradient, depth;
     if (!(mask[i] & groupbit) || !wall_surface->surface_gradient(i, gradient, depth)) continue;
     if (depth <= FIRST_LAYER * depth_min) {
-      const double mass = atom->rmass_flag ? atom->rmass[i] : atom->mass[atom->type[i]];
+      const double mass = particles.mass(i);
       const double rho = atom->rho ? atom->rho[i] : 0.0;
       if (mass > 0.0 && rho > 0.0 && std::isfinite(mass / rho)) {
         sums[0] += pow(mass / rho, 1.0 / dimension);

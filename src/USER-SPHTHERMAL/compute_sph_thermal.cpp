@@ -14,6 +14,7 @@
 #include "error.h"
 #include "sph_checks.h"
 #include "update.h"
+#include "sph_particle.h"
 
 using namespace LAMMPS_NS;
 
@@ -62,15 +63,13 @@ double ComputeSPHThermal::compute_scalar()
 
 void ComputeSPHThermal::compute_vector()
 {
+  const SPHParticles particles(atom);
   invoked_vector = update->ntimestep;
-  const double *const mass = atom->mass;
-  const double *const rmass = atom->rmass;
-  const int *const type = atom->type;
   const int *const mask = atom->mask;
   double local[3] = {0.0, 0.0, 0.0};
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    const double m = rmass ? rmass[i] : mass[type[i]];
+    const double m = particles.mass(i);
     local[0] += m * atom->esph[i];
     local[1] += m * atom->cv[i];
     local[2] += m * atom->desph[i];

@@ -25,6 +25,7 @@
 #include "sph_compat.h"
 #include "sph_eos.h"
 #include "sph_hub.h"
+#include "sph_particle.h"
 
 #include <cmath>
 #include <cstring>
@@ -200,6 +201,7 @@ void FixSPHBoussinesq::setup(int vflag)
 
 void FixSPHBoussinesq::check_compression()
 {
+  const SPHParticles particles(atom);
   const double *const g = buoyancy.gravity;
   // scaled: |g| of a typo such as 1e300 must not overflow to inf
   const double gmax = fmax(fabs(g[0]), fmax(fabs(g[1]), fabs(g[2])));
@@ -217,7 +219,6 @@ void FixSPHBoussinesq::check_compression()
   }
 
   const double *const *const x = atom->x;
-  const double *const esph = atom->esph;
   const double *const cv = atom->cv;
   const int *const mask = atom->mask;
   // -(lowest projection), highest projection on g, largest |T - T0|
@@ -229,7 +230,7 @@ void FixSPHBoussinesq::check_compression()
       local[1] = fmax(local[1], along);
     }
     if ((mask[i] & dirichlet_bits) || !(cv[i] > 0.0)) continue;
-    const double dt = fabs(esph[i] / cv[i] - buoyancy.t0);
+    const double dt = fabs(particles.temperature(i) - buoyancy.t0);
     if (std::isfinite(dt)) local[2] = fmax(local[2], dt);
   }
   double all[3];
@@ -276,11 +277,8 @@ void FixSPHBoussinesq::check_compression()
 
 void FixSPHBoussinesq::post_force(int /*vflag*/)
 {
+  const SPHParticles particles(atom);
   double *const *const f = atom->f;
-  const double *const esph = atom->esph;
-  const double *const cv = atom->cv;
-  const double *const rmass = atom->rmass;
-  const double *const mass = atom->mass;
   const int *const type = atom->type;
   const int *const mask = atom->mask;
   const double *const g = buoyancy.gravity;
@@ -289,8 +287,8 @@ void FixSPHBoussinesq::post_force(int /*vflag*/)
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     double a[3];
-    sphb_acceleration(g, beta[type[i]], esph[i] / cv[i], t0, a);
-    const double m = rmass ? rmass[i] : mass[type[i]];
+    sphb_acceleration(g, beta[type[i]], particles.temperature(i), t0, a);
+    const double m = particles.mass(i);
     for (int k = 0; k < 3; k++) {
       f[i][k] += m * a[k];
       force_local[k] += m * a[k];

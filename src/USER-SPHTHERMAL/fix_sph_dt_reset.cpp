@@ -39,6 +39,7 @@
 #include "sph_hub.h"
 #include "sph_kernels.h"
 #include "sph_material_laws.h"
+#include "sph_particle.h"
 #include "sph_timestep.h"
 #include "update.h"
 
@@ -326,6 +327,7 @@ void FixSPHDtReset::choose_dt()
 
 void FixSPHDtReset::bad_limit(int k)
 {
+  const SPHParticles particles(atom);
   const double *const *const v = atom->v;
   const double *const *const f = atom->f;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -341,13 +343,13 @@ void FixSPHDtReset::bad_limit(int k)
                                     force->ftm2v));
       state = fmt::format("rho = {}, |v| = {}", atom->rho[i], speed);
     } else if (k == FORCE) {
-      const double m = atom->rmass ? atom->rmass[i] : atom->mass[itype];
+      const double m = particles.mass(i);
       const double fsq = f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2];
       if (fsq > 0.0 || !std::isfinite(fsq))
         dt = SPHTimestep::force(coeff[k], h, SPHTimestep::acceleration(sqrt(fsq), m, force->ftm2v));
       state = fmt::format("|f| = {}, mass = {}", sqrt(fsq), m);
     } else if (k == VISCOUS && materials->viscosity(itype)) {
-      const double T = atom->esph[i] / atom->cv[i];
+      const double T = particles.temperature(i);
       const double mu = sphm_law_eval(materials->viscosity(itype), T);
       if (mu > 0.0 || !std::isfinite(mu))
         dt = SPHTimestep::viscous(coeff[k], h, atom->rho[i], mu, force->ftm2v);

@@ -44,6 +44,7 @@
 #include "sph_compat.h"
 #include "sph_gradient.h"
 #include "update.h"
+#include "sph_particle.h"
 
 #include <algorithm>
 #include <cmath>
@@ -254,12 +255,8 @@ void FixSPHInletTemperature::correct_pairs(int first)
 
 template <int MIRROR> double FixSPHInletTemperature::inlet_terms()
 {
+  const SPHParticles particles(atom);
   const double *const *const x = atom->x;
-  const double *const esph = atom->esph;
-  const double *const cv = atom->cv;
-  const double *const mass = atom->mass;
-  const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
-  const int *const type = atom->type;
   const int *const mask = atom->mask;
   double *const desph = atom->desph;
   const double cut = pair->support();
@@ -273,8 +270,8 @@ template <int MIRROR> double FixSPHInletTemperature::inlet_terms()
     if (!(mask[i] & groupbit)) continue;
     if (x[i][axis] >= lo + cut && x[i][axis] < lo + length - cut) continue;
     const double cell_i = periodic_cell(domain, x[i][axis], axis);
-    const double mass_i = rmass ? rmass[i] : mass[type[i]];
-    const double temp_i = esph[i] / cv[i];
+    const double mass_i = particles.mass(i);
+    const double temp_i = particles.temperature(i);
     double grad[3] = {0.0, 0.0, 0.0};
     int gradient_known = 0;
     const int *const jlist = list->firstneigh[i];
@@ -301,7 +298,7 @@ template <int MIRROR> double FixSPHInletTemperature::inlet_terms()
             temp_i + grad[0] * to_mirror[0] + grad[1] * to_mirror[1] + grad[2] * to_mirror[2];
         temp_ghost = 2.0 * t_inlet - temp_mirror;
       }
-      const double mass_j = rmass ? rmass[j] : mass[type[j]];
+      const double mass_j = particles.mass(j);
       const double f = pair->pair_term(i, j, rsq, temp_i - temp_ghost);
       desph[i] += mass_j * f;
       rate_local += mass_i * mass_j * f;
@@ -316,12 +313,8 @@ template <int MIRROR> double FixSPHInletTemperature::inlet_terms()
 
 void FixSPHInletTemperature::remove_plane_pairs()
 {
+  const SPHParticles particles(atom);
   const double *const *const x = atom->x;
-  const double *const esph = atom->esph;
-  const double *const cv = atom->cv;
-  const double *const mass = atom->mass;
-  const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
-  const int *const type = atom->type;
   double *const desph = atom->desph;
   const int nlocal = atom->nlocal;
   const int newton = force->newton_pair;
@@ -336,8 +329,8 @@ void FixSPHInletTemperature::remove_plane_pairs()
     // no neighbour across the plane (and inside the box: cell 0)
     if (x[i][axis] >= lo + cut && x[i][axis] < lo + length - cut) continue;
     const double cell_i = periodic_cell(domain, x[i][axis], axis);
-    const double mass_i = rmass ? rmass[i] : mass[type[i]];
-    const double temp_i = esph[i] / cv[i];
+    const double mass_i = particles.mass(i);
+    const double temp_i = particles.temperature(i);
     const int *const jlist = pair_list->firstneigh[i];
     for (int jj = 0; jj < pair_list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
@@ -347,8 +340,8 @@ void FixSPHInletTemperature::remove_plane_pairs()
       const double delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       if (rsq >= cutsq) continue;
-      const double f = pair->pair_term(i, j, rsq, temp_i - esph[j] / cv[j]);
-      desph[i] -= (rmass ? rmass[j] : mass[type[j]]) * f;
+      const double f = pair->pair_term(i, j, rsq, temp_i - particles.temperature(j));
+      desph[i] -= particles.mass(j) * f;
       if (newton || j < nlocal) desph[j] += mass_i * f;
     }
   }
@@ -363,16 +356,11 @@ void FixSPHInletTemperature::remove_plane_pairs()
 
 void FixSPHInletTemperature::temperature_gradient(int i, double cell_i, double *grad) const
 {
+  const SPHParticles particles(atom);
   const double *const *const x = atom->x;
-  const double *const esph = atom->esph;
-  const double *const cv = atom->cv;
-  const double *const rho = atom->rho;
-  const double *const mass = atom->mass;
-  const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
-  const int *const type = atom->type;
   const double cut = pair->support();
   const double cutsq = cut * cut;
-  const double temp_i = esph[i] / cv[i];
+  const double temp_i = particles.temperature(i);
   double g[3] = {0.0, 0.0, 0.0};
   double L[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   const int *const jlist = list->firstneigh[i];
@@ -386,8 +374,8 @@ void FixSPHInletTemperature::temperature_gradient(int i, double cell_i, double *
     // grad_i W_ij = dW/dr (r_i - r_j) / r
     const double f = pair->kernel_dwdr(r) / r;
     const double grad_w[3] = {f * del[0], f * del[1], f * del[2]};
-    sphg_add(g, L, del, grad_w, (rmass ? rmass[j] : mass[type[j]]) / rho[j],
-             esph[j] / cv[j] - temp_i);
+    sphg_add(g, L, del, grad_w, particles.volume(j),
+             particles.temperature(j) - temp_i);
   }
   sphg_solve_transposed(L, g, grad, domain->dimension);
 }
@@ -414,11 +402,9 @@ double FixSPHInletTemperature::passes_now(int i) const
 
 void FixSPHInletTemperature::post_integrate()
 {
+  const SPHParticles particles(atom);
   double *const esph = atom->esph;
   const double *const cv = atom->cv;
-  const double *const mass = atom->mass;
-  const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
-  const int *const type = atom->type;
   const int *const mask = atom->mask;
 
   double energy_local = 0.0;
@@ -432,7 +418,7 @@ void FixSPHInletTemperature::post_integrate()
     if (!passed) continue;
     crossed_along++;
     const double esph_inlet = cv[i] * t_inlet;
-    energy_local += (rmass ? rmass[i] : mass[type[i]]) * (esph_inlet - esph[i]);
+    energy_local += particles.mass(i) * (esph_inlet - esph[i]);
     esph[i] = esph_inlet;
   }
   double energy_step = 0.0;

@@ -53,9 +53,11 @@
 #include "pair_sph_harmonic_visc.h"
 #include "sph_hub.h"
 #include "sph_checks.h"
+#include "sph_comm_stage.h"
 #include "sph_compat.h"
 #include "sph_gradient.h"
 #include "sph_kernels.h"
+#include "sph_particle.h"
 #include "sph_shift.h"
 #include "update.h"
 
@@ -285,11 +287,8 @@ void FixSPHShift::check_capped()
 
 void FixSPHShift::shift_from_pair_sums()
 {
+  const SPHParticles particles(atom);
   double *const *const x = atom->x;
-  const double *const rho = atom->rho;
-  const double *const rmass = atom->rmass;
-  const double *const mass = atom->mass;
-  const int *const type = atom->type;
   const int *const mask = atom->mask;
   const int dim = domain->dimension;
   const double h = cutoff / sphk_support(kernel_kind);
@@ -301,7 +300,7 @@ void FixSPHShift::shift_from_pair_sums()
     moved_local++;
     double dr[3];
     displacement(i, &sums_of[3 * (size_t) i],
-                 spacing_of((rmass ? rmass[i] : mass[type[i]]) / rho[i], dim), h, dim, dr,
+                 spacing_of(particles.volume(i), dim), h, dim, dr,
                  largest_local, capped_local);
     for (int a = 0; a < 3; a++) x[i][a] += dr[a];
   }
@@ -387,14 +386,11 @@ template <int FORM, int CORRECT> void FixSPHShift::shift_continuity()
 
 template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
 {
+  const SPHParticles particles(atom);
   double *const *const x = atom->x;
   double *const *const v = atom->v;
   double *const rho = atom->rho;
-  const double *const esph = atom->esph;
   const double *const cv = atom->cv;
-  const double *const rmass = atom->rmass;
-  const double *const mass = atom->mass;
-  const int *const type = atom->type;
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
   const int newton = force->newton_pair;
@@ -408,7 +404,7 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
   // every owned and ghost atom's volume (and W(dx), T), once rather than once per pair
   const int nall = nlocal + atom->nghost;
   volume.resize(nall);
-  for (int i = 0; i < nall; i++) volume[i] = (rmass ? rmass[i] : mass[type[i]]) / rho[i];
+  for (int i = 0; i < nall; i++) volume[i] = particles.volume(i);
   if (FORM == DELTAPLUS) {
     w_spacing.resize(nall);
     for (int i = 0; i < nall; i++)
@@ -416,7 +412,7 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
   }
   if (CORRECT) {
     temperature.resize(nall);
-    for (int i = 0; i < nall; i++) temperature[i] = esph[i] / cv[i];
+    for (int i = 0; i < nall; i++) temperature[i] = particles.temperature(i);
   }
 
   // the neighbour sums of an atom of the group, at these offsets:
@@ -440,7 +436,7 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
     if (FORM == DELTAPLUS) {
       const double weight = sphs_deltaplus_weight(w_pair, w_spacing[self], r_coeff, r_power) *
           (other_in_group
-               ? 2.0 * (rmass ? rmass[other] : mass[type[other]]) / (rho[self] + rho[other])
+               ? 2.0 * particles.mass(other) / (rho[self] + rho[other])
                : volume[self]);
       for (int a = 0; a < 3; a++) s[a] += weight * grad_w[a];
     } else
@@ -547,7 +543,7 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
     for (int a = 0; a < 3; a++) x[i][a] += shift[3 * (size_t) i + a];
     if (CORRECT) {
       atom->esph[i] += cv[i] * dtemp[i];
-      energy_local += (rmass ? rmass[i] : mass[type[i]]) * cv[i] * dtemp[i];
+      energy_local += particles.mass(i) * cv[i] * dtemp[i];
     }
     if (CORRECT == CORRECT_ALL) {
       rho[i] += dflow[4 * (size_t) i];
@@ -566,44 +562,34 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
   moved = moved_local;
 }
 
+SPHCommStage FixSPHShift::forward_fields() const
+{
+  SPHCommStage stage;
+  stage.flat(atom->rho, 1);
+  if (correct) stage.flat(atom->esph, 1);
+  if (correct == CORRECT_ALL) stage.rows(atom->v, 3);
+  return stage;
+}
+
 int FixSPHShift::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
-  int m = 0;
-  for (int k = 0; k < n; k++) {
-    buf[m++] = atom->rho[send[k]];
-    if (correct) buf[m++] = atom->esph[send[k]];
-    if (correct == CORRECT_ALL)
-      for (int a = 0; a < 3; a++) buf[m++] = atom->v[send[k]][a];
-  }
-  return m;
+  return forward_fields().pack(n, send, buf);
 }
 
 void FixSPHShift::unpack_forward_comm(int n, int first, double *buf)
 {
-  int m = 0;
-  for (int k = 0; k < n; k++) {
-    atom->rho[first + k] = buf[m++];
-    if (correct) atom->esph[first + k] = buf[m++];
-    if (correct == CORRECT_ALL)
-      for (int a = 0; a < 3; a++) atom->v[first + k][a] = buf[m++];
-  }
+  forward_fields().unpack_forward(n, first, buf);
 }
 
 // a ghost's neighbour sums go to its owner
 int FixSPHShift::pack_reverse_comm(int n, int first, double *buf)
 {
-  const size_t count = (size_t) n * sums_per_atom;
-  memcpy(buf, &sums[(size_t) sums_per_atom * first], count * sizeof(double));
-  return (int) count;
+  return SPHCommStage().flat(sums.data(), sums_per_atom).pack(n, first, buf);
 }
 
 void FixSPHShift::unpack_reverse_comm(int n, int *list_send, double *buf)
 {
-  int m = 0;
-  for (int k = 0; k < n; k++) {
-    double *const s = &sums[(size_t) sums_per_atom * list_send[k]];
-    for (int q = 0; q < sums_per_atom; q++) s[q] += buf[m++];
-  }
+  SPHCommStage().flat(sums.data(), sums_per_atom).unpack_reverse(n, list_send, buf);
 }
 
 /* ----------------------------------------------------------------------

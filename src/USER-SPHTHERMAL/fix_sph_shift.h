@@ -44,6 +44,7 @@ class FixSPHShift : public Fix {
   bool corrects() const { return correct != 0; }
 
  protected:
+  class SPHCommStage forward_fields() const;    // what the forward comm carries
   enum { SKILLEN, DELTAPLUS };
   int form;
   double coefficient;    // D (skillen) or C (delta-plus)

@@ -19,6 +19,7 @@
 #include "sph_checks.h"
 #include "sph_hub.h"
 #include "update.h"
+#include "sph_particle.h"
 
 #include <cmath>
 #include <cstring>
@@ -132,19 +133,15 @@ void FixSPHSurfaceFlux::pre_force(int /*vflag*/)
 
 void FixSPHSurfaceFlux::add_flux(int first)
 {
-  const double *const esph = atom->esph;
-  const double *const cv = atom->cv;
-  const double *const mass = atom->mass;
-  const double *const rmass = atom->rmass;
-  const int *const type = atom->type;
+  const SPHParticles particles(atom);
   const int *const mask = atom->mask;
   double *const desph = atom->desph;
 
   double rate_local = 0.0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    const double q = convective ? h_transfer * (t_ambient - esph[i] / cv[i]) : q_given;
-    desph[i] += q * area / (rmass ? rmass[i] : mass[type[i]]);
+    const double q = convective ? h_transfer * (t_ambient - particles.temperature(i)) : q_given;
+    desph[i] += q * area / particles.mass(i);
     rate_local += q * area;
   }
   double rate;

@@ -28,10 +28,12 @@
 #include "sph_body_force.h"
 #include "sph_buoyancy.h"
 #include "sph_checks.h"
+#include "sph_comm_stage.h"
 #include "sph_compat.h"
 #include "sph_hub.h"
 #include "sph_kernels.h"
 #include "update.h"
+#include "sph_particle.h"
 
 #include <cmath>
 #include <cstring>
@@ -239,6 +241,7 @@ void FixSPHWallAdami::sample_acceleration(double half_dt)
 
 void FixSPHWallAdami::pre_force_walls()
 {
+  const SPHParticles particles(atom);
   const double *const *const x = atom->x;
   const double *const *const v = atom->v;
   double *const *const vest = atom->vest;
@@ -262,8 +265,6 @@ void FixSPHWallAdami::pre_force_walls()
     memory->destroy(solid_state);
     memory->create(solid_state, nmax, 4, "sph/wall/adami:solid_state");
   }
-  const double *const esph = atom->esph;
-  const double *const cv = atom->cv;
   const int ntypes = atom->ntypes;
 
   if (!fluid_near_valid || (int) first_fluid.size() != atom->nlocal + 1) find_fluid_near();
@@ -275,11 +276,11 @@ void FixSPHWallAdami::pre_force_walls()
     const int j = fluid_atoms[m];
     // with thermal expansion the pair refuses a T without reference density
     fluid_pressure[m] = sphe_pressure_at(materials->eos(type[j]), rho[j],
-                                         thermal_expansion ? esph[j] / cv[j] : 0.0);
+                                         thermal_expansion ? particles.temperature(j) : 0.0);
     double accel[3] = {body[0], body[1], body[2]};
     if (buoyancy && (mask[j] & buoyancy->groupbit)) {
       double a[3];
-      sphb_acceleration(buoyancy->gravity, buoyancy->beta[type[j]], esph[j] / cv[j], buoyancy->t0,
+      sphb_acceleration(buoyancy->gravity, buoyancy->beta[type[j]], particles.temperature(j), buoyancy->t0,
                         a);
       for (int k = 0; k < 3; k++) accel[k] += a[k];
     }
@@ -314,7 +315,7 @@ void FixSPHWallAdami::pre_force_walls()
       for (int k = 0; k < 3; k++) weighted_v[k] += w * v[j][k];
       if (is_solid) {
         fluid_weight[type[j]] += w;
-        weighted_mu += w * materials->viscosity_at(type[j], esph[j] / cv[j], "Fix sph/wall/adami");
+        weighted_mu += w * materials->viscosity_at(type[j], particles.temperature(j), "Fix sph/wall/adami");
       }
     }
     // the wall's own acceleration: P_w gets -a_w . sum_f rho_f r_wf W_wf
@@ -326,7 +327,7 @@ void FixSPHWallAdami::pre_force_walls()
       // kernel-weighted mean over the fluid neighbours' materials
       const double p_wall = (weight > 0.0) ? (weighted_p + hydrostatic) / weight : 0.0;
       // (at the wall's temperature, with thermal expansion)
-      const double t_wall = thermal_expansion ? esph[i] / cv[i] : 0.0;
+      const double t_wall = thermal_expansion ? particles.temperature(i) : 0.0;
       double weighted_rho = 0.0, weighted_rho0 = 0.0;
       for (int t = 1; t <= ntypes; t++)
         if (fluid_weight[t] > 0.0) {
@@ -344,7 +345,7 @@ void FixSPHWallAdami::pre_force_walls()
       if (weight > 0.0 && solid_state[i][1] <= 0.0) below_eos++;
     } else {
       const sphe_eos *eos = materials->eos(type[i]);
-      const double t_wall = eos->thermal ? esph[i] / cv[i] : 0.0;
+      const double t_wall = eos->thermal ? particles.temperature(i) : 0.0;
       rho[i] = (weight > 0.0) ? sphe_density_at(eos, (weighted_p + hydrostatic) / weight, t_wall)
                               : sphe_density_at(eos, eos->p_background, t_wall);
       if (weight > 0.0 && rho[i] <= 0.0) below_eos++;
@@ -366,20 +367,18 @@ void FixSPHWallAdami::pre_force_walls()
 
 /* ---------------------------------------------------------------------- */
 
+SPHCommStage FixSPHWallAdami::forward_fields() const
+{
+  SPHCommStage stage;
+  stage.flat(atom->rho, 1).rows(atom->vest, 3);
+  if (any_solid) stage.rows(solid_state, 4);
+  return stage;
+}
+
 int FixSPHWallAdami::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/,
                                        int * /*pbc*/)
 {
-  int m = 0;
-  for (int k = 0; k < n; k++) {
-    const int i = send[k];
-    buf[m++] = atom->rho[i];
-    buf[m++] = atom->vest[i][0];
-    buf[m++] = atom->vest[i][1];
-    buf[m++] = atom->vest[i][2];
-    if (any_solid)
-      for (int c = 0; c < 4; c++) buf[m++] = solid_state[i][c];
-  }
-  return m;
+  return forward_fields().pack(n, send, buf);
 }
 
 void FixSPHWallAdami::unpack_forward_comm(int n, int first, double *buf)
@@ -388,15 +387,7 @@ void FixSPHWallAdami::unpack_forward_comm(int n, int first, double *buf)
     nmax = atom->nmax;
     memory->grow(solid_state, nmax, 4, "sph/wall/adami:solid_state");
   }
-  int m = 0;
-  for (int i = first; i < first + n; i++) {
-    atom->rho[i] = buf[m++];
-    atom->vest[i][0] = buf[m++];
-    atom->vest[i][1] = buf[m++];
-    atom->vest[i][2] = buf[m++];
-    if (any_solid)
-      for (int c = 0; c < 4; c++) solid_state[i][c] = buf[m++];
-  }
+  forward_fields().unpack_forward(n, first, buf);
 }
 
 /* ----------------------------------------------------------------------

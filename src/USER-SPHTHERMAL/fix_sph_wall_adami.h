@@ -63,6 +63,7 @@ class FixSPHWallAdami : public Fix {
   int is_moving() const { return moving; }
 
  protected:
+  class SPHCommStage forward_fields() const;    // what the forward comm carries
   double body[3];            // body acceleration of the fluid minus that of the wall
   int body_given;            // 1: 'body' in the command; 0: the run's body force
   // moving walls: each particle's acceleration a_w, from its velocity at

@@ -29,10 +29,12 @@
 #include "force.h"
 #include "pair_sph_cleary_heat.h"
 #include "sph_checks.h"
+#include "sph_comm_stage.h"
 #include "sph_compat.h"
 #include "sph_hub.h"
 #include "sph_interpolation.h"
 #include "sph_mirror.h"
+#include "sph_particle.h"
 
 #include <cstring>
 
@@ -154,9 +156,7 @@ void FixSPHWallAdiabatic::setup(int vflag)
 
 void FixSPHWallAdiabatic::post_force(int /*vflag*/)
 {
-  const double *const mass = atom->mass;
-  const double *const rmass = atom->rmass;
-  const int *const type = atom->type;
+  const SPHParticles particles(atom);
   const int *const mask = atom->mask;
   double *const desph = atom->desph;
   const int nlocal = atom->nlocal;
@@ -165,7 +165,7 @@ void FixSPHWallAdiabatic::post_force(int /*vflag*/)
   mirror->find_junctions();
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit) || ghost_how[i] == SPHI_NONE) continue;
-    rate[i] = (rmass ? rmass[i] : mass[type[i]]) * desph[i];
+    rate[i] = particles.mass(i) * desph[i];
     taken_local[mirror->at_junction(i)] += rate[i];
     if (conserve) desph[i] = 0.0;
   }
@@ -194,15 +194,14 @@ double FixSPHWallAdiabatic::compute_vector(int n)
 /* ---------------------------------------------------------------------- */
 
 int FixSPHWallAdiabatic::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/,
-                                           int * /*pbc*/)
+                                          int * /*pbc*/)
 {
-  for (int k = 0; k < n; k++) buf[k] = atom->esph[send[k]];
-  return n;
+  return SPHCommStage().flat(atom->esph, 1).pack(n, send, buf);
 }
 
 void FixSPHWallAdiabatic::unpack_forward_comm(int n, int first, double *buf)
 {
-  for (int k = 0; k < n; k++) atom->esph[first + k] = buf[k];
+  SPHCommStage().flat(atom->esph, 1).unpack_forward(n, first, buf);
 }
 
 int FixSPHWallAdiabatic::pack_reverse_comm(int n, int first, double *buf)

@@ -30,11 +30,13 @@
 #include "neighbor.h"
 #include "pair_sph_cleary_heat.h"
 #include "sph_checks.h"
+#include "sph_comm_stage.h"
 #include "sph_compat.h"
 #include "sph_hub.h"
 #include "sph_interpolation.h"
 #include "sph_kernels.h"
 #include "sph_mirror.h"
+#include "sph_particle.h"
 
 #include <cmath>
 #include <cstring>
@@ -154,6 +156,7 @@ void FixSPHWallDirichlet::dummies_mirrored()
 
 void FixSPHWallDirichlet::dummies_shepard()
 {
+  const SPHParticles particles(atom);
   const double *const *const x = atom->x;
   const double *const cv = atom->cv;
   const int *const mask = atom->mask;
@@ -174,7 +177,7 @@ void FixSPHWallDirichlet::dummies_shepard()
       if (rsq >= cutsq) continue;
       const double w = sphk_w(&kernel, sqrt(rsq));
       weight += w;
-      weighted_t += w * esph[j] / cv[j];
+      weighted_t += w * particles.temperature(j);
     }
     const double t_dummy = (weight > 0.0) ? 2.0 * t_wall - weighted_t / weight : t_wall;
     esph[i] = cv[i] * t_dummy;
@@ -210,12 +213,11 @@ void FixSPHWallDirichlet::post_force(int /*vflag*/)
 int FixSPHWallDirichlet::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/,
                                           int * /*pbc*/)
 {
-  for (int k = 0; k < n; k++) buf[k] = atom->esph[send[k]];
-  return n;
+  return SPHCommStage().flat(atom->esph, 1).pack(n, send, buf);
 }
 
 void FixSPHWallDirichlet::unpack_forward_comm(int n, int first, double *buf)
 {
-  for (int k = 0; k < n; k++) atom->esph[first + k] = buf[k];
+  SPHCommStage().flat(atom->esph, 1).unpack_forward(n, first, buf);
 }
 

@@ -16,6 +16,7 @@
 #include "memory.h"
 #include "sph_checks.h"
 #include "update.h"
+#include "sph_particle.h"
 
 #include <cmath>
 #include <cstring>
@@ -78,9 +79,7 @@ FixSPHWallTally::~FixSPHWallTally()
 
 void FixSPHWallTally::tally(int first, int zero_rates)
 {
-  const double *const mass = atom->mass;
-  const double *const rmass = atom->rmass;
-  const int *const type = atom->type;
+  const SPHParticles particles(atom);
   const int *const mask = atom->mask;
   double *const desph = atom->desph;
   const int nlocal = atom->nlocal;
@@ -92,7 +91,7 @@ void FixSPHWallTally::tally(int first, int zero_rates)
   double rate_local = 0.0;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    const double rate_i = (rmass ? rmass[i] : mass[type[i]]) * desph[i];
+    const double rate_i = particles.mass(i) * desph[i];
     if (!first) wall[i][1] += dt_half * (wall[i][0] + rate_i);
     wall[i][0] = rate_i;
     if (spacing > 0.0) wall[i][2] = rate_i / area;

@@ -24,6 +24,7 @@
 #include "sph_checks.h"
 #include "sph_compat.h"
 #include "sph_conduction.h"
+#include "sph_dispatch.h"
 #include "sph_consistent.h"
 #include "sph_hub.h"
 #include "sph_support.h"
@@ -138,22 +139,30 @@ void PairSPHClearyHeat::zero_relax_rate()
    the pair loop over ilist[ifrom..ito), adding to desph (and relax_rate)
 ------------------------------------------------------------------------- */
 
+struct PairSPHClearyHeat::EvalCall {
+  PairSPHClearyHeat *pair;
+  int ifrom, ito;
+  double *desph, *relax;
+  template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RMASS, int RELAX>
+  void run()
+  {
+    pair->eval<KERNEL, MEAN, CORRECT, VARYING_K, NEWTON_PAIR, RMASS, RELAX>(ifrom, ito, desph,
+                                                                          relax);
+  }
+};
+
 void PairSPHClearyHeat::eval_pairs(int ifrom, int ito, double *desph, double *relax)
 {
-  switch (kernel_kind) {
-    case SPHK_LUCY:
-      eval_kernel<SPHK_LUCY>(ifrom, ito, desph, relax);
-      break;
-    case SPHK_CUBIC:
-      eval_kernel<SPHK_CUBIC>(ifrom, ito, desph, relax);
-      break;
-    case SPHK_QUINTIC:
-      eval_kernel<SPHK_QUINTIC>(ifrom, ito, desph, relax);
-      break;
-    case SPHK_WENDLAND:
-      eval_kernel<SPHK_WENDLAND>(ifrom, ito, desph, relax);
-      break;
-  }
+  EvalCall call = {this, ifrom, ito, desph, relax};
+  const int settings[] = {kernel_kind,
+                          mean,
+                          correct ? 1 : 0,
+                          conductivity_varies ? 1 : 0,
+                          force->newton_pair ? 1 : 0,
+                          (atom->rmass_flag && atom->rmass) ? 1 : 0,
+                          relax_wanted ? 1 : 0};
+  SPHDispatch<SPHKernelKinds, SPHValues<SPHC_ARITHMETIC, SPHC_INTERFACE, SPHC_HARMONIC>, SPHFlag,
+              SPHFlag, SPHFlag, SPHFlag, SPHFlag>::to(call, settings);
 }
 
 /* ----------------------------------------------------------------------
@@ -181,51 +190,6 @@ void PairSPHClearyHeat::finish_relax()
 }
 
 
-
-template <int KERNEL>
-void PairSPHClearyHeat::eval_kernel(int ifrom, int ito, double *desph, double *relax)
-{
-  if (mean == SPHC_ARITHMETIC)
-    eval_mean<KERNEL, SPHC_ARITHMETIC>(ifrom, ito, desph, relax);
-  else if (mean == SPHC_INTERFACE)
-    eval_mean<KERNEL, SPHC_INTERFACE>(ifrom, ito, desph, relax);
-  else
-    eval_mean<KERNEL, SPHC_HARMONIC>(ifrom, ito, desph, relax);
-}
-
-template <int KERNEL, int MEAN>
-void PairSPHClearyHeat::eval_mean(int ifrom, int ito, double *desph, double *relax)
-{
-  if (correct)
-    eval_flags<KERNEL, MEAN, 1>(ifrom, ito, desph, relax);
-  else
-    eval_flags<KERNEL, MEAN, 0>(ifrom, ito, desph, relax);
-}
-
-template <int KERNEL, int MEAN, int CORRECT>
-void PairSPHClearyHeat::eval_flags(int ifrom, int ito, double *desph, double *relax)
-{
-  const int flags = (relax_wanted ? 8 : 0) | (conductivity_varies ? 4 : 0) |
-      (force->newton_pair ? 2 : 0) | ((atom->rmass_flag && atom->rmass) ? 1 : 0);
-  switch (flags) {
-    case 0: eval<KERNEL, MEAN, CORRECT, 0, 0, 0, 0>(ifrom, ito, desph, relax); break;
-    case 1: eval<KERNEL, MEAN, CORRECT, 0, 0, 1, 0>(ifrom, ito, desph, relax); break;
-    case 2: eval<KERNEL, MEAN, CORRECT, 0, 1, 0, 0>(ifrom, ito, desph, relax); break;
-    case 3: eval<KERNEL, MEAN, CORRECT, 0, 1, 1, 0>(ifrom, ito, desph, relax); break;
-    case 4: eval<KERNEL, MEAN, CORRECT, 1, 0, 0, 0>(ifrom, ito, desph, relax); break;
-    case 5: eval<KERNEL, MEAN, CORRECT, 1, 0, 1, 0>(ifrom, ito, desph, relax); break;
-    case 6: eval<KERNEL, MEAN, CORRECT, 1, 1, 0, 0>(ifrom, ito, desph, relax); break;
-    case 7: eval<KERNEL, MEAN, CORRECT, 1, 1, 1, 0>(ifrom, ito, desph, relax); break;
-    case 8: eval<KERNEL, MEAN, CORRECT, 0, 0, 0, 1>(ifrom, ito, desph, relax); break;
-    case 9: eval<KERNEL, MEAN, CORRECT, 0, 0, 1, 1>(ifrom, ito, desph, relax); break;
-    case 10: eval<KERNEL, MEAN, CORRECT, 0, 1, 0, 1>(ifrom, ito, desph, relax); break;
-    case 11: eval<KERNEL, MEAN, CORRECT, 0, 1, 1, 1>(ifrom, ito, desph, relax); break;
-    case 12: eval<KERNEL, MEAN, CORRECT, 1, 0, 0, 1>(ifrom, ito, desph, relax); break;
-    case 13: eval<KERNEL, MEAN, CORRECT, 1, 0, 1, 1>(ifrom, ito, desph, relax); break;
-    case 14: eval<KERNEL, MEAN, CORRECT, 1, 1, 0, 1>(ifrom, ito, desph, relax); break;
-    case 15: eval<KERNEL, MEAN, CORRECT, 1, 1, 1, 1>(ifrom, ito, desph, relax); break;
-  }
-}
 
 /* ----------------------------------------------------------------------
    conductivity of every owned and ghost atom at its temperature

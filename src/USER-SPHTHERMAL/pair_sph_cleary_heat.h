@@ -13,6 +13,7 @@ PairStyle(sph/cleary/heat,PairSPHClearyHeat);
 #define LMP_PAIR_SPH_CLEARY_HEAT_H
 
 #include "pair_sph_kernel.h"
+#include "sph_comm_stage.h"
 #include "sph_conduction.h"
 #include "sph_second_moment.h"
 
@@ -173,6 +174,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
     COMM_IFACE_NEAR
   };
   int comm_stage;
+  SPHCommStage comm_fields() const;    // the per-atom values of comm_stage
   // 'mean interface': per type pair, 1 when the two types differ in
   // conductivity law (the pair crosses an interface); per type, the
   // conductivity when all are constant; per atom (owned and ghost) the
@@ -231,11 +233,8 @@ class PairSPHClearyHeat : public PairSPHKernel {
   // (pair_sph_cleary_heat_support.cpp)
   void refresh_support();
   template <int KERNEL> void update_pairs();
-  template <int KERNEL> void eval_kernel(int ifrom, int ito, double *desph, double *relax);
-  template <int KERNEL, int MEAN>
-  void eval_mean(int ifrom, int ito, double *desph, double *relax);
-  template <int KERNEL, int MEAN, int CORRECT>
-  void eval_flags(int ifrom, int ito, double *desph, double *relax);
+  struct SupportCall;    // update_pairs<KERNEL> for this run's kernel (sph_dispatch.h)
+  struct EvalCall;       // eval<...> for this run's settings
   template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RMASS,
             int RELAX>
   void eval(int ifrom, int ito, double *desph, double *relax);

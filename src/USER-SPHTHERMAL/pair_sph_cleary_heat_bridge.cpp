@@ -23,10 +23,12 @@
 #include "neighbor.h"
 #include "pair_sph_harmonic_visc.h"
 #include "sph_checks.h"
+#include "sph_comm_stage.h"
 #include "sph_compat.h"
 #include "sph_conduction.h"
 #include "sph_consistent.h"
 #include "sph_hub.h"
+#include "sph_particle.h"
 #include "sph_support.h"
 #include "update.h"
 
@@ -76,10 +78,7 @@ PairSPHClearyHeat::FlowLoopTerm PairSPHClearyHeat::begin_flow_loop_term()
   if (relax_wanted) zero_relax_rate();
   // the heat style's mass of every atom (the flow's differs for solids)
   const int nall = atom->nlocal + atom->nghost;
-  if (atom->rmass_flag && atom->rmass)
-    memcpy(mass_of, atom->rmass, nall * sizeof(double));
-  else
-    for (int i = 0; i < nall; i++) mass_of[i] = atom->mass[atom->type[i]];
+  SPHParticles(atom).masses(mass_of, nall);
   FlowLoopTerm term;
   term.temperature = temperature;
   term.mass = mass_of;
@@ -98,6 +97,7 @@ PairSPHClearyHeat::FlowLoopTerm PairSPHClearyHeat::begin_flow_loop_term()
 
 void PairSPHClearyHeat::update_temperature()
 {
+  const SPHParticles particles(atom);
   const int nall = atom->nlocal + atom->nghost;
   if (atom->nmax > nmax_flow_loop) {
     nmax_flow_loop = atom->nmax;
@@ -106,9 +106,7 @@ void PairSPHClearyHeat::update_temperature()
     memory->create(temperature, nmax_flow_loop, "pair:temperature");
     memory->create(mass_of, nmax_flow_loop, "pair:mass_of");
   }
-  const double *const esph = atom->esph;
-  const double *const cv = atom->cv;
-  for (int i = 0; i < nall; i++) temperature[i] = esph[i] / cv[i];
+  particles.temperatures(temperature, nall);
 }
 
 void PairSPHClearyHeat::end_flow_loop_term()
@@ -168,12 +166,8 @@ double PairSPHClearyHeat::pair_weight(int i, int j, double r) const
 
 void PairSPHClearyHeat::tally_flows()
 {
+  const SPHParticles particles(atom);
   const double *const *const x = atom->x;
-  const double *const esph = atom->esph;
-  const double *const cv = atom->cv;
-  const double *const mass = atom->mass;
-  const double *const rmass = (atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr;
-  const int *const type = atom->type;
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
   const int newton = force->newton_pair;
@@ -194,9 +188,9 @@ void PairSPHClearyHeat::tally_flows()
       const double delz = x[i][2] - x[j][2];
       const double rsq = delx * delx + dely * dely + delz * delz;
       if (rsq >= cutsq_kernel) continue;
-      const double f_ij = pair_term(i, j, rsq, esph[i] / cv[i] - esph[j] / cv[j]);
-      const double energy = (rmass ? rmass[i] : mass[type[i]]) *
-          (rmass ? rmass[j] : mass[type[j]]) * f_ij;    // into i, out of j
+      const double f_ij = pair_term(i, j, rsq, particles.temperature(i) - particles.temperature(j));
+      const double energy = particles.mass(i) *
+          particles.mass(j) * f_ij;    // into i, out of j
       for (size_t k = 0; k < flows.size(); k++) {
         if ((mask[i] & flows[k].to) && (mask[j] & flows[k].from)) local[k] += energy;
         if ((mask[j] & flows[k].to) && (mask[i] & flows[k].from) && (newton || j < nlocal))
@@ -211,113 +205,63 @@ void PairSPHClearyHeat::tally_flows()
 
 /* ---------------------------------------------------------------------- */
 
+SPHCommStage PairSPHClearyHeat::comm_fields() const
+{
+  SPHCommStage stage;
+  switch (comm_stage) {
+    case COMM_RELAX:
+      return stage.flat(relax_rate, 1);
+    case COMM_MOMENT:
+      return stage.rows(corr_s, 6);
+    case COMM_FIRST:
+      return stage.rows(corr_kinv, 6).rows(corr_deficit, 3);
+    case COMM_STATE:
+      return stage.rows(corr_s, 6).flat(corr_state, 1);
+    case COMM_LAMBDA:
+      return stage.rows(corr_lambda, 3);
+    case COMM_COUPLING:
+      return stage.rows(corr_coupling, 3);
+    case COMM_SECOND:
+      return stage.flat(comm_values, comm_count);
+    case COMM_IFACE_MOMENT:
+      return stage.rows(iface_moment, 6).rows(iface_vector, 3);
+    case COMM_IFACE_VECTOR:
+      return stage.rows(iface_vector, 3);
+    case COMM_IFACE_SMOOTH:
+      return stage.rows(iface_sum, 3);
+    case COMM_IFACE_NORMAL:
+      return stage.rows(iface_normal, 3);
+    case COMM_IFACE_MARGIN:
+      // the farthest own-material atom and the nearest other one
+      return stage.rows(iface_sum, 1, 0, SPHCommStage::MAX)
+          .rows(iface_sum, 1, 1, SPHCommStage::MIN);
+    case COMM_IFACE_DISTANCE:
+      return stage.flat(iface_distance, 1);
+    case COMM_IFACE_PLANE:
+      return stage.rows(iface_sum, 2);
+    case COMM_IFACE_NEAR:
+      return stage.flat(iface_near, 1, SPHCommStage::MAX);
+  }
+  return stage;
+}
+
 int PairSPHClearyHeat::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/,
                                          int * /*pbc*/)
 {
-  int m = 0;
-  for (int k = 0; k < n; k++) {
-    const int i = send[k];
-    if (comm_stage == COMM_STATE) {
-      for (int c = 0; c < 6; c++) buf[m++] = corr_s[i][c];
-      buf[m++] = corr_state[i];
-    } else if (comm_stage == COMM_IFACE_VECTOR) {
-      for (int c = 0; c < 3; c++) buf[m++] = iface_vector[i][c];
-    } else if (comm_stage == COMM_IFACE_NORMAL) {
-      for (int c = 0; c < 3; c++) buf[m++] = iface_normal[i][c];
-    } else if (comm_stage == COMM_IFACE_DISTANCE) {
-      buf[m++] = iface_distance[i];
-    } else if (comm_stage == COMM_IFACE_NEAR) {
-      buf[m++] = iface_near[i];
-    } else if (comm_stage == COMM_SECOND) {
-      for (int c = 0; c < comm_count; c++) buf[m++] = comm_values[(size_t) i * comm_count + c];
-    } else {    // COMM_LAMBDA
-      for (int c = 0; c < 3; c++) buf[m++] = corr_lambda[i][c];
-    }
-  }
-  return m;
+  return comm_fields().pack(n, send, buf);
 }
 
 void PairSPHClearyHeat::unpack_forward_comm(int n, int first, double *buf)
 {
-  int m = 0;
-  for (int i = first; i < first + n; i++) {
-    if (comm_stage == COMM_STATE) {
-      for (int c = 0; c < 6; c++) corr_s[i][c] = buf[m++];
-      corr_state[i] = buf[m++];
-    } else if (comm_stage == COMM_IFACE_VECTOR) {
-      for (int c = 0; c < 3; c++) iface_vector[i][c] = buf[m++];
-    } else if (comm_stage == COMM_IFACE_NORMAL) {
-      for (int c = 0; c < 3; c++) iface_normal[i][c] = buf[m++];
-    } else if (comm_stage == COMM_IFACE_DISTANCE) {
-      iface_distance[i] = buf[m++];
-    } else if (comm_stage == COMM_IFACE_NEAR) {
-      iface_near[i] = buf[m++];
-    } else if (comm_stage == COMM_SECOND) {
-      for (int c = 0; c < comm_count; c++) comm_values[(size_t) i * comm_count + c] = buf[m++];
-    } else {
-      for (int c = 0; c < 3; c++) corr_lambda[i][c] = buf[m++];
-    }
-  }
+  comm_fields().unpack_forward(n, first, buf);
 }
 
 int PairSPHClearyHeat::pack_reverse_comm(int n, int first, double *buf)
 {
-  int m = 0;
-  for (int i = first; i < first + n; i++) {
-    if (comm_stage == COMM_RELAX) {
-      buf[m++] = relax_rate[i];
-    } else if (comm_stage == COMM_MOMENT) {
-      for (int c = 0; c < 6; c++) buf[m++] = corr_s[i][c];
-    } else if (comm_stage == COMM_FIRST) {
-      for (int c = 0; c < 6; c++) buf[m++] = corr_kinv[i][c];
-      for (int c = 0; c < 3; c++) buf[m++] = corr_deficit[i][c];
-    } else if (comm_stage == COMM_IFACE_MOMENT) {
-      for (int c = 0; c < 6; c++) buf[m++] = iface_moment[i][c];
-      for (int c = 0; c < 3; c++) buf[m++] = iface_vector[i][c];
-    } else if (comm_stage == COMM_IFACE_SMOOTH) {
-      for (int c = 0; c < 3; c++) buf[m++] = iface_sum[i][c];
-    } else if (comm_stage == COMM_IFACE_MARGIN || comm_stage == COMM_IFACE_PLANE) {
-      for (int c = 0; c < 2; c++) buf[m++] = iface_sum[i][c];
-    } else if (comm_stage == COMM_IFACE_NEAR) {
-      buf[m++] = iface_near[i];
-    } else if (comm_stage == COMM_SECOND) {
-      for (int c = 0; c < comm_count; c++) buf[m++] = comm_values[(size_t) i * comm_count + c];
-    } else {    // COMM_COUPLING
-      for (int c = 0; c < 3; c++) buf[m++] = corr_coupling[i][c];
-    }
-  }
-  return m;
+  return comm_fields().pack(n, first, buf);
 }
 
 void PairSPHClearyHeat::unpack_reverse_comm(int n, int *list, double *buf)
 {
-  int m = 0;
-  for (int k = 0; k < n; k++) {
-    const int i = list[k];
-    if (comm_stage == COMM_RELAX) {
-      relax_rate[i] += buf[m++];
-    } else if (comm_stage == COMM_MOMENT) {
-      for (int c = 0; c < 6; c++) corr_s[i][c] += buf[m++];
-    } else if (comm_stage == COMM_FIRST) {
-      for (int c = 0; c < 6; c++) corr_kinv[i][c] += buf[m++];
-      for (int c = 0; c < 3; c++) corr_deficit[i][c] += buf[m++];
-    } else if (comm_stage == COMM_IFACE_MOMENT) {
-      for (int c = 0; c < 6; c++) iface_moment[i][c] += buf[m++];
-      for (int c = 0; c < 3; c++) iface_vector[i][c] += buf[m++];
-    } else if (comm_stage == COMM_IFACE_SMOOTH) {
-      for (int c = 0; c < 3; c++) iface_sum[i][c] += buf[m++];
-    } else if (comm_stage == COMM_IFACE_MARGIN) {
-      // the farthest own-material atom and the nearest other one
-      iface_sum[i][0] = std::max(iface_sum[i][0], buf[m++]);
-      iface_sum[i][1] = std::min(iface_sum[i][1], buf[m++]);
-    } else if (comm_stage == COMM_IFACE_PLANE) {
-      for (int c = 0; c < 2; c++) iface_sum[i][c] += buf[m++];
-    } else if (comm_stage == COMM_IFACE_NEAR) {
-      iface_near[i] = std::max(iface_near[i], buf[m++]);
-    } else if (comm_stage == COMM_SECOND) {
-      for (int c = 0; c < comm_count; c++) comm_values[(size_t) i * comm_count + c] += buf[m++];
-    } else {
-      for (int c = 0; c < 3; c++) corr_coupling[i][c] += buf[m++];
-    }
-  }
+  comm_fields().unpack_reverse(n, list, buf);
 }

@@ -22,9 +22,11 @@
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "pair_sph_harmonic_visc.h"
+#include "sph_particle.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
 #include "sph_conduction.h"
+#include "sph_dispatch.h"
 #include "sph_consistent.h"
 #include "sph_hub.h"
 #include "sph_support.h"
@@ -40,22 +42,15 @@ using namespace LAMMPS_NS;
    the pairs, factors and distances for this step's positions
 ------------------------------------------------------------------------- */
 
+struct PairSPHClearyHeat::SupportCall {
+  PairSPHClearyHeat *pair;
+  template <int KERNEL> void run() { pair->update_pairs<KERNEL>(); }
+};
+
 void PairSPHClearyHeat::refresh_support()
 {
-  switch (kernel_kind) {
-    case SPHK_LUCY:
-      update_pairs<SPHK_LUCY>();
-      break;
-    case SPHK_CUBIC:
-      update_pairs<SPHK_CUBIC>();
-      break;
-    case SPHK_QUINTIC:
-      update_pairs<SPHK_QUINTIC>();
-      break;
-    case SPHK_WENDLAND:
-      update_pairs<SPHK_WENDLAND>();
-      break;
-  }
+  SupportCall call = {this};
+  SPHDispatch<SPHKernelKinds>::to(call, &kernel_kind);
 }
 
 template <int KERNEL> void PairSPHClearyHeat::update_pairs()
@@ -228,8 +223,8 @@ static constexpr double SECOND_REGULARIZATION = 1e-6;
 // unregularised multipliers grow without bound) the regularised one stays
 static constexpr int SECOND_EXACT_NEWTON_STEPS = 20;
 // the solver's limits: residual of Phi's gradient relative to V / h^2, and
-// step counts far above what converging cases take (15 Newton steps;
-// conjugate gradients of the order of (width / h)^2 per step)
+// step counts far above what converging cases take (under 20 Newton
+// steps; conjugate gradients of the order of (width / h)^2 per step)
 static constexpr double SECOND_TOLERANCE = 1e-13;
 static constexpr int SECOND_NEWTON_STEPS = 50;
 static constexpr int SECOND_CG_STEPS = 100000;
@@ -580,29 +575,20 @@ void PairSPHClearyHeat::given_interface()
   const double *const near = iface_near;
   // the lowest ID of an atom with a bad distance, on every rank (error->all:
   // error->one's message can be lost with the abort)
-  tagint bad = MAXTAGINT;
-  double bad_value = 0.0;
+  SPHCheck::FirstBad bad;
   for (int i = 0; i < atom->nlocal; i++) {
     if (near[i] == 0.0) {
       iface_distance[i] = NO_INTERFACE;
       continue;
     }
-    if ((!(given[i] > 0.0) || !std::isfinite(given[i])) && atom->tag[i] < bad) {
-      bad = atom->tag[i];
-      bad_value = given[i];
-    }
+    if (!(given[i] > 0.0) || !std::isfinite(given[i])) bad.consider(atom->tag[i], given[i]);
     iface_distance[i] = given[i];
   }
-  tagint bad_all = MAXTAGINT;
-  MPI_Allreduce(&bad, &bad_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (bad_all != MAXTAGINT) {
-    double value = (bad == bad_all) ? bad_value : 0.0, value_all = 0.0;
-    MPI_Allreduce(&value, &value_all, 1, MPI_DOUBLE, MPI_SUM, world);
+  if (bad.agree(lmp))
     error->all(FLERR,
                "Pair style sph/cleary/heat: atom {} has an atom of another conductivity within "
                "the kernel support, but its distance {} from the interface is {} (must be > 0)",
-               bad_all, distance_name, value_all);
-  }
+               bad.tag, distance_name, bad.info[0]);
   comm_stage = COMM_IFACE_DISTANCE;
   SPHCompat::forward_comm(comm, this);
 }
@@ -657,7 +643,7 @@ void PairSPHClearyHeat::report_setup()
 
 double PairSPHClearyHeat::volume_of(int i) const
 {
-  const double mass_i = (atom->rmass_flag && atom->rmass) ? atom->rmass[i] : atom->mass[atom->type[i]];
+  const double mass_i = SPHParticles(atom).mass(i);
   return mass_i / atom->rho[i];
 }
 

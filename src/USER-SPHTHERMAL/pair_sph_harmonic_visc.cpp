@@ -33,6 +33,7 @@
 #include "sph_hub.h"
 #include "sph_conduction.h"
 #include "sph_consistent.h"
+#include "sph_dispatch.h"
 #include "sph_flow.h"
 #include "sph_support.h"
 #include "update.h"
@@ -130,21 +131,41 @@ void PairSPHHarmonicVisc::begin_compute()
    the pair loops over ilist[ifrom..ito), adding to 'rates'
 ------------------------------------------------------------------------- */
 
+struct PairSPHHarmonicVisc::EvalCall {
+  PairSPHHarmonicVisc *pair;
+  int ifrom, ito;
+  const Rates *rates;
+  template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS> void run()
+  {
+    pair->eval_dimension<KERNEL, PRESSURE, VISCOSITY, TERMS>(ifrom, ito, *rates);
+  }
+};
+
+struct PairSPHHarmonicVisc::HeatingCall {
+  PairSPHHarmonicVisc *pair;
+  int ifrom, ito;
+  const Rates *rates;
+  template <int KERNEL> void run() { pair->eval_heating_kernel<KERNEL>(ifrom, ito, *rates); }
+};
+
 void PairSPHHarmonicVisc::eval_pairs(int ifrom, int ito, const Rates &rates)
 {
-  switch (kernel_kind) {
-    case SPHK_LUCY:
-      eval_kernel<SPHK_LUCY>(ifrom, ito, rates);
-      break;
-    case SPHK_CUBIC:
-      eval_kernel<SPHK_CUBIC>(ifrom, ito, rates);
-      break;
-    case SPHK_QUINTIC:
-      eval_kernel<SPHK_QUINTIC>(ifrom, ito, rates);
-      break;
-    case SPHK_WENDLAND:
-      eval_kernel<SPHK_WENDLAND>(ifrom, ito, rates);
-      break;
+  int terms = (delta > 0.0) ? DIFFUSION : 0;
+  if (heat && heat->term_in_flow_loop())
+    terms |= HEAT_ON | (heat_term.conductivity ? HEAT_ATOM_K : 0) |
+        (heat_term.relax_rate ? HEAT_RELAX : 0);
+  EvalCall call = {this, ifrom, ito, &rates};
+  const int settings[] = {kernel_kind, pressure_form, viscosity_form, terms};
+  SPHDispatch<SPHKernelKinds, SPHValues<SPHF_P_SYMMETRIC, SPHF_P_SUM, SPHF_P_AVERAGED>,
+              SPHValues<SPHF_V_CLEARY, SPHF_V_MORRIS, SPHF_V_ADAMI>,
+              SPHValues<0, HEAT_ON, HEAT_ON | HEAT_ATOM_K, HEAT_ON | HEAT_RELAX,
+                        HEAT_ON | HEAT_ATOM_K | HEAT_RELAX, DIFFUSION, DIFFUSION | HEAT_ON,
+                        DIFFUSION | HEAT_ON | HEAT_ATOM_K, DIFFUSION | HEAT_ON | HEAT_RELAX,
+                        DIFFUSION | HEAT_ON | HEAT_ATOM_K | HEAT_RELAX>>::to(call, settings);
+  // viscous heating: a pass of its own, only when asked for
+  if (heating > 0.0) {
+    HeatingCall heating_call = {this, ifrom, ito, &rates};
+    SPHDispatch<SPHKernelKinds>::to(heating_call, &kernel_kind);
   }
 }
 
@@ -168,82 +189,6 @@ void PairSPHHarmonicVisc::tally_pair(int i, int j, double fx, double fy, double 
                                      double dely, double delz, void * /*thread*/)
 {
   ev_tally_xyz(i, j, atom->nlocal, force->newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
-}
-
-template <int KERNEL>
-void PairSPHHarmonicVisc::eval_kernel(int ifrom, int ito, const Rates &rates)
-{
-  switch (pressure_form) {
-    case SPHF_P_SYMMETRIC:
-      eval_pressure<KERNEL, SPHF_P_SYMMETRIC>(ifrom, ito, rates);
-      break;
-    case SPHF_P_SUM:
-      eval_pressure<KERNEL, SPHF_P_SUM>(ifrom, ito, rates);
-      break;
-    default:
-      eval_pressure<KERNEL, SPHF_P_AVERAGED>(ifrom, ito, rates);
-  }
-  // viscous heating: a pass of its own, only when asked for
-  if (heating > 0.0) eval_heating_kernel<KERNEL>(ifrom, ito, rates);
-}
-
-template <int KERNEL, int PRESSURE>
-void PairSPHHarmonicVisc::eval_pressure(int ifrom, int ito, const Rates &rates)
-{
-  switch (viscosity_form) {
-    case SPHF_V_CLEARY:
-      eval_terms<KERNEL, PRESSURE, SPHF_V_CLEARY>(ifrom, ito, rates);
-      break;
-    case SPHF_V_MORRIS:
-      eval_terms<KERNEL, PRESSURE, SPHF_V_MORRIS>(ifrom, ito, rates);
-      break;
-    default:
-      eval_terms<KERNEL, PRESSURE, SPHF_V_ADAMI>(ifrom, ito, rates);
-  }
-}
-
-template <int KERNEL, int PRESSURE, int VISCOSITY>
-void PairSPHHarmonicVisc::eval_terms(int ifrom, int ito, const Rates &rates)
-{
-  int terms = (delta > 0.0) ? DIFFUSION : 0;
-  if (heat && heat->term_in_flow_loop())
-    terms |= HEAT_ON | (heat_term.conductivity ? HEAT_ATOM_K : 0) |
-        (heat_term.relax_rate ? HEAT_RELAX : 0);
-  switch (terms) {
-    case 0:
-      eval_dimension<KERNEL, PRESSURE, VISCOSITY, 0>(ifrom, ito, rates);
-      break;
-    case HEAT_ON:
-      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON>(ifrom, ito, rates);
-      break;
-    case HEAT_ON | HEAT_ATOM_K:
-      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON | HEAT_ATOM_K>(ifrom, ito, rates);
-      break;
-    case HEAT_ON | HEAT_RELAX:
-      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON | HEAT_RELAX>(ifrom, ito, rates);
-      break;
-    case HEAT_ON | HEAT_ATOM_K | HEAT_RELAX:
-      eval_dimension<KERNEL, PRESSURE, VISCOSITY, HEAT_ON | HEAT_ATOM_K | HEAT_RELAX>(ifrom, ito,
-                                                                                      rates);
-      break;
-    case DIFFUSION:
-      eval_dimension<KERNEL, PRESSURE, VISCOSITY, DIFFUSION>(ifrom, ito, rates);
-      break;
-    case DIFFUSION | HEAT_ON:
-      eval_dimension<KERNEL, PRESSURE, VISCOSITY, DIFFUSION | HEAT_ON>(ifrom, ito, rates);
-      break;
-    case DIFFUSION | HEAT_ON | HEAT_ATOM_K:
-      eval_dimension<KERNEL, PRESSURE, VISCOSITY, DIFFUSION | HEAT_ON | HEAT_ATOM_K>(ifrom, ito,
-                                                                                     rates);
-      break;
-    case DIFFUSION | HEAT_ON | HEAT_RELAX:
-      eval_dimension<KERNEL, PRESSURE, VISCOSITY, DIFFUSION | HEAT_ON | HEAT_RELAX>(ifrom, ito,
-                                                                                    rates);
-      break;
-    default:
-      eval_dimension<KERNEL, PRESSURE, VISCOSITY, DIFFUSION | HEAT_ON | HEAT_ATOM_K | HEAT_RELAX>(
-          ifrom, ito, rates);
-  }
 }
 
 template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS>

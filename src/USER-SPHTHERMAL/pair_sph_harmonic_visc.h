@@ -14,6 +14,7 @@ PairStyle(sph/harmonic/visc,PairSPHHarmonicVisc);
 
 #include "pair_sph_cleary_heat.h"
 #include "pair_sph_kernel.h"
+#include "sph_comm_stage.h"
 #include "sph_eos.h"
 
 #include <vector>
@@ -69,6 +70,7 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // what pack_forward_comm / pack_reverse_comm carry
   enum { COMM_VEST, COMM_SHIFT, COMM_GRADIENT_MOMENT, COMM_GRADIENT_INVERSE };
   int comm_stage;
+  SPHCommStage comm_fields() const;    // the per-atom values of comm_stage
   // the density diffusion: Fourtakas's (Reece et al. 2024, eq 39) with the
   // run's body force (the default), Molteni's (Ng et al. 2020, eq 5: no
   // gravity), or Fourtakas's with a vector given in the command
@@ -134,10 +136,10 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   void refresh_gradient_correction();
   template <int KERNEL> void update_gradient_correction();
   double hold_mean_pressure();
-  template <int KERNEL> void eval_kernel(int ifrom, int ito, const Rates &rates);
-  template <int KERNEL, int PRESSURE> void eval_pressure(int ifrom, int ito, const Rates &rates);
-  template <int KERNEL, int PRESSURE, int VISCOSITY>
-  void eval_terms(int ifrom, int ito, const Rates &rates);
+  // the calls of the templates below for this run's settings (sph_dispatch.h)
+  struct GradientCall;
+  struct EvalCall;
+  struct HeatingCall;
   template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS>
   void eval_dimension(int ifrom, int ito, const Rates &rates);
   template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS, int DIM>

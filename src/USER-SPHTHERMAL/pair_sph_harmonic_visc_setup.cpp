@@ -69,25 +69,12 @@ bool PairSPHHarmonicVisc::provide_shift_sums(int groupbit)
 
 int PairSPHHarmonicVisc::pack_reverse_comm(int n, int first, double *buf)
 {
-  if (comm_stage == COMM_GRADIENT_MOMENT) {
-    int m = 0;
-    for (int i = first; i < first + n; i++)
-      for (int k = 0; k < 6; k++) buf[m++] = gradient_inverse[i][k];
-    return m;
-  }
-  memcpy(buf, &shift_sum[3 * (size_t) first], 3 * sizeof(double) * n);
-  return 3 * n;
+  return comm_fields().pack(n, first, buf);
 }
 
 void PairSPHHarmonicVisc::unpack_reverse_comm(int n, int *list_send, double *buf)
 {
-  if (comm_stage == COMM_GRADIENT_MOMENT) {
-    for (int k = 0; k < n; k++)
-      for (int a = 0; a < 6; a++) gradient_inverse[list_send[k]][a] += buf[6 * k + a];
-    return;
-  }
-  for (int k = 0; k < n; k++)
-    for (int a = 0; a < 3; a++) shift_sum[3 * (size_t) list_send[k] + a] += buf[3 * k + a];
+  comm_fields().unpack_reverse(n, list_send, buf);
 }
 
 /* ----------------------------------------------------------------------
@@ -228,38 +215,31 @@ void PairSPHHarmonicVisc::init_style()
   for (int ifix = 0; ifix < modify->nfix; ifix++) {
     Fix *rigid = modify->fix[ifix];
     if (!SPHHub(lmp).rigid(rigid)) continue;
-    tagint first = MAXTAGINT, first_all;
+    SPHCheck::FirstBad stray;
     for (int i = 0; i < atom->nlocal; i++)
       if ((atom->mask[i] & rigid->groupbit) && !(atom->mask[i] & wall_groupbit))
-        first = MIN(first, atom->tag[i]);
-    MPI_Allreduce(&first, &first_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-    if (first_all != MAXTAGINT)
+        stray.consider(atom->tag[i]);
+    if (stray.agree(lmp))
       error->all(FLERR,
                  "Pair style sph/harmonic/visc: atom {} of fix {} ({}) is in no fix sph/wall/adami "
                  "group: the particles of a rigid body must be walls of fix sph/wall/adami, which "
                  "moves them with the body",
-                 first_all, rigid->id, rigid->style);
+                 stray.tag, rigid->id, rigid->style);
   }
   // every particle that is not such a wall needs its fluid's properties
-  tagint bad_tag = MAXTAGINT;
-  int bad_type = 0, bad_missing = 0;
+  SPHCheck::FirstBad bad;    // type, 1 no eos / 2 no viscosity
   for (int i = 0; i < atom->nlocal; i++) {
     if (atom->mask[i] & wall_groupbit) continue;
     const int t = atom->type[i];
     const int missing = !materials->eos(t) ? 1 : (!materials->viscosity(t) ? 2 : 0);
-    if (missing && atom->tag[i] < bad_tag) bad_tag = atom->tag[i], bad_type = t, bad_missing = missing;
+    if (missing) bad.consider(atom->tag[i], t, missing);
   }
-  tagint bad_all;
-  MPI_Allreduce(&bad_tag, &bad_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (bad_all != MAXTAGINT) {
-    int info[2] = {bad_tag == bad_all ? bad_type : 0, bad_tag == bad_all ? bad_missing : 0};
-    int info_all[2];
-    MPI_Allreduce(info, info_all, 2, MPI_INT, MPI_MAX, world);
+  if (bad.agree(lmp))
     error->all(FLERR,
                "Pair style sph/harmonic/visc: atom type {} has no {} in fix sph/materials (atom {} "
                "is a fluid particle; only the solid particles of fix sph/wall/adami may lack it)",
-               info_all[0], info_all[1] == 1 ? "equation of state (eos)" : "viscosity", bad_all);
-  }
+               (int) bad.info[0], bad.info[1] == 1.0 ? "equation of state (eos)" : "viscosity",
+               bad.tag);
   viscosity_varies = !materials->viscosity_constant();
   // the per-atom arrays are sized again with the diffused density
   if (materials->thermal_expansion() != thermal_expansion) {
@@ -366,28 +346,28 @@ double PairSPHHarmonicVisc::memory_usage()
    vest of the ghost atoms, at setup
 ------------------------------------------------------------------------- */
 
+SPHCommStage PairSPHHarmonicVisc::comm_fields() const
+{
+  SPHCommStage stage;
+  switch (comm_stage) {
+    case COMM_VEST:
+      return stage.rows(atom->vest, 3);
+    case COMM_SHIFT:
+      return stage.flat(shift_sum, 3);
+    case COMM_GRADIENT_MOMENT:
+    case COMM_GRADIENT_INVERSE:
+      return stage.rows(gradient_inverse, 6);
+  }
+  return stage;
+}
+
 int PairSPHHarmonicVisc::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/,
                                            int * /*pbc*/)
 {
-  int m = 0;
-  if (comm_stage == COMM_GRADIENT_INVERSE) {
-    for (int k = 0; k < n; k++)
-      for (int a = 0; a < 6; a++) buf[m++] = gradient_inverse[send[k]][a];
-    return m;
-  }
-  for (int k = 0; k < n; k++)
-    for (int d = 0; d < 3; d++) buf[m++] = atom->vest[send[k]][d];
-  return m;
+  return comm_fields().pack(n, send, buf);
 }
 
 void PairSPHHarmonicVisc::unpack_forward_comm(int n, int first, double *buf)
 {
-  int m = 0;
-  if (comm_stage == COMM_GRADIENT_INVERSE) {
-    for (int i = first; i < first + n; i++)
-      for (int a = 0; a < 6; a++) gradient_inverse[i][a] = buf[m++];
-    return;
-  }
-  for (int i = first; i < first + n; i++)
-    for (int d = 0; d < 3; d++) atom->vest[i][d] = buf[m++];
+  comm_fields().unpack_forward(n, first, buf);
 }

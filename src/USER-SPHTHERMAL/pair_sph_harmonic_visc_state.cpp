@@ -28,7 +28,9 @@
 #include "sph_hub.h"
 #include "sph_conduction.h"
 #include "sph_consistent.h"
+#include "sph_dispatch.h"
 #include "sph_flow.h"
+#include "sph_particle.h"
 #include "sph_support.h"
 #include "update.h"
 
@@ -38,22 +40,15 @@
 using namespace LAMMPS_NS;
 
 
+struct PairSPHHarmonicVisc::GradientCall {
+  PairSPHHarmonicVisc *pair;
+  template <int KERNEL> void run() { pair->update_gradient_correction<KERNEL>(); }
+};
+
 void PairSPHHarmonicVisc::refresh_gradient_correction()
 {
-  switch (kernel_kind) {
-    case SPHK_LUCY:
-      update_gradient_correction<SPHK_LUCY>();
-      break;
-    case SPHK_CUBIC:
-      update_gradient_correction<SPHK_CUBIC>();
-      break;
-    case SPHK_QUINTIC:
-      update_gradient_correction<SPHK_QUINTIC>();
-      break;
-    case SPHK_WENDLAND:
-      update_gradient_correction<SPHK_WENDLAND>();
-      break;
-  }
+  GradientCall call = {this};
+  SPHDispatch<SPHKernelKinds>::to(call, &kernel_kind);
 }
 
 /* ----------------------------------------------------------------------
@@ -151,6 +146,7 @@ template <int KERNEL> void PairSPHHarmonicVisc::update_gradient_correction()
 
 void PairSPHHarmonicVisc::update_atom_state()
 {
+  const SPHParticles particles(atom);
   if (atom->nmax > nmax) {
     nmax = atom->nmax;
     memory->destroy(pressure);
@@ -167,16 +163,11 @@ void PairSPHHarmonicVisc::update_atom_state()
     memory->create(density, nmax, "pair:density");
   }
   const double *const rho = atom->rho;
-  const double *const esph = atom->esph;
-  const double *const cv = atom->cv;
   const int *const type = atom->type;
   const int *const mask = atom->mask;
   const int nall = atom->nlocal + atom->nghost;
   diffusion_rho = thermal_expansion ? diffused_density : rho;
-  if (atom->rmass_flag && atom->rmass)
-    memcpy(mass_of, atom->rmass, nall * sizeof(double));
-  else
-    for (int i = 0; i < nall; i++) mass_of[i] = atom->mass[type[i]];
+  particles.masses(mass_of, nall);
   // the walls that hold solid particles (known after the walls' init)
   std::vector<FixSPHWallAdami *> solid_walls;
   for (auto wall : adami_walls)
@@ -198,7 +189,7 @@ void PairSPHHarmonicVisc::update_atom_state()
     }
     const sphe_eos *eos = materials->eos(type[i]);
     if (eos->thermal) {
-      const double t = esph[i] / cv[i];
+      const double t = particles.temperature(i);
       const double rho_ref = sphe_reference_density(eos, t);
       if (!(rho_ref > 0.0) || !std::isfinite(rho_ref))
         SPHCheck::stop(lmp, FLERR, fmt::format(
@@ -212,7 +203,7 @@ void PairSPHHarmonicVisc::update_atom_state()
       pressure[i] = sphe_pressure(eos, rho[i]);
       if (thermal_expansion) diffused_density[i] = rho[i];
     }
-    viscosity[i] = materials->viscosity_at(type[i], viscosity_varies ? esph[i] / cv[i] : 0.0,
+    viscosity[i] = materials->viscosity_at(type[i], viscosity_varies ? particles.temperature(i) : 0.0,
                                            "Pair style sph/harmonic/visc");
     density[i] = rho[i];
     volume[i] = mass_of[i] / rho[i];

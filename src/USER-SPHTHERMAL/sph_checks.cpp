@@ -47,8 +47,7 @@ void SPHCheck::atom_state(LAMMPS *lmp, const char *file, int line, const char *w
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
   // the first bad quantity of an atom: 0 none, 1 rho, 2 cv, 3 esph
-  tagint bad_tag = MAXTAGINT;
-  double bad[3] = {0.0, 0.0, 0.0};    // quantity, type, value
+  FirstBad bad;    // quantity, type, value
   for (int i = 0; i < nlocal; i++) {
     if (groupbit && !(mask[i] & groupbit)) continue;
     int quantity = 0;
@@ -59,26 +58,14 @@ void SPHCheck::atom_state(LAMMPS *lmp, const char *file, int line, const char *w
       quantity = 2, value = atom->cv[i];
     else if ((needs & ESPH) && !std::isfinite(atom->esph[i]))
       quantity = 3, value = atom->esph[i];
-    if (quantity && atom->tag[i] < bad_tag) {
-      bad_tag = atom->tag[i];
-      bad[0] = quantity;
-      bad[1] = atom->type[i];
-      bad[2] = value;
-    }
+    if (quantity) bad.consider(atom->tag[i], quantity, atom->type[i], value);
   }
-  tagint first;
-  MPI_Allreduce(&bad_tag, &first, 1, MPI_LMP_TAGINT, MPI_MIN, lmp->world);
-  if (first == MAXTAGINT) return;
-  // the owner tells every rank, so that the error is collective
-  double mine[3] = {0.0, 0.0, 0.0}, all[3];
-  if (bad_tag == first)
-    for (int k = 0; k < 3; k++) mine[k] = bad[k];
-  MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_SUM, lmp->world);
+  if (!bad.agree(lmp)) return;
   static const char *const names[] = {"", "rho", "cv", "esph"};
   static const char *const wants[] = {"", "finite and > 0", "finite and > 0", "finite"};
-  const int quantity = (int) all[0];
+  const int quantity = (int) bad.info[0];
   lmp->error->all(file, line, "{}: {} of atom {} (type {}) is {}; it must be {}", who,
-                  names[quantity], first, (int) all[1], all[2], wants[quantity]);
+                  names[quantity], bad.tag, (int) bad.info[1], bad.info[2], wants[quantity]);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -335,4 +322,22 @@ void SPHCheck::group_of_kind(LAMMPS *lmp, Fix *fix, const std::vector<Fix *> &ex
                        fix->id, fix->style, group, other->id);
     }
   }
+}
+
+/* ----------------------------------------------------------------------
+   the lowest bad ID over the ranks; its owner (IDs are unique) tells
+   every rank what it recorded
+------------------------------------------------------------------------- */
+
+int SPHCheck::FirstBad::agree(LAMMPS *lmp)
+{
+  tagint first = MAXTAGINT;
+  MPI_Allreduce(&tag, &first, 1, MPI_LMP_TAGINT, MPI_MIN, lmp->world);
+  if (first == MAXTAGINT) return 0;
+  double mine[4] = {0.0, 0.0, 0.0, 0.0};
+  if (tag == first)
+    for (int k = 0; k < 4; k++) mine[k] = info[k];
+  MPI_Allreduce(mine, info, 4, MPI_DOUBLE, MPI_SUM, lmp->world);
+  tag = first;
+  return 1;
 }

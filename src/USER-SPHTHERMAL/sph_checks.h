@@ -64,6 +64,24 @@ namespace SPHCheck {
   void group_of_kind(LAMMPS *lmp, Fix *fix, const std::vector<Fix *> &exclusive, bool every_ok,
                      bool moving_ok);
 
+  // The atom an error names when several ranks may each find bad atoms: the
+  // lowest ID, with up to four numbers its owner records of it (type,
+  // value, which quantity). consider() on each rank; agree() is
+  // collective and returns 1 when any rank found one, with 'tag' and
+  // 'info' then that atom's on every rank, ready for error->all.
+  class FirstBad {
+   public:
+    tagint tag = MAXTAGINT;
+    double info[4] = {0.0, 0.0, 0.0, 0.0};
+    void consider(tagint id, double a = 0.0, double b = 0.0, double c = 0.0, double d = 0.0)
+    {
+      if (id >= tag) return;
+      tag = id;
+      info[0] = a, info[1] = b, info[2] = c, info[3] = d;
+    }
+    int agree(LAMMPS *lmp);
+  };
+
   // 1 when some atom is in both groups (collective)
   int groups_overlap(LAMMPS *lmp, int groupbit1, int groupbit2);
   // number of atoms of a group (collective)

@@ -20,11 +20,14 @@
 #include "neighbor.h"
 #include "region.h"
 #include "sph_checks.h"
+#include "sph_comm_stage.h"
+#include "sph_dispatch.h"
 #include "sph_compat.h"
 #include "sph_hub.h"
 #include "sph_interpolation.h"
 #include "sph_kernels.h"
 #include "update.h"
+#include "sph_particle.h"
 
 #include <cmath>
 #include <cstring>
@@ -89,16 +92,12 @@ void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
   // kernel's reach sets how far the ghost points lie from their wall atoms
   double *const *const x = atom->x;
   double dmax_local = 0.0, dmin_local = INFINITY;
-  int inside = 0;
-  tagint inside_tag = 0;
+  SPHCheck::FirstBad inside;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     double g[3];
     const int found = ghost_point(x[i], g);
-    if (found < 0 && (!inside || atom->tag[i] < inside_tag)) {
-      inside = 1;
-      inside_tag = atom->tag[i];
-    }
+    if (found < 0) inside.consider(atom->tag[i]);
     if (found > 0) {
       const double d = 0.5 *
           sqrt((g[0] - x[i][0]) * (g[0] - x[i][0]) + (g[1] - x[i][1]) * (g[1] - x[i][1]) +
@@ -107,18 +106,12 @@ void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
       dmin_local = MIN(dmin_local, d);
     }
   }
-  int inside_any = 0;
-  MPI_Allreduce(&inside, &inside_any, 1, MPI_INT, MPI_MAX, world);
-  if (inside_any) {
-    tagint tag = inside ? inside_tag : MAXTAGINT;
-    tagint first = 0;
-    MPI_Allreduce(&tag, &first, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (inside.agree(lmp))
     error->all(FLERR,
                "{}: wall atom {} lies inside surface region {} (side {}); the region holds the "
                "medium and its boundary is the wall surface, so wall atoms lie outside it (side "
                "in: outside its shape; side out, the medium around an obstacle: inside it)",
-               command, first, region_name, region->interior ? "in" : "out");
-  }
+               command, inside.tag, region_name, region->interior ? "in" : "out");
   double dmax = 0.0, dmin = INFINITY;
   MPI_Allreduce(&dmax_local, &dmax, 1, MPI_DOUBLE, MPI_MAX, world);
   MPI_Allreduce(&dmin_local, &dmin, 1, MPI_DOUBLE, MPI_MIN, world);
@@ -257,16 +250,22 @@ void SPHMirror::find_candidates()
 
 /* ---------------------------------------------------------------------- */
 
+struct SPHMirror::PointsCall {
+  SPHMirror *mirror;
+  std::vector<double> *ghost;
+  std::vector<int> *how;
+  const sphk_kernel *kernel;
+  template <int DIM, int KERNEL> void run()
+  {
+    mirror->interpolate_points<DIM, KERNEL>(*ghost, *how, *kernel);
+  }
+};
+
 void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
                             std::vector<double> *depth)
 {
+  const SPHParticles particles(atom);
   double *const *const x = atom->x;
-  const double *const esph = atom->esph;
-  const double *const cv = atom->cv;
-  const double *const rho = atom->rho;
-  const double *const rmass = atom->rmass;
-  const double *const mass = atom->mass;
-  const int *const type = atom->type;
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
   const int dim = domain->dimension;
@@ -303,23 +302,12 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
   medium_temperature.resize(nmedium);
   for (int m = 0; m < nmedium; m++) {
     const int j = medium_atoms[m];
-    medium_volume[m] = (rmass ? rmass[j] : mass[type[j]]) / rho[j];
-    medium_temperature[m] = esph[j] / cv[j];
+    medium_volume[m] = particles.volume(j);
+    medium_temperature[m] = particles.temperature(j);
   }
-#define SPH_MIRROR_POINTS(KERNEL)                        \
-  case KERNEL:                                           \
-    if (dim == 2)                                        \
-      interpolate_points<2, KERNEL>(ghost, how, kernel); \
-    else                                                 \
-      interpolate_points<3, KERNEL>(ghost, how, kernel); \
-    break;
-  switch (kernel_kind) {
-    SPH_MIRROR_POINTS(SPHK_LUCY)
-    SPH_MIRROR_POINTS(SPHK_CUBIC)
-    SPH_MIRROR_POINTS(SPHK_QUINTIC)
-    SPH_MIRROR_POINTS(SPHK_WENDLAND)
-  }
-#undef SPH_MIRROR_POINTS
+  PointsCall call = {this, &ghost, &how, &kernel};
+  const int settings[] = {dim, kernel_kind};
+  SPHDispatch<SPHDimensions, SPHKernelKinds>::to(call, settings);
 }
 
 /* ----------------------------------------------------------------------
@@ -416,6 +404,7 @@ void SPHMirror::find_junctions()
 
 void SPHMirror::return_heat(const std::vector<double> &rate, Fix *owner)
 {
+  const SPHParticles particles(atom);
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
   returned.assign(nall, 0.0);
@@ -424,21 +413,17 @@ void SPHMirror::return_heat(const std::vector<double> &rate, Fix *owner)
       for (int n = first_neighbour[i]; n < first_neighbour[i + 1]; n++)
         returned[neighbours[n]] += weights[n] * rate[i];
   SPHCompat::reverse_comm(comm, owner);
-  const double *const rmass = atom->rmass;
-  const double *const mass = atom->mass;
-  const int *const type = atom->type;
   double *const desph = atom->desph;
   for (int j = 0; j < nlocal; j++)
-    if (returned[j] != 0.0) desph[j] += returned[j] / (rmass ? rmass[j] : mass[type[j]]);
+    if (returned[j] != 0.0) desph[j] += returned[j] / particles.mass(j);
 }
 
 int SPHMirror::pack_reverse_comm(int n, int first, double *buf)
 {
-  for (int k = 0; k < n; k++) buf[k] = returned[first + k];
-  return n;
+  return SPHCommStage().flat(returned.data(), 1).pack(n, first, buf);
 }
 
 void SPHMirror::unpack_reverse_comm(int n, int *list, double *buf)
 {
-  for (int k = 0; k < n; k++) returned[list[k]] += buf[k];
+  SPHCommStage().flat(returned.data(), 1).unpack_reverse(n, list, buf);
 }

@@ -118,6 +118,7 @@ class SPHMirror : protected Pointers {
   }
   void find_candidates();
   SPHSupport support;    // the candidates of one ghost point inside the support
+  struct PointsCall;    // interpolate_points for this run's settings (sph_dispatch.h)
   template <int DIM, int KERNEL>
   void interpolate_points(std::vector<double> &ghost, std::vector<int> &how,
                           const sphk_kernel &kernel);

@@ -335,10 +335,9 @@ static inline double sphs_dot(const sphs_problem *p, const double *u, const doub
    direction k < dim:
      mu_a = phi_c(x_a) e_k,  L_a = -(h / 4) (e_k grad phi_c^T + grad phi_c e_k^T),
    phi_c the node's quadratic B-spline (C1, so that L is continuous).
-   Measured on 30 x 30 particles jittered by 0.2 spacings, h = 1.3
-   spacings: 8,577 CG steps with one level; with a grid of 2, 3, 4 h 464,
-   1,250, 1,808; columns of smooth L as well change nothing (466, 1,164,
-   1,722), nor do (bi)linear hat functions at the same coarse dimension. */
+   A grid of 2 h cuts the CG steps about twentyfold on jittered particles;
+   columns of smooth L as well, or hat functions, gain nothing (step
+   counts: the package's theory page, Howto_sph_theory). */
 typedef struct {
   int dim, n;
   int count[3];
@@ -684,9 +683,9 @@ static inline sphs_result sphs_solve(const sphs_problem *p, double *nu, double *
        L = grad(mu) / 2 nearly cancel in every pair's argument (exactly for
        a linear mu), so conjugate gradients need of the order of
        (width / h)^2 steps for a region width across; a larger shift would
-       stall the Newton steps on those fields instead (measured on 24 x 24
-       jittered particles: shift 1e-2 of the diagonal, residual 1e-3 after
-       50 steps; 1e-6, 1e-12 after 13) */
+       stall the Newton steps on those fields instead (a shift of 1e-2 of
+       the diagonal leaves a residual of 1e-3 after 50 steps where 1e-6
+       converges in about a dozen) */
     const double damping = 1e-6 * fmin(1.0, result.residual);
     for (int a = 0; a < p->nlocal; a++) {
       double *b = blocks + (size_t) a * n * n;
@@ -705,8 +704,8 @@ static inline sphs_result sphs_solve(const sphs_problem *p, double *nu, double *
     }
 
     /* the coarse matrix of the first step (every pair active) serves all
-       steps: the 80 x 20 slab jittered by 0.2 spacings took 546 CG steps
-       with it, 733 with a new one each Newton step (and the factoring) */
+       steps: fewer CG steps in all than with a new one each Newton step,
+       and no factoring per step */
     if (coarse.size && result.newton_steps == 1)
       two_level = sphs_coarse_assemble(p, &coarse, basis, arg, shift);
 

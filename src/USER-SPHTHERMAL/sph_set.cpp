@@ -196,9 +196,7 @@ void SPHSet::set_temperature(const std::string &value)
 
   // every atom is checked before any is changed; the lowest bad ID is named
   const int *const mask = atom->mask;
-  tagint bad_tag = MAXTAGINT;
-  int bad_kind = 0;
-  double bad_value = 0.0;
+  SPHCheck::FirstBad bad;    // 1 T / 2 cv, its value
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     int kind = 0;
@@ -207,20 +205,16 @@ void SPHSet::set_temperature(const std::string &value)
       kind = 1, what = temperature[i];
     else if (!(std::isfinite(atom->cv[i]) && atom->cv[i] > 0.0))
       kind = 2, what = atom->cv[i];
-    if (kind && atom->tag[i] < bad_tag) bad_tag = atom->tag[i], bad_kind = kind, bad_value = what;
+    if (kind) bad.consider(atom->tag[i], kind, what);
   }
-  tagint bad_all;
-  MPI_Allreduce(&bad_tag, &bad_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (bad_all != MAXTAGINT) {
-    if (bad_tag == bad_all) {
-      if (bad_kind == 1)
-        SPHCheck::stop(lmp, FLERR, fmt::format("{} temperature {}: atom {} gets T = {}; it must be finite", cmd,
-                                   value, bad_tag, bad_value));
-      SPHCheck::stop(lmp, FLERR, fmt::format("{} temperature {}: atom {} has cv = {}; e = cv T needs cv > 0 "
-                                 "(set it first: sph/set materials, or set sph/cv)",
-                                 cmd, value, bad_tag, bad_value));
-    }
-    MPI_Barrier(world);    // the rank that found it stops the run
+  if (bad.agree(lmp)) {
+    if (bad.info[0] == 1.0)
+      error->all(FLERR, "{} temperature {}: atom {} gets T = {}; it must be finite", cmd, value,
+                 bad.tag, bad.info[1]);
+    error->all(FLERR,
+               "{} temperature {}: atom {} has cv = {}; e = cv T needs cv > 0 (set it first: "
+               "sph/set materials, or set sph/cv)",
+               cmd, value, bad.tag, bad.info[1]);
   }
 
   // LAMMPS creates every atom with cv = 1: a type whose material has no cv

@@ -5,6 +5,7 @@
    The stability limits of the timestep (sph_timestep.h).
 ------------------------------------------------------------------------- */
 
+#include "sph_particle.h"
 #include "sph_timestep.h"
 
 #include "atom.h"
@@ -32,13 +33,10 @@ void SPHTimestep::local_limits(LAMMPS *lmp, const Scan &scan, double none, doubl
                                int bad[NLIMITS])
 {
   Atom *atom = lmp->atom;
+  const SPHParticles particles(atom);
   const double *const *const v = atom->v;
   const double *const *const f = atom->f;
   const double *const rho = atom->rho;
-  const double *const esph = atom->esph;
-  const double *const cv = atom->cv;
-  const double *const mass = atom->mass;
-  const double *const rmass = atom->rmass;
   const int *const type = atom->type;
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
@@ -77,12 +75,12 @@ void SPHTimestep::local_limits(LAMMPS *lmp, const Scan &scan, double none, doubl
       if (eos) rises(ACOUSTIC, signal_speed(sphe_sound_speed(eos, rho[i]), sqrt(vsq), s), fastest);
     }
     if (coeff[FORCE] > 0.0 && fsq != 0.0) {    // a non-finite force counts
-      const double m = rmass ? rmass[i] : mass[itype];
+      const double m = particles.mass(i);
       rises(FORCE, acceleration(sqrt(fsq), m, s), largest_accel);
     }
     if (coeff[VISCOUS] > 0.0) {
       const double mu = scan.materials->viscosity(itype)
-          ? scan.materials->viscosity_at(itype, esph[i] / cv[i], scan.who)
+          ? scan.materials->viscosity_at(itype, particles.temperature(i), scan.who)
           : 0.0;
       if (mu > 0.0) take(VISCOUS, viscous(coeff[VISCOUS], h, rho[i], mu, s));
     }

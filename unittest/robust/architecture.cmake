@@ -9,3 +9,9 @@ sphthermal_python_test(robust.architecture.coupling_selftest robust/check_coupli
   LABELS unit)
 sphthermal_python_test(robust.architecture.file_sizes robust/check_file_sizes.py
   ARGS ${sphthermal_src} LABELS unit)
+
+# the one dispatcher from run-time settings to a loop's template parameters
+add_header_test_cxx(test_dispatch robust/test_dispatch.cpp)
+set_target_properties(test_dispatch PROPERTIES CXX_STANDARD 11 CXX_STANDARD_REQUIRED ON
+  CXX_EXTENSIONS OFF)
+sphthermal_test(robust.architecture.dispatch LABELS unit COMMAND test_dispatch)
