@@ -9,7 +9,7 @@ every particle moving every step (they are made anew), each the fastest of
 --repeat runs, all in this run of the script. Writes
 bench/conduction/correction.md.
 
-  /usr/bin/python3 bench/conduction/correction_cost.py [--repeat 3] [--lmp L] [--plugin P]
+  tools/sphpython bench/conduction/correction_cost.py [--repeat 3] [--lmp L] [--plugin P]
 """
 
 import argparse
@@ -22,8 +22,6 @@ import tempfile
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.join(here, "..", "..")
 example = os.path.join(root, "examples", "conduction-disorder")
-sys.path.insert(0, example)
-import disorder  # noqa: E402
 
 
 def pair_time(lmp, plugin, workdir, data, spacing, correction, mean, move):
@@ -49,9 +47,11 @@ def main():
     lmp, plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
     with tempfile.TemporaryDirectory() as workdir:
         data = os.path.join(workdir, "slab.data")
-        points, spacing, height = disorder.positions(80, 20, 0.2, 0.0, 1)
-        disorder.write_data(data, points, height)
-        spacing = f"{spacing:.17g}"
+        # the example's particles, written as its run.sh writes them
+        spacing = subprocess.run([sys.executable, os.path.join(example, "disorder.py"), "data", data,
+                                  "--nx", "80", "--ny", "20", "--jitter", "0.2", "--angle", "0",
+                                  "--seed", "1"],
+                                 check=True, capture_output=True, text=True).stdout.strip()
         cases = [("none", "harmonic", 0, "plain"),
                  ("consistent", "harmonic", 0, "consistent, fixed particles"),
                  ("none", "interface", 0, "interface, fixed particles"),

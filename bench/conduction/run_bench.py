@@ -11,7 +11,7 @@ with dx^2. Serial runs, one at a time, each point the fastest of --repeat
 runs (timings on a shared machine are noisy). Writes results.md and
 error_vs_time.png here (or in --out).
 
-  /usr/bin/python3 bench/conduction/run_bench.py [--quick] [--lmp ...] [--plugin ...]
+  tools/sphpython bench/conduction/run_bench.py [--quick] [--lmp ...] [--plugin ...]
 """
 
 import argparse
@@ -27,8 +27,7 @@ import numpy as np
 
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.normpath(os.path.join(here, "..", ".."))
-sys.path.insert(0, os.path.join(root, "tools"))
-from sphthermal_tools.dump import read_frames  # noqa: E402
+from sphthermal_tools.dump import read_frames
 
 spec = importlib.util.spec_from_file_location("erf", os.path.join(root, "examples", "conduction-erf", "analyse.py"))
 erf_analysis = importlib.util.module_from_spec(spec)

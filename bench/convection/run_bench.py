@@ -6,9 +6,9 @@ cavity, Pr = 0.71) at a Rayleigh number over resolutions and kernels, one
 MPI rank, and writes a table and a PNG of |Nu error| (time-averaged heat
 estimate, against de Vahl Davis 1983) against LAMMPS's loop time.
 
-  /usr/bin/python3 bench/convection/run_bench.py            # Ra 1e5: 40, 60, 80 across, Wendland
+  tools/sphpython bench/convection/run_bench.py            # Ra 1e5: 40, 60, 80 across, Wendland
                                                             # h = 2 dx and quintic h = 1.5 dx (about 1 h)
-  /usr/bin/python3 bench/convection/run_bench.py --quick    # Ra 1e4: 20 and 40 across (about 2 min)
+  tools/sphpython bench/convection/run_bench.py --quick    # Ra 1e4: 20 and 40 across (about 2 min)
 
 Options: --ra, --n N N ..., --kernels wendland:2.0 quintic:1.5 ..., --out DIR.
 """
@@ -23,9 +23,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-from cavity_fv import DE_VAHL_DAVIS  # noqa: E402
-from sphthermal_tools.log import late_rows, longest_thermo_table  # noqa: E402
+from cavity_fv import DE_VAHL_DAVIS
+from sphthermal_tools.log import late_rows, longest_thermo_table
 
 
 def run(lmp, plugin, ra, n, kernel, hdx, out):

@@ -9,7 +9,7 @@ fastest and median of each, new/old of the fastest, of the medians and of
 the two runs of each round (their median), and the spread of each (median /
 fastest - 1) as the noise. About 8 minutes on a busy 2-core machine.
 
-  /usr/bin/python3 bench/flow/check_cost.py --old OLD.so --new NEW.so \
+  tools/sphpython bench/flow/check_cost.py --old OLD.so --new NEW.so \
       [--old-label 67873ff] [--new-label 7ad5cbd] [--lmp build/lmp] [--repeat 9]
 """
 
@@ -17,14 +17,12 @@ import argparse
 import os
 import re
 import statistics
-import sys
 import tempfile
 import time
 from types import SimpleNamespace
 
 here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, here)
-import run_bench  # noqa: E402
+import run_bench
 
 # (n, steps, kernel, hdx, label): n x n particles in 2-D, run_bench.py's kernels
 POINTS = [(120, 1000, "lucy", 2.6, "lucy, cutoff 2.6 dx"), (60, 2000, "lucy", 2.6, "lucy, cutoff 2.6 dx"),

@@ -7,7 +7,7 @@ the four output times in % of u_max, the time the run's CPU seconds. Serial,
 one run per point. Writes poiseuille_error_time.png and appends a table to
 results.md here (or in --out).
 
-  /usr/bin/python3 bench/flow/poiseuille_error_time.py [--fine] [--lmp ...] [--plugin ...]
+  tools/sphpython bench/flow/poiseuille_error_time.py [--fine] [--lmp ...] [--plugin ...]
 """
 
 import argparse
@@ -15,7 +15,6 @@ import importlib.util
 import os
 import resource
 import subprocess
-import sys
 import tempfile
 
 import numpy as np
@@ -23,8 +22,7 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.normpath(os.path.join(here, "..", ".."))
 example = os.path.join(root, "examples", "flow-poiseuille")
-sys.path.insert(0, os.path.join(root, "tools"))
-from sphthermal_tools.dump import read_frames  # noqa: E402
+from sphthermal_tools.dump import read_frames
 
 spec = importlib.util.spec_from_file_location("poiseuille", os.path.join(example, "analyse.py"))
 poiseuille = importlib.util.module_from_spec(spec)

@@ -7,15 +7,14 @@ our two pairs alone, to judge whether fusing them into one pair loop would
 pay. Serial runs, one at a time, each the fastest of --repeat runs. Writes
 results.md here (or in --out).
 
-  /usr/bin/python3 bench/flow/run_bench.py [--quick] [--lmp ...] [--plugin ...]
+  tools/sphpython bench/flow/run_bench.py [--quick] [--lmp ...] [--plugin ...]
 """
 
 import argparse
 import os
-import re
-import resource
-import subprocess
 import tempfile
+
+from sphthermal_tools import bench
 
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.normpath(os.path.join(here, "..", ".."))
@@ -32,37 +31,9 @@ def kept_notes(path, mark):
     return text[text.index(mark):] if mark in text else ""
 
 
-def cpu_seconds(cmd, workdir):
-    """CPU time of a child process: on a shared machine wall time counts the
-    waiting too."""
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    subprocess.run(cmd, cwd=workdir, check=True, capture_output=True,
-                   env=dict(os.environ, OMP_NUM_THREADS="1"))
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-
-
 def cost(args, workdir, lmp_vars, whole_run=False):
-    """Pair CPU time per particle-step (s), the fastest of --repeat runs: the
-    CPU time of the run (set-up included, a few % of it) times the pair's
-    share of the loop time in LAMMPS's timing breakdown (whole_run: the
-    run's CPU time per particle-step)."""
-    cmd = [args.lmp, "-in", os.path.join(here, "in.bench"), "-var", "plugin", args.plugin]
-    for k, v in lmp_vars.items():
-        if k != "steps":
-            cmd += ["-var", k, str(v)]
-    best = None
-    for _ in range(args.repeat):
-        total = cpu_seconds(cmd + ["-var", "steps", str(lmp_vars["steps"]), "-log", "log.lammps"],
-                            workdir)
-        log = open(os.path.join(workdir, "log.lammps")).read()
-        steps, natoms = (int(v) for v in re.findall(
-            r"Loop time of [0-9.eE+-]+ on \d+ procs for (\d+) steps with (\d+) atoms", log)[-1])
-        share = 1.0 if whole_run else \
-            float(re.findall(r"^Pair\s+\|.*\|\s+([0-9.]+)\s*$", log, re.M)[-1]) / 100.0
-        c = total * share / (steps * natoms)
-        best = c if best is None or c < best else best
-    return best
+    """sphthermal_tools.bench.cost of this directory's in.bench."""
+    return bench.cost(os.path.join(here, "in.bench"), args, workdir, lmp_vars, whole_run)
 
 
 def main():

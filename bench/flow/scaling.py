@@ -12,7 +12,7 @@ the styles communicate (atom style sph, fix sph, the pairs), counted from
 the logs' ghost numbers; see scaling.md for the estimate at 64 and 1024
 ranks. Writes scaling.md here (or in --out).
 
-  /usr/bin/python3 bench/flow/scaling.py [--n 120] [--steps 1000] [--repeat 3]
+  tools/sphpython bench/flow/scaling.py [--n 120] [--steps 1000] [--repeat 3]
 """
 
 import argparse

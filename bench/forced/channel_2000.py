@@ -10,9 +10,9 @@ step (LAMMPS's loop time) is the fastest of --repeat runs, and the time to
 2000 s is that times the run's steps to 2000 s (fixed dt). A log of a full
 run (--log, several for a run in pieces) adds its measured wall time.
 
-  /usr/bin/python3 bench/forced/channel_2000.py                 # 2 ranks, 2000 steps, 3 repeats
-  /usr/bin/python3 bench/forced/channel_2000.py --quick         # 500 steps, 1 repeat
-  /usr/bin/python3 bench/forced/channel_2000.py --log examples/forced-channel/out/log.rest2000 \
+  tools/sphpython bench/forced/channel_2000.py                 # 2 ranks, 2000 steps, 3 repeats
+  tools/sphpython bench/forced/channel_2000.py --quick         # 500 steps, 1 repeat
+  tools/sphpython bench/forced/channel_2000.py --log examples/forced-channel/out/log.rest2000 \
       --log-note "pb 0.002, correct all, on a machine shared with other runs"
 """
 

@@ -11,23 +11,21 @@ with LAMMPS's sph/taitwater/morris + sph/heatconduction on the same
 particles. The cost of an extra is the difference of the runs' CPU time per
 particle-step (the fastest of --repeat runs each).
 
-  /usr/bin/python3 bench/forced/run_bench.py            # 120 x 120, 1000 steps, 3 repeats
-  /usr/bin/python3 bench/forced/run_bench.py --quick    # 60 x 60, 300 steps, 1 repeat
+  tools/sphpython bench/forced/run_bench.py            # 120 x 120, 1000 steps, 3 repeats
+  tools/sphpython bench/forced/run_bench.py --quick    # 60 x 60, 300 steps, 1 repeat
 """
 
 import argparse
 import os
-import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "bench", "flow"))
-from run_bench import cost  # noqa: E402
+from sphthermal_tools.bench import cost
 
 
 def per_particle_step(a, workdir, **lmp_vars):
-    return cost(a, workdir, lmp_vars, whole_run=True)
+    return cost(os.path.join(ROOT, "bench", "flow", "in.bench"), a, workdir, lmp_vars, whole_run=True)
 
 
 def main():

@@ -40,7 +40,7 @@ when a run fails or a result is not finite; with --quick (coarse, about
 should conserve energy does not (to 1e-10), so it serves as a smoke test.
 The full run takes about 3 minutes on 2 cores.
 
-  /usr/bin/python3 bench/rheo/run_bench.py [--quick] [--repeat N] [--lmp ...] [--plugin ...] [--out DIR]
+  tools/sphpython bench/rheo/run_bench.py [--quick] [--repeat N] [--lmp ...] [--plugin ...] [--out DIR]
                                            [--only erf,ratio,steelwater,flow]
 """
 
@@ -57,9 +57,8 @@ import numpy as np
 
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.normpath(os.path.join(here, "..", ".."))
-sys.path.insert(0, os.path.join(root, "tools"))
-import fv1d  # noqa: E402
-from sphthermal_tools.dump import read_frames  # noqa: E402
+import fv1d
+from sphthermal_tools.dump import read_frames
 
 MATFILE = os.path.join(root, "potentials", "thermal_300K.sphmat")
 FV_CELLS = {False: 400, True: 200}    # finite-volume cells (full, --quick)

@@ -42,7 +42,7 @@ results; --from-json writes the tables and the plot again without runs).
 Writes results.md and stability_map.png next to this script (or in --out).
 About 5 minutes on one core (--quick: about 1 minute).
 
-  /usr/bin/python3 bench/stability/run_stability.py [--quick] [--only conduction|poiseuille|column|couette]
+  tools/sphpython bench/stability/run_stability.py [--quick] [--only conduction|poiseuille|column|couette]
 """
 
 import argparse

@@ -21,8 +21,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from sphthermal_tools.dump import read_frames  # noqa: E402
+from sphthermal_tools.dump import read_frames
 
 L, ALPHA, TH, TC = 0.02, 10.0 / (1.0 * 1.0e7), 200.0, 0.0
 

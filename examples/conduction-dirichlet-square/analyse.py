@@ -14,8 +14,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from sphthermal_tools.dump import read_frames  # noqa: E402
+from sphthermal_tools.dump import read_frames
 
 T1 = 100.0
 

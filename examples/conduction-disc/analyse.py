@@ -17,11 +17,8 @@ import sys
 
 import numpy as np
 
-here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(here, "..", "..", "tools"))
-sys.path.insert(0, here)
-from sphthermal_tools.dump import read_frames  # noqa: E402
-import disc_exact  # noqa: E402
+from sphthermal_tools.dump import read_frames
+import disc_exact
 
 
 def analyse(prefix, a):

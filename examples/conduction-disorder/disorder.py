@@ -31,10 +31,8 @@ import sys
 
 import numpy as np
 
-root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
-sys.path.insert(0, os.path.join(root, "tools"))
-import fv1d  # noqa: E402
-from sphthermal_tools.dump import read_frames  # noqa: E402
+import fv1d
+from sphthermal_tools.dump import read_frames
 
 # rotated lattices that are periodic over the slab's height of ny = 20
 # spacings: lattice vectors of length a at angle atan(m / n), with

@@ -16,9 +16,8 @@ import sys
 import numpy as np
 
 root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
-sys.path.insert(0, os.path.join(root, "tools"))
-import fv1d  # noqa: E402
-from sphthermal_tools.dump import read_frames  # noqa: E402
+import fv1d
+from sphthermal_tools.dump import read_frames
 
 
 def layers_for(case):

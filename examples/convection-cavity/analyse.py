@@ -19,11 +19,9 @@ import sys
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
-from sphthermal_tools.dump import read_frames  # noqa: E402
-from sphthermal_tools.log import final_nusselt, late_rows, longest_thermo_table  # noqa: E402
-import cavity_fv  # noqa: E402
+from sphthermal_tools.dump import read_frames
+from sphthermal_tools.log import final_nusselt, late_rows, longest_thermo_table
+import cavity_fv
 
 
 def shepard(px, py, x, y, f, radius):

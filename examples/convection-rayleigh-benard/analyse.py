@@ -37,9 +37,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-import rb_linear  # noqa: E402
-from sphthermal_tools.log import longest_thermo_table  # noqa: E402
+import rb_linear
+from sphthermal_tools.log import longest_thermo_table
 
 
 def thermo_table(log):

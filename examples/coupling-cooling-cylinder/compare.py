@@ -9,13 +9,11 @@ initial difference (60 K).
 Exit 1 when the largest error at the comparison times exceeds --max-error."""
 
 import argparse
-import os
 import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import conjugate_cylinder as cc  # noqa: E402
+import conjugate_cylinder as cc
 
 STEEL = (7850.0, 490.0, 45.0, 353.15)
 WATER = (1000.0, 4180.0, 0.6, 293.15)

@@ -9,13 +9,11 @@ Prints the closest approaches, the discs' final speeds and the height of
 the gallium's heat centroid above the discs; exit 1 when a check fails."""
 
 import argparse
-import os
 import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from sphthermal_tools.dump import frame_times, read_frames  # noqa: E402
+from sphthermal_tools.dump import frame_times, read_frames
 
 LIQUID, STEEL, TANK = 1, 2, 3
 

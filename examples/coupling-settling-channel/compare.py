@@ -27,15 +27,13 @@ term (lattice_viscosity_factor), exceeds --max-body times (dx / R)^2.
 
 import argparse
 import math
-import os
 import re
 import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import cylinder_stokes as cs  # noqa: E402
-import wendland2d  # noqa: E402
+import cylinder_stokes as cs
+import wendland2d
 
 # the materials and the geometry of in.channel
 RHO_S, RHO_F, MU, G = 7850.0, 970.0, 10.0, 9.81

@@ -23,16 +23,13 @@ from rho0 g, the water's pressure, not the coupling, is what is off.
 """
 
 import argparse
-import os
 import re
-import sys
 
 import numpy as np
 from scipy.spatial import cKDTree
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import wendland2d  # noqa: E402
-from sphthermal_tools.dump import read_frames  # noqa: E402
+import wendland2d
+from sphthermal_tools.dump import read_frames
 
 RHO0, GAMMA, G = 1000.0, 7.0, 9.81
 

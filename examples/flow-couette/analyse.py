@@ -5,13 +5,11 @@ u(y, t) = V0 y / W + sum_{n>=1} 2 V0 (-1)^n / (n pi) sin(n pi y / W) exp(-n^2 pi
 plate velocity V0, over all fluid particles; |vy| (0 exactly) in the same unit.
 """
 
-import os
 import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-import channel_flow  # noqa: E402
+import channel_flow
 
 W, RHO, MU = 20.0, 1.0, 0.248
 NU = MU / RHO

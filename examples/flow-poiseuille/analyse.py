@@ -7,11 +7,9 @@ Errors are in % of the steady centre-line velocity u_max, over all fluid particl
 |vy| (which is 0 exactly) is reported in the same unit.
 """
 
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-import channel_flow  # noqa: E402
+import channel_flow
 
 W, RHO, MU = 20.0, 1.0, 0.248
 NU = MU / RHO

@@ -18,8 +18,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from sphthermal_tools.dump import read_frames  # noqa: E402
+from sphthermal_tools.dump import read_frames
 
 W, RHO, MU1 = 20.0, 1.0, 0.248
 L1 = W / 2

@@ -28,17 +28,14 @@ spacing) against the series at t = 50, 100, 200, 300 s and the last frame.
              [--series --hdx 1.3 --dtfac 0.15 --cfac 10 [--series-png FILE]]
 """
 import argparse
-import os
 import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import channel_fv  # noqa: E402
-from sphthermal_tools.dump import read_frames  # noqa: E402
+import channel_fv
+from sphthermal_tools.dump import read_frames
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from channel_flow import poiseuille_from_rest  # noqa: E402
+from channel_flow import poiseuille_from_rest
 
 W, LENGTH, MU, RHO, K, T_W, T_IN = 20.0, 200.0, 0.248, 1.0, 131914.89, 420.0, 300.0
 STATIONS = (5.0, 50.0, 100.0, 150.0, 195.0)

@@ -17,14 +17,12 @@ PNG. Checks that the counter-flow cold outlet is the warmer.
 run has reached its steady state.
 """
 import argparse
-import os
 import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import channel_fv  # noqa: E402
-from sphthermal_tools.dump import read_frames  # noqa: E402
+import channel_fv
+from sphthermal_tools.dump import read_frames
 
 W, LENGTH, T_C, T_H = 0.1, 2.0, 300.0, 800.0
 # in.exchanger's c0 = 10 u_max of the hot stream, u_max = f_x W^2 / (8 nu)

@@ -11,8 +11,7 @@ import argparse
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from sphthermal_tools.log import longest_thermo_table  # noqa: E402
+from sphthermal_tools.log import longest_thermo_table
 
 
 def main():

@@ -10,13 +10,10 @@ of the temperature with the velocity at some times.
     analyse.py tank.dump [--times 0 5 10 20 60 300] [--png tank.png]
 """
 import argparse
-import os
-import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from sphthermal_tools.dump import frame_times, read_frames  # noqa: E402
+from sphthermal_tools.dump import frame_times, read_frames
 
 L = 0.0386
 

@@ -23,23 +23,18 @@ consistent, interface: 0.822 % / 0.223 % here, 0.837 % / 0.224 % with
 here, 0.443 % / 0.046 % there.
 Explicit Euler with dt = 0.1 dx^2 / alpha_max.
 
-  /usr/bin/python3 tools/disorder_prototype.py [--jitter J] [--angle A] [--k2 K] [--rhocv2 R]
+  PYTHONPATH=examples/conduction-disorder tools/sphpython tools/research/disorder_prototype.py [--jitter J] [--angle A] [--k2 K] [--rhocv2 R]
       [--weights plain|consistent] [--conductance harmonic|exact|interface]
 """
 
 import argparse
 import math
-import os
-import sys
 
 import numpy as np
 from scipy.spatial import cKDTree
 
-here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(here, ".."))  # tools/ (fv1d)
-sys.path.insert(0, os.path.join(here, "..", "..", "examples", "conduction-disorder"))
-import fv1d  # noqa: E402
-import disorder  # noqa: E402
+import disorder    # examples/conduction-disorder, on PYTHONPATH (see the usage above)
+import fv1d
 
 SIGMA = 10.0 / (7.0 * math.pi)    # cubic B-spline, 2-D
 

@@ -55,15 +55,12 @@ the width of the stencil in the water (diffusion length 4 dx): short pairs
 help (c4), but c4 also takes weight from the unconstrained particles at
 the free ends (the 10 t1 errors at x = 0 and 1 with c4 = 0.5).
 
-  /usr/bin/python3 tools/disorder_second_order.py [--jitter J] [--angle A] [--k2 K] [--rhocv2 R]
+  PYTHONPATH=examples/conduction-disorder tools/sphpython tools/research/disorder_second_order.py [--jitter J] [--angle A] [--k2 K] [--rhocv2 R]
       [--weights second|first|consistent|plain]
       [--conductance exact|interface|interface-shuffled|harmonic] [--c4 C] [-v]
 """
 import argparse
-import os
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla

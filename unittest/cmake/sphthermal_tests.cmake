@@ -22,10 +22,17 @@
 #   WILL_FAIL                    a control that must fail
 #   RESOURCE_LOCK <name>         tests that write the same file, one at a time
 #   ENVIRONMENT <NAME=VALUE>...  ctest's ENVIRONMENT (every test also gets
-#                                PYTHONPATH=<repo>/tools, for sphthermal_tools)
+#                                PYTHONPATH=<repo>/tools:<repo>/unittest/tools)
 
 set(SPHTHERMAL_TESTS_DIR ${CMAKE_CURRENT_LIST_DIR}/..)
 get_filename_component(SPHTHERMAL_TESTS_DIR ${SPHTHERMAL_TESTS_DIR} ABSOLUTE)
+
+# the one way the Python scripts find shared code: tools/ (sphthermal_tools,
+# the reference solvers) and the test harness unittest/tools (sphtest,
+# checks, lammps_checks, cavity_scenes); every test gets it, and a script
+# run at configure time runs as ${SPHTHERMAL_PYTHON}
+set(SPHTHERMAL_PYTHONPATH ${SPHTHERMAL_ROOT}/tools:${SPHTHERMAL_TESTS_DIR}/tools)
+set(SPHTHERMAL_PYTHON ${CMAKE_COMMAND} -E env PYTHONPATH=${SPHTHERMAL_PYTHONPATH} ${PYTHON_NUMPY})
 
 set(sphthermal_test_flags WILL_FAIL)
 set(sphthermal_test_values PROCESSORS WORKING_DIRECTORY RESOURCE_LOCK)
@@ -97,8 +104,7 @@ function(sphthermal_test name)
   if(T_RESOURCE_LOCK)
     set_tests_properties(${name} PROPERTIES RESOURCE_LOCK ${T_RESOURCE_LOCK})
   endif()
-  # the one way the Python scripts find the package tools/sphthermal_tools
-  list(APPEND T_ENVIRONMENT PYTHONPATH=${SPHTHERMAL_ROOT}/tools)
+  list(APPEND T_ENVIRONMENT PYTHONPATH=${SPHTHERMAL_PYTHONPATH})
   set_tests_properties(${name} PROPERTIES ENVIRONMENT "${T_ENVIRONMENT}")
 endfunction()
 
@@ -235,7 +241,7 @@ endfunction()
 set(error_sites_dir ${CMAKE_CURRENT_BINARY_DIR}/error-sites)
 function(add_error_cases area cases)
   sphthermal_test_path(cases ${cases})
-  execute_process(COMMAND ${PYTHON_NUMPY} ${SPHTHERMAL_TESTS_DIR}/tools/sphtest.py error --list
+  execute_process(COMMAND ${SPHTHERMAL_PYTHON} ${SPHTHERMAL_TESTS_DIR}/tools/sphtest.py error --list
                           --cases ${cases} --lmp x --plugin x
                   OUTPUT_VARIABLE case_names OUTPUT_STRIP_TRAILING_WHITESPACE)
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${cases})

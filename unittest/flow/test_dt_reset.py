@@ -31,8 +31,7 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "tools"))
-from sphtest import lammps_arguments, mpi_env  # noqa: E402
+from sphtest import lammps_arguments, mpi_env
 
 BIG = 1.0e299              # the fix reports a limit that applies to no atom as 1e300
 DEFAULTS = {"acoustic": 0.1, "force": 0.25, "viscous": 0.125, "thermal": 0.5}
@@ -189,7 +188,6 @@ def read_cv(data_file):
 
 def relaxation_rates(atoms, box, mass, cv, k, kernel="cubic", cut=0.026, eta=0.1):
     """lambda_i of every atom (harmonic mean), by a direct sum over all pairs."""
-    sys.path.insert(0, os.path.join(HERE, "..", "tools"))
     from sphtest import KERNEL_2D
     q_max, sigma, dfdq = KERNEL_2D[kernel]
     h = cut / q_max

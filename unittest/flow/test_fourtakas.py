@@ -6,8 +6,7 @@ import os
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(here, "..", "tools"))
-import sphtest  # noqa: E402
+import sphtest
 
 
 def largest_fluid_drho(driver, plugin, diffusion):

@@ -24,8 +24,7 @@ import struct
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphtest import finish, lammps_arguments, record_site, run_script  # noqa: E402
+from sphtest import finish, lammps_arguments, record_site, run_script
 
 # the fixes, defined alike before write_restart and after read_restart (the
 # fix's restart() reads its state when it is defined again)

@@ -14,17 +14,14 @@ at an impulsive start; a reset state would be off by up to 250 K.
 import argparse
 import os
 import subprocess
-import sys
 import tempfile
 
 import numpy as np
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-from sphthermal_tools.dump import read_frames  # noqa: E402
+from sphthermal_tools.dump import read_frames
 
-sys.path.insert(0, os.path.join(ROOT, "unittest", "tools"))
-from sphtest import finish, lammps_arguments  # noqa: E402
+from sphtest import finish, lammps_arguments
 
 INPUT = os.path.join(ROOT, "examples", "forced-channel", "in.exchanger")
 

@@ -39,11 +39,9 @@ import tempfile
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "convection"))
-from lammps_checks import read_dump, run_lammps, thermo_tables  # noqa: E402
+from lammps_checks import read_dump, run_lammps, thermo_tables
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphtest import lammps_arguments  # noqa: E402
+from sphtest import lammps_arguments
 
 SPACING = 0.1
 T_INLET = 0.25

@@ -24,16 +24,12 @@ import argparse
 import math
 import os
 import shutil
-import sys
 import tempfile
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "convection"))
-sys.path.insert(0, os.path.join(HERE, "..", "tools"))
-from lammps_checks import lammps_arguments, read_frames, run_lammps  # noqa: E402
-from checks import below, finish, that  # noqa: E402
+from lammps_checks import lammps_arguments, read_frames, run_lammps
+from checks import below, finish, that
 
 DX = 0.001
 NX, NY = 16, 12

@@ -15,19 +15,15 @@
 import argparse
 import os
 import shutil
-import sys
 import tempfile
 
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.join(HERE, "..", "..")
-sys.path.insert(0, os.path.join(HERE, "..", "convection"))
-sys.path.insert(0, os.path.join(HERE, "..", "tools"))
-sys.path.insert(0, os.path.join(ROOT, "examples"))
-from lammps_checks import lammps_arguments, read_frames, run_input  # noqa: E402
-from checks import below, finish, that  # noqa: E402
-import mixing_tank  # noqa: E402
+from lammps_checks import lammps_arguments, read_frames, run_input
+from checks import below, finish, that
+import mixing_tank
 
 
 def run(args, example, variables, workdir):

@@ -2,7 +2,7 @@
 # style and per main option, the table in test_probe.py); coverage: every
 # style the sources declare has a probe
 execute_process(
-  COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_LIST_DIR}/test_probe.py --lmp - --plugin - --list
+  COMMAND ${SPHTHERMAL_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/test_probe.py --lmp - --plugin - --list
   OUTPUT_VARIABLE sphthermal_probes OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE probe_list_rc)
 if(NOT probe_list_rc EQUAL 0)
   message(FATAL_ERROR "robust/test_probe.py --list failed: ${probe_list_rc}")
@@ -18,7 +18,7 @@ sphthermal_python_test(robust.probe.coverage robust/test_probe.py LAMMPS
 
 # bad forms of each probe's command line (robust.syntax.<probe>)
 execute_process(
-  COMMAND ${PYTHON_NUMPY} ${CMAKE_CURRENT_LIST_DIR}/test_probe.py --lmp - --plugin -
+  COMMAND ${SPHTHERMAL_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/test_probe.py --lmp - --plugin -
           --list-syntax
   OUTPUT_VARIABLE sphthermal_syntax_probes OUTPUT_STRIP_TRAILING_WHITESPACE)
 foreach(probe ${sphthermal_syntax_probes})

@@ -13,12 +13,10 @@ different ones, the run is made with the fixes in both orders. Checked:
 """
 
 import argparse
-import os
 import re
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphtest import lammps_arguments, run_script  # noqa: E402
+from sphtest import lammps_arguments, run_script
 
 FIXES = {
     "iso": "fix {id} {group} sph/wall/isothermal 350.0",

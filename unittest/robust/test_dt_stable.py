@@ -11,12 +11,10 @@ can fail.
 """
 
 import argparse
-import os
 import re
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphtest import lammps_arguments, run_script  # noqa: E402
+from sphtest import lammps_arguments, run_script
 
 CASES = {
     # name: (mean, k2 / k1, rho2 cv2 / (rho1 cv1), jitter in spacings)

@@ -32,12 +32,9 @@ the thermal limit 1e4 times too large: the run blows up).
 
 import argparse
 import math
-import os
 import re
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphtest import Checks, finish, lammps_arguments, run_script  # noqa: E402
+from sphtest import Checks, finish, lammps_arguments, run_script
 
 AMU = 1.66053906660e-27
 # units: (mass, length, time in kg, m, s; s = ftm2v)

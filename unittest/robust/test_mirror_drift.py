@@ -14,12 +14,9 @@ the run at step 0 and passes at step 5; moved to y = -0.04 it stops the run
 at step 5 too.
 """
 import argparse
-import os
 import re
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphtest import Checks, finish, lammps_arguments, run_script  # noqa: E402
+from sphtest import Checks, finish, lammps_arguments, run_script
 
 SCRIPT = """plugin load {plugin}
 units           si

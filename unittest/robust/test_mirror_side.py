@@ -14,17 +14,13 @@ wall atoms said to lie inside it).
 Usage: test_mirror_side.py --lmp LMP --plugin PLUGIN [--np N]
 """
 import os
-import sys
 import tempfile
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "convection"))
-from lammps_checks import read_dump, run_lammps  # noqa: E402
+from lammps_checks import read_dump, run_lammps
 
-sys.path.insert(0, os.path.join(HERE, "..", "tools"))
-from sphtest import Checks, finish, lammps_arguments  # noqa: E402
+from sphtest import Checks, finish, lammps_arguments
 
 LO, HI = 0.8, 1.6    # the obstacle, in x and y
 CUT = 0.3            # the kernel's support

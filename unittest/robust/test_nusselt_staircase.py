@@ -18,16 +18,13 @@ Usage: test_nusselt_staircase.py --lmp LMP --plugin PLUGIN [--np N]
 import math
 import os
 import re
-import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "convection"))
-from lammps_checks import run_input, run_lammps  # noqa: E402
-from test_walls import CONDUCTION, LATTICE, NUSSELT_WALLS  # noqa: E402
+from lammps_checks import run_input, run_lammps
+from cavity_scenes import CONDUCTION, LATTICE, NUSSELT_WALLS
 
-sys.path.insert(0, os.path.join(HERE, "..", "tools"))
-from sphtest import Checks, finish, lammps_arguments  # noqa: E402
+from sphtest import Checks, finish, lammps_arguments
 
 # the flat-walled cavity of convection.nusselt.linear, not jittered
 FLAT = LATTICE + CONDUCTION + NUSSELT_WALLS + """compute         hot_local hot reduce sum c_nu_hot[1]

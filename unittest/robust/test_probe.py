@@ -30,8 +30,7 @@ import subprocess
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphtest import Checks, finish, lammps_arguments, mpi_env, mpi_prefix  # noqa: E402
+from sphtest import Checks, finish, lammps_arguments, mpi_env, mpi_prefix
 
 SOURCES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "src",
                        "USER-SPHTHERMAL")

@@ -26,8 +26,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphtest import lammps_arguments, run_script  # noqa: E402
+from sphtest import lammps_arguments, run_script
 
 DX = 0.01
 H = 1.3 * DX

@@ -40,18 +40,14 @@ import argparse
 import math
 import os
 import subprocess
-import sys
 import tempfile
 
 import numpy as np
 from scipy.spatial import cKDTree
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "tools"))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
-from checks import finish, that  # noqa: E402
-from sphthermal_tools.dump import read_frames  # noqa: E402
-import sph_boundary as sb  # noqa: E402
+from checks import finish, that
+from sphthermal_tools.dump import read_frames
+import sph_boundary as sb
 
 p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
 p.add_argument("--lmp", help="LAMMPS executable (the read_data check is skipped without it)")

@@ -27,8 +27,7 @@ import sys
 import tempfile
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
-sys.path.insert(0, os.path.join(ROOT, "unittest", "tools"))
-from sphtest import lammps_arguments, mpi_env, mpi_prefix  # noqa: E402
+from sphtest import lammps_arguments, mpi_env, mpi_prefix
 
 EXAMPLE = os.path.join(ROOT, "examples", "howto-hot-block", "in.hot-block")
 HOWTO = os.path.join(ROOT, "doc", "src", "Howto_thermal_scene.rst")

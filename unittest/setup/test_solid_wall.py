@@ -25,13 +25,10 @@ import tempfile
 
 import numpy as np
 
-ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-import fv1d  # noqa: E402
-from sphthermal_tools.dump import read_frames  # noqa: E402
+import fv1d
+from sphthermal_tools.dump import read_frames
 
-sys.path.insert(0, os.path.join(ROOT, "unittest", "tools"))
-from sphtest import finish, lammps_arguments, mpi_env, mpi_prefix  # noqa: E402
+from sphtest import finish, lammps_arguments, mpi_env, mpi_prefix
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 

@@ -13,11 +13,10 @@ import tempfile
 import numpy as np
 
 here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(here, "..", "..", "tools"))
-import fv1d  # noqa: E402
-from sphthermal_tools.dump import read_frames  # noqa: E402
+import fv1d
+from sphthermal_tools.dump import read_frames
 
-from sphtest import lammps_arguments  # noqa: E402
+from sphtest import lammps_arguments
 
 p = argparse.ArgumentParser(description=__doc__)
 lammps_arguments(p, mpi=False)

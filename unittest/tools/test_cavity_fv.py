@@ -18,8 +18,7 @@ import numpy as np
 from checks import below, fail, finish, that
 
 TOOLS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools")
-sys.path.insert(0, TOOLS)
-import cavity_fv  # noqa: E402
+import cavity_fv
 
 # (a) conduction, solved from uniform theta = 0.5 on the stretched grid
 r = cavity_fv.solve(0.0, n=24)

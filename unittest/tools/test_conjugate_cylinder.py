@@ -10,16 +10,13 @@ with its wall held at a temperature against the Bessel series (the held-wall
 boundary)."""
 
 import math
-import os
-import sys
 import time
 
 import numpy as np
 
 from checks import below, finish, inside
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import conjugate_cylinder as cc  # noqa: E402
+import conjugate_cylinder as cc
 
 t_start = time.time()
 R = 0.05

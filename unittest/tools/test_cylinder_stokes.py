@@ -12,16 +12,13 @@ mu; (d) the drag is the dissipated power over the speed, to round-off;
 8 a below (the settling example's end effect)."""
 
 import math
-import os
-import sys
 import time
 
 import numpy as np
 
 from checks import below, finish, inside
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import cylinder_stokes as cs  # noqa: E402
+import cylinder_stokes as cs
 
 t_start = time.time()
 a = 1.0

@@ -4,15 +4,12 @@ time (case 2), a slab with held faces (case 3), and the steady composite wall
 (case 6) approached from a linear start."""
 
 import math
-import os
-import sys
 
 import numpy as np
 
 from checks import below, finish
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import fv1d  # noqa: E402
+import fv1d
 
 erf = np.vectorize(math.erf)
 

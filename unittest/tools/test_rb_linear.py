@@ -5,13 +5,10 @@ W = 1.5H that the SPH convection runs use, and the growth rate changing sign
 at the onset so that measured growth rates can be compared with it."""
 
 import math
-import os
-import sys
 
 from checks import finish, near, that
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import rb_linear  # noqa: E402
+import rb_linear
 
 ra, a = rb_linear.onset()
 near(ra, 1707.76, 0.05, "free onset Ra_c")

@@ -8,15 +8,13 @@ environment variable LMP names a LAMMPS executable)."""
 import math
 import os
 import subprocess
-import sys
 import tempfile
 
 import numpy as np
 
 from checks import finish, that
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import sph_boundary as sb  # noqa: E402
+import sph_boundary as sb
 
 
 def ring_spacing(p):
@@ -154,7 +152,6 @@ with tempfile.TemporaryDirectory() as tmp:
                     f"write_dump all custom {tmp}/back.dump id type mass x y d_nx d_ny d_nz modify sort id "
                     "format float %.17g\n")
         out = subprocess.run([lmp, "-in", inp, "-log", "none", "-screen", "none"], cwd=tmp)
-        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
         from sphthermal_tools.dump import read_frames
         fr = read_frames(os.path.join(tmp, "back.dump"))[0][1] if out.returncode == 0 else None
         ok = fr is not None and len(fr["id"]) == len(s3)

@@ -153,8 +153,7 @@ def check_bin_means(python):
     """bin_means against the linear field, whose bin means are its values at
     the bin centres when the particles sit symmetrically in each bin."""
     code = f"""
-import json, sys
-sys.path.insert(0, {TOOLS!r})  # the directory of sphplot.py (in the test's PYTHONPATH too)
+import json
 import numpy as np
 from sphplot import bin_means, bins_for
 x = np.repeat((np.arange({NX}) + 0.5) / {NX}, {NY})

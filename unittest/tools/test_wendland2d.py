@@ -1,13 +1,11 @@
 """tools/wendland2d.py: W integrates to 1 over the plane, dW/dr is the
 derivative of W, and both vanish from r = 2 h on."""
 
-import os
 import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import wendland2d  # noqa: E402
+import wendland2d
 
 failures = []
 h = 0.7

@@ -57,3 +57,11 @@ if(NOT no_docutils)
 else()
   message(STATUS "docs.rst left out: no docutils (apt-get install python3-docutils)")
 endif()
+
+# the measured numbers the docs quote are those of the results files the
+# benchmarks and reference solvers write (the quotes: doc_numbers.txt);
+# the self-test must see each wrong quote of doc_numbers_faults.txt fail
+sphthermal_python_test(docs.numbers tools/check_doc_numbers.py ARGS ${SPHTHERMAL_ROOT} LABELS unit)
+sphthermal_python_test(docs.numbers_selftest tools/check_doc_numbers.py
+  ARGS ${SPHTHERMAL_ROOT} --table ${CMAKE_CURRENT_LIST_DIR}/doc_numbers_faults.txt --expect-fail
+  LABELS unit)

@@ -26,8 +26,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphthermal_tools.dump import frame_times, read_frames  # noqa: E402
+from sphthermal_tools.dump import frame_times, read_frames
 
 R, H = 0.0193, 0.0386
 T_HOT, T_COLD = 303.0, 283.0

@@ -7,14 +7,12 @@ import subprocess
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from sphthermal_tools.dump import read_frames  # noqa: E402
-from cavity_fv import DE_VAHL_DAVIS  # noqa: E402,F401
-from sphthermal_tools import log as lammps_log  # noqa: E402
-from sphthermal_tools.log import late_rows, longest_thermo_table, thermo_tables  # noqa: E402,F401
+from sphthermal_tools.dump import read_frames
+from cavity_fv import DE_VAHL_DAVIS  # noqa: F401
+from sphthermal_tools import log as lammps_log
+from sphthermal_tools.log import late_rows, longest_thermo_table, thermo_tables  # noqa: F401
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphtest import Checks, lammps_arguments, mpi_env, mpi_prefix  # noqa: E402,F401
+from sphtest import Checks, lammps_arguments, mpi_env, mpi_prefix  # noqa: F401
 
 
 def serial_check(doc):

@@ -6,12 +6,10 @@ the profiles and their errors; thresholds that make the exit status 1."""
 
 import argparse
 import os
-import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from sphthermal_tools.dump import read_frames  # noqa: E402
+from sphthermal_tools.dump import read_frames
 
 
 def poiseuille_from_rest(y, t, u_max, nu, width, terms=200):
