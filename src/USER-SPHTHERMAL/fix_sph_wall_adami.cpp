@@ -141,6 +141,9 @@ void FixSPHWallAdami::init()
   thermal_expansion = materials->thermal_expansion();
   // without 'body', the fluid's body force is the run's (a resting wall)
   body_force = body_given ? nullptr : SPHBodyForce::find(lmp, "Fix sph/wall/adami");
+  if (body_given)
+    SPHBodyForce::warn_overridden(lmp, "Fix sph/wall/adami", "body", body,
+                                  "without 'body' the wall reads it");
   // each fluid particle's own buoyancy, which varies with its temperature
   buoyancy = SPHBodyForce::find_buoyancy(lmp);
 

@@ -266,13 +266,9 @@ void PairSPHHarmonicVisc::init_style()
                      "Pair style sph/harmonic/visc: fourtakas {} {} {} assumes gravity, but no fix "
                      "gravity or addforce is defined",
                      gravity[0], gravity[1], gravity[2]);
-    else if (body_force && (body_force[0] != gravity[0] || body_force[1] != gravity[1] ||
-                            body_force[2] != gravity[2]))
-      error->warning(FLERR,
-                     "Pair style sph/harmonic/visc: fourtakas {} {} {} differs from the body "
-                     "force of fix gravity ({} {} {}); 'diffusion fourtakas' (the default) reads it",
-                     gravity[0], gravity[1], gravity[2], body_force[0], body_force[1],
-                     body_force[2]);
+    else
+      SPHBodyForce::warn_overridden(lmp, "Pair style sph/harmonic/visc", "fourtakas", gravity,
+                                    "'diffusion fourtakas' (the default) reads it");
   }
 
 

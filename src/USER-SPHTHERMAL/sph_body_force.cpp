@@ -8,6 +8,7 @@
 
 #include "sph_body_force.h"
 
+#include "comm.h"
 #include "error.h"
 #include "fix.h"
 #include "fix_gravity.h"
@@ -117,4 +118,17 @@ int SPHBodyForce::constant_zero(Fix *fix)
 {
   auto *gravity = dynamic_cast<FixGravity *>(fix);
   return gravity ? GravityMagnitude::constant_zero(gravity) : 0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void SPHBodyForce::warn_overridden(LAMMPS *lmp, const char *who, const char *keyword,
+                                   const double *given, const char *reads)
+{
+  const double *gvec = find(lmp, who);
+  // a fix gravity with variables sets its vector only at its first force
+  if (!gvec || !constant(source(lmp)) || lmp->comm->me != 0) return;
+  if (given[0] == gvec[0] && given[1] == gvec[1] && given[2] == gvec[2]) return;
+  lmp->error->warning(FLERR, "{}: {} {} {} {} differs from the body force of fix gravity ({} {} {}); {}",
+                      who, keyword, given[0], given[1], given[2], gvec[0], gvec[1], gvec[2], reads);
 }

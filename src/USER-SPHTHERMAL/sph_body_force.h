@@ -41,6 +41,13 @@ namespace SPHBodyForce {
   // before a style derives anything from it
   void check_finite(LAMMPS *lmp, const char *file, int line, const char *who, const double *gvec);
 
+  // a style's keyword that gives its own acceleration ('given') instead of
+  // reading the body force: a warning (rank 0) naming 'who', 'keyword' and
+  // both vectors when a constant body-force fix gives another one; 'reads'
+  // says what the style reads without the keyword
+  void warn_overridden(LAMMPS *lmp, const char *who, const char *keyword, const double *given,
+                       const char *reads);
+
   // the fix whose acceleration find() returns, nullptr when there is none
   class Fix *source(LAMMPS *lmp);
 
