@@ -40,7 +40,10 @@ def main():
     p.add_argument("--out", default=here)
     args = p.parse_args()
     workdir = tempfile.mkdtemp(prefix="sphcheckcost")
-    plugins = {"old": args.old, "new": args.new}
+    # the runs' working directory is a temporary one: absolute paths
+    plugins = {"old": os.path.abspath(args.old), "new": os.path.abspath(args.new)}
+    args.lmp = os.path.abspath(args.lmp)
+    os.makedirs(args.out, exist_ok=True)
     version = None
     start = time.time()
 

@@ -15,6 +15,7 @@ PairStyle(sph/cleary/heat,PairSPHClearyHeat);
 #include "pair_sph_kernel.h"
 #include "sph_comm_stage.h"
 #include "sph_conduction.h"
+#include "sph_dispatch.h"
 #include "sph_second_moment.h"
 
 #include <string>
@@ -237,7 +238,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   struct EvalCall;       // eval<...> for this run's settings
   template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RMASS,
             int RELAX>
-  void eval(int ifrom, int ito, double *desph, double *relax);
+  SPH_LOOP void eval(int ifrom, int ito, double *desph, double *relax);
   void tally_flows();
   int flow_loop_possible();
   void update_temperature();

@@ -17,8 +17,7 @@ namespace LAMMPS_NS {
 //   SPHCommStage stage;
 //   stage.rows(corr_kinv, 6).rows(corr_deficit, 3);    // 9 values per atom
 //
-// and hands its pack/unpack calls to the stage's. Each atom's values are
-// packed together, field after field.
+// and hands its pack/unpack calls to the stage's.
 class SPHCommStage {
  public:
   enum Combine { SUM, MAX, MIN };
@@ -41,13 +40,14 @@ class SPHCommStage {
     double *flat;
     int width, offset;
     Combine combine;
-    double *values(int i) const { return rows ? rows[i] + offset : flat + (long) i * width; }
   };
   static constexpr int MAX_FIELDS = 4;
   Field fields[MAX_FIELDS];
   int nfields = 0;
   SPHCommStage &add(const Field &field);
-  int pack_atom(int i, double *buf) const;
+  // visit(field, the atom's values of it, their place in the buffer) for
+  // atoms atom_of(0..n-1), field after field
+  template <class AtomOf, class Visit> void walk(int n, AtomOf atom_of, Visit visit) const;
 };
 
 }    // namespace LAMMPS_NS

@@ -22,6 +22,15 @@
 
 #include "sph_kernels.h"
 
+// A loop reached through SPHDispatch stays a function of its own: inlined
+// into the chain of calls, the conduction loop with 'mean interface' and
+// 'correction consistent' ran 17 % slower (bench/conduction/correction_cost.py)
+#if defined(__GNUC__) || defined(__clang__)
+#define SPH_LOOP __attribute__((noinline))
+#else
+#define SPH_LOOP
+#endif
+
 namespace LAMMPS_NS {
 
 template <int... Values> struct SPHValues {};
