@@ -1,6 +1,6 @@
-"""Input blocks of the unit-cavity scenes that the convection, robust and
-robust checks share (one place, imported from unittest/tools on the
-tests' PYTHONPATH)."""
+"""Input blocks of the unit-cavity scenes that the convection and robust
+checks share (one place, imported from unittest/tools on the tests'
+PYTHONPATH)."""
 
 # the unit cavity of lattice particles, 0.1 apart, walls three rows thick
 LATTICE = """plugin load {plugin}
