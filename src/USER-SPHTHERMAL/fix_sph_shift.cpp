@@ -412,7 +412,7 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
   }
   if (CORRECT) {
     temperature.resize(nall);
-    for (int i = 0; i < nall; i++) temperature[i] = particles.temperature(i);
+    particles.temperatures(temperature.data(), nall);
   }
 
   // the neighbour sums of an atom of the group, at these offsets:

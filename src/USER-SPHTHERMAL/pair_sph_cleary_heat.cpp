@@ -111,9 +111,9 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
 void PairSPHClearyHeat::begin_compute()
 {
   SPHCheck::particles(lmp, FLERR, "Pair style sph/cleary/heat", SPHCheck::RHO | SPHCheck::ESPH);
+  update_temperature();
   if (conductivity_varies) update_conductivity();
   if (update->setupflag) check_neighbours();
-  update_temperature();
   refresh_pairs = (correct || mean == SPHC_INTERFACE) && !pairs_current();
   if (relax_wanted) zero_relax_rate();
   if (refresh_pairs) refresh_support();
@@ -192,8 +192,9 @@ void PairSPHClearyHeat::finish_relax()
 
 
 /* ----------------------------------------------------------------------
-   conductivity of every owned and ghost atom at its temperature
-   (ghosts carry esph, cv and mask, so no communication is needed); a dummy
+   conductivity of every owned and ghost atom at the temperature that
+   update_temperature() filled in (ghosts carry esph, cv and mask, so no
+   communication is needed); a dummy
    of fix sph/wall/dirichlet takes the wall temperature, since its
    extrapolated one is no state of the material and can lie far outside the
    range of the law (k = exp(4 T) would choke the wall)
@@ -206,16 +207,14 @@ void PairSPHClearyHeat::update_conductivity()
     memory->destroy(conductivity);
     memory->create(conductivity, nmax, "pair:conductivity");
   }
-  const double *const esph = atom->esph;
-  const double *const cv = atom->cv;
   const int *const type = atom->type;
   const int *const mask = atom->mask;
   const int nall = atom->nlocal + atom->nghost;
   for (int i = 0; i < nall; i++) {
-    double temperature = esph[i] / cv[i];
+    double t = temperature[i];    // this step's, update_temperature()
     for (const auto &wall : dummy_walls)
-      if (mask[i] & wall.first) temperature = wall.second;
-    conductivity[i] = materials->conductivity_at(type[i], temperature, "Pair style sph/cleary/heat");
+      if (mask[i] & wall.first) t = wall.second;
+    conductivity[i] = materials->conductivity_at(type[i], t, "Pair style sph/cleary/heat");
   }
 }
 

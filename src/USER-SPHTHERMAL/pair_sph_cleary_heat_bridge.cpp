@@ -72,9 +72,9 @@ int PairSPHClearyHeat::flow_loop_possible()
 
 PairSPHClearyHeat::FlowLoopTerm PairSPHClearyHeat::begin_flow_loop_term()
 {
+  update_temperature();
   if (conductivity_varies) update_conductivity();
   if (update->setupflag) check_neighbours();
-  update_temperature();
   if (relax_wanted) zero_relax_rate();
   // the heat style's mass of every atom (the flow's differs for solids)
   const int nall = atom->nlocal + atom->nghost;
