@@ -33,8 +33,8 @@ static const char cmd[] = "fix sph/materials";
 /* ---------------------------------------------------------------------- */
 
 FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), eos_type(nullptr), eos_set(nullptr), cv_type(nullptr),
-    rho0_type(nullptr), expansion_type(nullptr)
+    Fix(lmp, narg, arg), state(new SPHAtomState(lmp, this)), eos_type(nullptr), eos_set(nullptr),
+    cv_type(nullptr), rho0_type(nullptr), expansion_type(nullptr)
 {
   ntypes = atom->ntypes;
   conductivity_laws.resize(ntypes + 1);
@@ -109,8 +109,7 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
   for (int i = 1; i <= ntypes; i++) {
     if (!eos_set[i]) continue;
     if (rho0_type[i] <= 0.0)
-      error->all(FLERR, "Illegal {} command: type {} has an equation of state but no rho0", cmd,
-                 i);
+      error->all(FLERR, "Illegal {} command: type {} has an equation of state but no rho0", cmd, i);
     eos_type[i].rho0 = rho0_type[i];
     // thermal expansion of the reference density: the type's expansion coefficient
     if (eos_type[i].thermal) {
@@ -128,6 +127,7 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
 
 FixSPHMaterials::~FixSPHMaterials()
 {
+  delete state;
   delete[] eos_type;
   memory->destroy(eos_set);
   memory->destroy(cv_type);
@@ -139,7 +139,7 @@ FixSPHMaterials::~FixSPHMaterials()
 
 int FixSPHMaterials::setmask()
 {
-  return 0;
+  return PRE_FORCE | MIN_PRE_FORCE;
 }
 
 /* ----------------------------------------------------------------------
@@ -148,6 +148,7 @@ int FixSPHMaterials::setmask()
 
 void FixSPHMaterials::init()
 {
+  state->init();
   for (int i = 0; i <= ntypes; i++) conductivity_laws[i].warned = viscosity_laws[i].warned = 0;
 }
 
@@ -162,7 +163,8 @@ void FixSPHMaterials::out_of_range(MaterialLaw &slot, int type, double T, double
 {
   const char *law = sphm_law_name(slot.law.kind);
   if (!sphm_value_valid(value))
-    SPHCheck::stop(lmp, FLERR, fmt::format("{}: {} of atom type {} is {} at T = {} ({} law of fix "
+    SPHCheck::stop(lmp, FLERR,
+                   fmt::format("{}: {} of atom type {} is {} at T = {} ({} law of fix "
                                "sph/materials); it must be finite and >= 0",
                                who, property, type, value, T, law));
   if (!slot.warned) {
@@ -207,12 +209,18 @@ double FixSPHMaterials::compute_array(int row, int column)
     return (slot.law.kind == SPHM_TABLE) ? slot.law.table_p[0] : slot.law.c[0];
   };
   switch (column) {
-    case 0: return rho0_type[type];
-    case 1: return cv_type[type];
-    case 2: return expansion_type[type];
-    case 3: return eos_set[type] ? eos_type[type].c0 : -1.0;
-    case 4: return law_value(conductivity_laws[type]);
-    default: return law_value(viscosity_laws[type]);
+    case 0:
+      return rho0_type[type];
+    case 1:
+      return cv_type[type];
+    case 2:
+      return expansion_type[type];
+    case 3:
+      return eos_set[type] ? eos_type[type].c0 : -1.0;
+    case 4:
+      return law_value(conductivity_laws[type]);
+    default:
+      return law_value(viscosity_laws[type]);
   }
 }
 
@@ -236,7 +244,8 @@ FixSPHMaterials *FixSPHMaterials::find(LAMMPS *lmp, const char *who)
 {
   const std::vector<FixSPHMaterials *> all = SPHHub(lmp).fixes<FixSPHMaterials>();
   const int count = all.size();
-  if (count == 0) lmp->error->all(FLERR, "{} requires fix sph/materials (the material properties)", who);
+  if (count == 0)
+    lmp->error->all(FLERR, "{} requires fix sph/materials (the material properties)", who);
   if (count > 1) lmp->error->all(FLERR, "{}: only one fix sph/materials may be defined", who);
   return all[0];
 }
@@ -320,8 +329,8 @@ int FixSPHMaterials::parse_law(std::vector<MaterialLaw> &laws, int ilo, int ihi,
     ncoeffs = 1 + 2 * n;
   } else {
     if (left < 1 + (size_t) ncoeffs)
-      error->all(FLERR, "Illegal {}: {} {} needs {} coefficient(s)", where, what,
-                 words[iword + 1], ncoeffs);
+      error->all(FLERR, "Illegal {}: {} {} needs {} coefficient(s)", where, what, words[iword + 1],
+                 ncoeffs);
     for (int k = 0; k < ncoeffs; k++)
       law.c[k] = (k == 0) ? positive(words[iword + 2], what, where, true)
                           : utils::numeric(FLERR, words[iword + 2 + k].c_str(), false, lmp);
@@ -414,7 +423,8 @@ std::string FixSPHMaterials::find_material_file(const std::string &file,
       candidates.push_back(SPHCompat::path_join(dir, name) + "  (LAMMPS_POTENTIALS)");
   const std::string input_dir = input_script_dir();
   if (!input_dir.empty() && !file.empty() && file[0] != '/')
-    candidates.push_back(SPHCompat::path_join(input_dir, file) + "  (directory of the input script)");
+    candidates.push_back(SPHCompat::path_join(input_dir, file) +
+                         "  (directory of the input script)");
 #ifdef SPHTHERMAL_POTENTIALS_DIR
   candidates.push_back(SPHCompat::path_join(SPHTHERMAL_POTENTIALS_DIR, name) +
                        "  (potentials of USER-SPHTHERMAL)");
@@ -447,7 +457,8 @@ std::string FixSPHMaterials::input_script_dir()
   std::vector<std::string> args;
   for (size_t start = 0; start < cmdline.size();) {
     const size_t end = cmdline.find('\0', start);
-    args.push_back(cmdline.substr(start, end == std::string::npos ? std::string::npos : end - start));
+    args.push_back(
+        cmdline.substr(start, end == std::string::npos ? std::string::npos : end - start));
     if (end == std::string::npos) break;
     start = end + 1;
   }
@@ -480,13 +491,14 @@ void FixSPHMaterials::read_file(const std::string &file, const std::vector<std::
   }
   const std::string units = utils::get_potential_units(path, "sph/materials");
   if (units.empty())
-    error->all(FLERR,
-               "Illegal {} command: material file {} has no '# DATE: ... UNITS: ...' first line, so "
-               "its units cannot be checked against this run's {} units",
-               cmd, file, update->unit_style);
+    error->all(
+        FLERR,
+        "Illegal {} command: material file {} has no '# DATE: ... UNITS: ...' first line, so "
+        "its units cannot be checked against this run's {} units",
+        cmd, file, update->unit_style);
   if (units != update->unit_style)
-    error->all(FLERR, "Illegal {} command: material file {} is in {} units, not {} units", cmd, file,
-               units, update->unit_style);
+    error->all(FLERR, "Illegal {} command: material file {} is in {} units, not {} units", cmd,
+               file, units, update->unit_style);
 
   std::string text;
   if (comm->me == 0) {
@@ -509,11 +521,10 @@ void FixSPHMaterials::read_file(const std::string &file, const std::vector<std::
     for (size_t m = 0; m < names.size(); m++) {
       if (words[0] != names[m]) continue;
       found[m] = 1;
-      const std::string where = fmt::format("{} command, material {} (type {}) in {}", cmd,
-                                            names[m], types[m], file);
+      const std::string where =
+          fmt::format("{} command, material {} (type {}) in {}", cmd, names[m], types[m], file);
       size_t iword = 1;
-      while (iword < words.size())
-        iword += parse_property(types[m], types[m], words, iword, where);
+      while (iword < words.size()) iword += parse_property(types[m], types[m], words, iword, where);
     }
   }
   for (size_t m = 0; m < names.size(); m++)

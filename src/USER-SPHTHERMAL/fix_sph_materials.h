@@ -13,6 +13,7 @@ FixStyle(sph/materials,FixSPHMaterials);
 #define LMP_FIX_SPH_MATERIALS_H
 
 #include "fix.h"
+#include "sph_atom_state.h"
 #include "sph_eos.h"
 #include "sph_material_laws.h"
 
@@ -53,6 +54,13 @@ class FixSPHMaterials : public Fix {
     return checked(viscosity_laws[type], type, T, who, "viscosity");
   }
   void init() override;
+  // the per-atom state is stale before every force evaluation
+  void setup_pre_force(int) override { state->stale(); }
+  void pre_force(int) override { state->stale(); }
+  void min_pre_force(int) override { state->stale(); }
+  // the per-atom state the pair styles derive, filled once per force
+  // evaluation (sph_atom_state.h)
+  SPHAtomState &atom_state() { return *state; }
 
   // equation of state of a type (rho0 filled in), nullptr when none was given
   const sphe_eos *eos(int type) const { return eos_set[type] ? &eos_type[type] : nullptr; }
@@ -79,6 +87,7 @@ class FixSPHMaterials : public Fix {
     int warned;    // the out-of-table warning of this run was given
   };
   int ntypes;
+  SPHAtomState *state;
   std::vector<MaterialLaw> conductivity_laws, viscosity_laws;    // index: type
   sphe_eos *eos_type;
   int *eos_set;

@@ -24,8 +24,8 @@
 #include "sph_checks.h"
 #include "sph_compat.h"
 #include "sph_conduction.h"
-#include "sph_dispatch.h"
 #include "sph_consistent.h"
+#include "sph_dispatch.h"
 #include "sph_hub.h"
 #include "sph_support.h"
 #include "update.h"
@@ -44,17 +44,11 @@ static constexpr int RESTART_VERSION = 2;
 PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     PairSPHKernel(lmp, "sph/cleary/heat", "conductivities come from fix sph/materials"),
     mean(SPHC_HARMONIC), loop_own(0), in_flow_loop(0), temperature(nullptr), mass_of(nullptr),
-    nmax_flow_loop(0), eta2(0.0), materials(nullptr), conductivity_varies(0),
-    conductance(nullptr), loop_conductance(nullptr), conductivity(nullptr), nmax(0),
-    relax_wanted(0), relax_rate(nullptr), nmax_relax(0), correct(CORRECT_NONE), sweeps(5),
-    nmax_correct(0), corr_s(nullptr), corr_kinv(nullptr), corr_lambda(nullptr),
-    corr_deficit(nullptr), corr_coupling(nullptr), corr_state(nullptr), second_result(),
-    second_exact(-1),
-    second_warned(0), second_solved_at(-1), comm_values(nullptr), comm_count(0),
-    comm_stage(COMM_RELAX), interface_types(nullptr), type_conductivity(nullptr), nmax_interface(0),
-    iface_distance(nullptr), iface_moment(nullptr), iface_vector(nullptr), iface_normal(nullptr),
-    iface_sum(nullptr), iface_near(nullptr), distance_index(-1), nmax_pairs(0), corr_x(nullptr),
-    corr_rho(nullptr), corr_valid(0), refresh_pairs(0)
+    volume(nullptr), conductivity(nullptr), eta2(0.0), materials(nullptr), conductivity_varies(0),
+    conductance(nullptr), loop_conductance(nullptr), relax_wanted(0), relax_rate(nullptr),
+    nmax_relax(0), correct(SPHConductionWeights::NONE), sweeps(5), weights(nullptr),
+    interface_types(nullptr), type_conductivity(nullptr), interface(nullptr), nmax_pairs(0),
+    pairs_x(nullptr), pairs_rho(nullptr), pairs_valid(0), refresh_pairs(0)
 {
   // S and the state of the correction; the interface's estimate; nu of 'correction second'
   comm_forward = SPHS_MAX;
@@ -69,26 +63,13 @@ PairSPHClearyHeat::~PairSPHClearyHeat()
 {
   memory->destroy(conductance);
   memory->destroy(loop_conductance);
-  memory->destroy(conductivity);
   memory->destroy(relax_rate);
-  memory->destroy(temperature);
-  memory->destroy(mass_of);
-  memory->destroy(corr_s);
-  memory->destroy(corr_kinv);
-  memory->destroy(corr_lambda);
-  memory->destroy(corr_deficit);
-  memory->destroy(corr_coupling);
-  memory->destroy(corr_state);
-  memory->destroy(corr_x);
-  memory->destroy(corr_rho);
+  memory->destroy(pairs_x);
+  memory->destroy(pairs_rho);
   memory->destroy(interface_types);
   memory->destroy(type_conductivity);
-  memory->destroy(iface_distance);
-  memory->destroy(iface_moment);
-  memory->destroy(iface_vector);
-  memory->destroy(iface_normal);
-  memory->destroy(iface_sum);
-  memory->destroy(iface_near);
+  delete weights;
+  delete interface;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -111,10 +92,9 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
 void PairSPHClearyHeat::begin_compute()
 {
   SPHCheck::particles(lmp, FLERR, "Pair style sph/cleary/heat", SPHCheck::RHO | SPHCheck::ESPH);
-  update_temperature();
-  if (conductivity_varies) update_conductivity();
+  fill_atom_state();
   if (update->setupflag) check_neighbours();
-  refresh_pairs = (correct || mean == SPHC_INTERFACE) && !pairs_current();
+  refresh_pairs = (weights || interface) && !pairs_current();
   if (relax_wanted) zero_relax_rate();
   if (refresh_pairs) refresh_support();
 }
@@ -147,7 +127,7 @@ struct PairSPHClearyHeat::EvalCall {
   void run()
   {
     pair->eval<KERNEL, MEAN, CORRECT, VARYING_K, NEWTON_PAIR, RMASS, RELAX>(ifrom, ito, desph,
-                                                                          relax);
+                                                                            relax);
   }
 };
 
@@ -156,7 +136,7 @@ void PairSPHClearyHeat::eval_pairs(int ifrom, int ito, double *desph, double *re
   EvalCall call = {this, ifrom, ito, desph, relax};
   const int settings[] = {kernel_kind,
                           mean,
-                          correct ? 1 : 0,
+                          weights ? 1 : 0,
                           conductivity_varies ? 1 : 0,
                           force->newton_pair ? 1 : 0,
                           (atom->rmass_flag && atom->rmass) ? 1 : 0,
@@ -183,53 +163,23 @@ void PairSPHClearyHeat::end_compute()
 
 void PairSPHClearyHeat::finish_relax()
 {
-  comm_stage = COMM_RELAX;
-  if (force->newton_pair) SPHCompat::reverse_comm(comm, this);
+  if (force->newton_pair) reverse(SPHCommStage().flat(relax_rate, 1));
   const double *const cv = atom->cv;
   for (int i = 0; i < atom->nlocal; i++) relax_rate[i] /= cv[i];
 }
-
-
-
-/* ----------------------------------------------------------------------
-   conductivity of every owned and ghost atom at the temperature that
-   update_temperature() filled in (ghosts carry esph, cv and mask, so no
-   communication is needed); a dummy
-   of fix sph/wall/dirichlet takes the wall temperature, since its
-   extrapolated one is no state of the material and can lie far outside the
-   range of the law (k = exp(4 T) would choke the wall)
-------------------------------------------------------------------------- */
-
-void PairSPHClearyHeat::update_conductivity()
-{
-  if (atom->nmax > nmax) {
-    nmax = atom->nmax;
-    memory->destroy(conductivity);
-    memory->create(conductivity, nmax, "pair:conductivity");
-  }
-  const int *const type = atom->type;
-  const int *const mask = atom->mask;
-  const int nall = atom->nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++) {
-    double t = temperature[i];    // this step's, update_temperature()
-    for (const auto &wall : dummy_walls)
-      if (mask[i] & wall.first) t = wall.second;
-    conductivity[i] = materials->conductivity_at(type[i], t, "Pair style sph/cleary/heat");
-  }
-}
-
 
 /* ----------------------------------------------------------------------
    de_i/dt += m_j F_ij and de_j/dt -= m_i F_ij for every pair within the
    kernel support (sph_conduction.h); T = esph / cv
 ------------------------------------------------------------------------- */
 
-template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RMASS,
-          int RELAX>
+template <int KERNEL, int MEAN, int CORRECT, int VARYING_K, int NEWTON_PAIR, int RMASS, int RELAX>
 void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_rate)
 {
   const double *const *const x = atom->x;
   const double *const temperature = this->temperature;
+  const double *const conductivity = this->conductivity;
+  const double *const iface_distance = (MEAN == SPHC_INTERFACE) ? interface->distances() : nullptr;
   const double *const rho = atom->rho;
   // the mass by type: one array fewer to stream than a per-atom copy
   const double *const mass = atom->mass;
@@ -244,9 +194,9 @@ void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_ra
   const int *const ilist = list->ilist;
   const int *const numneigh = list->numneigh;
   int **const firstneigh = list->firstneigh;
-  // the correction's pairs are stored in list order: only the whole list
-  // (one thread) reads them
-  size_t npair = 0;
+  // the factors of the pairs within the support, stored with the list
+  const int *const first_pair = support_pairs.first.data();
+  const double *const pair_weights = support_pairs.weight.data();
   // the entries of each list inside the support (sph_support.h)
   SPHSupport support;
 
@@ -257,13 +207,15 @@ void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_ra
     const double rho_i = rho[i];
     const double mass_i = RMASS ? rmass[i] : mass[itype];
     // (across an interface of constant conductivities, the per-type ones)
-    const double k_i = VARYING_K ? conductivity[i]
-                                 : (MEAN == SPHC_INTERFACE) ? type_conductivity[itype] : 0.0;
+    const double k_i = VARYING_K   ? conductivity[i]
+        : (MEAN == SPHC_INTERFACE) ? type_conductivity[itype]
+                                   : 0.0;
     const double distance_i = (MEAN == SPHC_INTERFACE) ? iface_distance[i] : 0.0;
     const int *const interface_i = (MEAN == SPHC_INTERFACE) ? interface_types[itype] : nullptr;
     const double *const conductance_i = conductance[itype];
     const int *const jlist = firstneigh[i];
     const int jnum = numneigh[i];
+    const double *const weight_in = CORRECT ? pair_weights + first_pair[ii] : nullptr;
     double desph_i = 0.0, relax_i = 0.0;
 
     // 3-D distances, as the loop always took them (z = 0 in 2-D)
@@ -281,17 +233,17 @@ void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_ra
       const double rsq = rsq_in[k];
       const int jtype = type[j];
       const double r_dwdr = r_dwdr_in[k];
-      const double k_j = VARYING_K ? conductivity[j]
-                                   : (MEAN == SPHC_INTERFACE) ? type_conductivity[jtype] : 0.0;
+      const double k_j = VARYING_K   ? conductivity[j]
+          : (MEAN == SPHC_INTERFACE) ? type_conductivity[jtype]
+                                     : 0.0;
       const double conductance_ij = sphc_pair_conductance(
           MEAN, VARYING_K, (MEAN == SPHC_INTERFACE) && interface_i[jtype], k_i, k_j,
-          VARYING_K ? 0.0 : conductance_i[jtype],
-          (MEAN == SPHC_INTERFACE) ? distance_i : 0.0,
+          VARYING_K ? 0.0 : conductance_i[jtype], (MEAN == SPHC_INTERFACE) ? distance_i : 0.0,
           (MEAN == SPHC_INTERFACE) ? iface_distance[j] : 0.0);
       const double temp_ij = temp_i - temperature[j];
       const double mass_j = RMASS ? rmass[j] : mass[jtype];
-      // the pairs within the support come in the order update_correction() stored them
-      const double weight = CORRECT ? support_pairs[npair++].weight : 1.0;
+      // the pairs within the support, in the order they were stored
+      const double weight = CORRECT ? weight_in[k] : 1.0;
       // with RELAX, F_ij per unit temperature difference (<= 0, as dW/dr) is
       // needed too: one evaluation serves both
       const double inv_den = 1.0 / sphc_cleary_denominator(rho_i, rho[j], rsq, eta2);
@@ -311,7 +263,6 @@ void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_ra
     if (RELAX) relax_rate[i] += relax_i;
   }
 }
-
 
 /* ---------------------------------------------------------------------- */
 
@@ -342,7 +293,7 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
   int iarg = parse_kernel(narg, arg);
   eta_factor = 0.1;
   mean = SPHC_HARMONIC;
-  correct = CORRECT_NONE;
+  correct = SPHConductionWeights::NONE;
   sweeps = 5;
   distance_name.clear();
   loop_own = 0;
@@ -377,11 +328,11 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
                        arg[iarg + 1], 100.0 * (1.0 - 1.0 / (1.0 + eta_factor * eta_factor)));
     } else if (strcmp(arg[iarg], "correction") == 0) {
       if (strcmp(arg[iarg + 1], "none") == 0)
-        correct = CORRECT_NONE;
+        correct = SPHConductionWeights::NONE;
       else if (strcmp(arg[iarg + 1], "consistent") == 0)
-        correct = CORRECT_CONSISTENT;
+        correct = SPHConductionWeights::CONSISTENT;
       else if (strcmp(arg[iarg + 1], "second") == 0)
-        correct = CORRECT_SECOND;
+        correct = SPHConductionWeights::SECOND;
       else
         error->all(FLERR,
                    "Illegal pair_style sph/cleary/heat command: unknown correction '{}' "
@@ -452,16 +403,11 @@ void PairSPHClearyHeat::init_style()
       interface_types[i][j] =
           !sphm_law_same(materials->conductivity(i), materials->conductivity(j));
   }
-  if (mean == SPHC_INTERFACE) grow_interface();
-  distance_index = -1;
-  if (!distance_name.empty()) {
-    int flag = -1, cols = -1;
-    distance_index = atom->find_custom(distance_name.c_str() + 2, flag, cols);
-    if (distance_index < 0 || flag != 1 || cols != 0)
-      error->all(FLERR,
-                 "Pair style sph/cleary/heat: distance: no per-atom double '{}' (define it with "
-                 "fix property/atom)",
-                 distance_name);
+  delete interface;
+  interface = nullptr;
+  if (mean == SPHC_INTERFACE) {
+    interface = new SPHInterfaceDistance(lmp, distance_name);
+    interface->init(interface_types);
   }
   int interfaces = 0;
   for (int i = 1; i <= atom->ntypes; i++)
@@ -472,20 +418,17 @@ void PairSPHClearyHeat::init_style()
                    "the same conductivity law in fix sph/materials");
   // the Hessian blocks of 'correction second' are the largest reverse
   // communication; Comm sizes its buffers after this (LAMMPS::init)
-  comm_reverse = (correct == CORRECT_SECOND) ? SPHS_MAX * SPHS_MAX : COMM_REVERSE_MOMENTS;
+  comm_reverse = (correct == SPHConductionWeights::SECOND) ? SPHS_MAX * SPHS_MAX
+                                                           : COMM_REVERSE_MOMENTS;
   relax_wanted = 0;    // set again by the styles that want it, at their init
-  corr_valid = 0;      // the correction's factors are made anew at the first step
-  second_warned = 0;
-  // the per-atom state exists from here on, for compute sph/correction/atom
-  if (correct) grow_correction();
+  pairs_valid = 0;     // the correction's factors are made anew at the first step
   SPHCheck::atom_state(lmp, FLERR, "Pair style sph/cleary/heat", 0,
                        SPHCheck::RHO | SPHCheck::CV | SPHCheck::ESPH);
 
-  dummy_walls.clear();
-  for (FixSPHWallDirichlet *wall : SPHHub(lmp).fixes<FixSPHWallDirichlet>())
-    dummy_walls.emplace_back(wall->groupbit, wall->wall_temperature());
-
   eta2 = init_kernel();
+  // (the per-atom states exist from here on, for compute sph/correction/atom)
+  delete weights;
+  weights = SPHConductionWeights::create(lmp, correct, kernel.inv_h, sweeps);
   for (int i = 0; i <= atom->ntypes; i++)
     for (int j = 0; j <= atom->ntypes; j++) loop_conductance[i][j] = 0.0;
   const int was_in_flow_loop = in_flow_loop;
@@ -507,8 +450,7 @@ double PairSPHClearyHeat::init_one(int i, int j)
   // others keep the 0 of init_style)
   if (!conductivity_varies)
     conductance[i][j] = conductance[j][i] = loop_conductance[i][j] = loop_conductance[j][i] =
-        sphc_conductance(mean, materials->conductivity(i)->c[0],
-                         materials->conductivity(j)->c[0]);
+        sphc_conductance(mean, materials->conductivity(i)->c[0], materials->conductivity(j)->c[0]);
   return cut_global;
 }
 
@@ -561,16 +503,10 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
 
 double PairSPHClearyHeat::memory_usage()
 {
-  return Pair::memory_usage() +
-      (double) (nmax + nmax_relax + 22 * nmax_correct + 16 * nmax_interface + 4 * nmax_pairs) *
-      sizeof(double) +
-      (double) support_pairs.capacity() * sizeof(SupportPair) +
-      (double) (second_nu.capacity() + second_work.capacity() + second_volume.capacity()) *
-      sizeof(double) +
-      (double) second_constrained.capacity() * sizeof(int) +
-      (double) second_pairs.capacity() * sizeof(sphs_pair);
+  return Pair::memory_usage() + (double) (nmax_relax + 4 * nmax_pairs) * sizeof(double) +
+      support_pairs.memory_usage() + (weights ? weights->memory_usage() : 0.0) +
+      (interface ? interface->memory_usage() : 0.0);
 }
-
 
 /* ----------------------------------------------------------------------
    beyond the state every SPH pair reads: the conductivity of atom i
@@ -579,7 +515,7 @@ double PairSPHClearyHeat::memory_usage()
 std::string PairSPHClearyHeat::diagnose(int i)
 {
   std::string why = PairSPHKernel::diagnose(i);
-  if (why.empty() && conductivity_varies && !std::isfinite(conductivity[i]))
+  if (why.empty() && conductivity && !std::isfinite(conductivity[i]))
     why = fmt::format("its conductivity is {}", conductivity[i]);
   return why;
 }

@@ -47,7 +47,7 @@ using namespace LAMMPS_NS;
 
 int PairSPHClearyHeat::flow_loop_possible()
 {
-  if (loop_own || correct || mean == SPHC_INTERFACE) return 0;
+  if (loop_own || correct != SPHConductionWeights::NONE || mean == SPHC_INTERFACE) return 0;
   if (conductivity_varies && mean != SPHC_HARMONIC) return 0;
   // (the /omp styles too, named as such in the hybrid)
   SPHHub hub(lmp);
@@ -66,24 +66,21 @@ int PairSPHClearyHeat::flow_loop_possible()
 }
 
 /* ----------------------------------------------------------------------
-   this step's temperature and mass of every owned and ghost atom (and
-   conductivity, and zeroed relax_rate) for the flow pair's loop
+   this force evaluation's temperature and mass of every owned and ghost
+   atom (and conductivity, and zeroed relax_rate) for the flow pair's loop
 ------------------------------------------------------------------------- */
 
 PairSPHClearyHeat::FlowLoopTerm PairSPHClearyHeat::begin_flow_loop_term()
 {
-  update_temperature();
-  if (conductivity_varies) update_conductivity();
+  fill_atom_state();
   if (update->setupflag) check_neighbours();
   if (relax_wanted) zero_relax_rate();
-  // the heat style's mass of every atom (the flow's differs for solids)
-  const int nall = atom->nlocal + atom->nghost;
-  SPHParticles(atom).masses(mass_of, nall);
   FlowLoopTerm term;
   term.temperature = temperature;
+  // the heat style's mass of every atom (the flow's differs for solids)
   term.mass = mass_of;
   term.rho = atom->rho;
-  term.conductivity = conductivity_varies ? conductivity : nullptr;
+  term.conductivity = conductivity;
   term.conductance = loop_conductance;
   term.relax_rate = relax_wanted ? relax_rate : nullptr;
   term.eta2 = eta2;
@@ -91,22 +88,21 @@ PairSPHClearyHeat::FlowLoopTerm PairSPHClearyHeat::begin_flow_loop_term()
 }
 
 /* ----------------------------------------------------------------------
-   T = esph / cv of every owned and ghost atom, once per step rather than
-   once per pair (and room for the masses of the flow pair's loop)
+   the per-atom state this style reads, from the store of fix
+   sph/materials: filled once per force evaluation for all the styles
 ------------------------------------------------------------------------- */
 
-void PairSPHClearyHeat::update_temperature()
+void PairSPHClearyHeat::fill_atom_state()
 {
-  const SPHParticles particles(atom);
-  const int nall = atom->nlocal + atom->nghost;
-  if (atom->nmax > nmax_flow_loop) {
-    nmax_flow_loop = atom->nmax;
-    memory->destroy(temperature);
-    memory->destroy(mass_of);
-    memory->create(temperature, nmax_flow_loop, "pair:temperature");
-    memory->create(mass_of, nmax_flow_loop, "pair:mass_of");
-  }
-  particles.temperatures(temperature, nall);
+  SPHAtomState &state = materials->atom_state();
+  const int support = (weights || interface) ? SPHAtomState::VOLUME : 0;
+  state.fill(SPHAtomState::TEMPERATURE | SPHAtomState::MASS | support |
+                 (conductivity_varies ? SPHAtomState::CONDUCTIVITY : 0),
+             "Pair style sph/cleary/heat");
+  temperature = state.temperature();
+  mass_of = state.mass();
+  volume = support ? state.volume() : nullptr;
+  conductivity = conductivity_varies ? state.conductivity() : nullptr;
 }
 
 void PairSPHClearyHeat::end_flow_loop_term()
@@ -131,7 +127,8 @@ int PairSPHClearyHeat::request_heat_flow(int to_groupbit, int from_groupbit)
 double PairSPHClearyHeat::pair_term(int i, int j, double rsq, double temp_ij) const
 {
   const double r = sqrt(rsq);
-  const double inv_denominator = 1.0 / sphc_cleary_denominator(atom->rho[i], atom->rho[j], rsq, eta2);
+  const double inv_denominator =
+      1.0 / sphc_cleary_denominator(atom->rho[i], atom->rho[j], rsq, eta2);
   return pair_weight(i, j, r) *
       sphc_cleary_pair_inv(pair_conductance(i, j), temp_ij, r * kernel_dwdr(r), inv_denominator);
 }
@@ -141,27 +138,19 @@ double PairSPHClearyHeat::pair_conductance(int i, int j) const
   const int *const type = atom->type;
   const double k_i = conductivity_varies ? conductivity[i] : type_conductivity[type[i]];
   const double k_j = conductivity_varies ? conductivity[j] : type_conductivity[type[j]];
-  const int crosses = (mean == SPHC_INTERFACE) && interface_types[type[i]][type[j]];
+  const int crosses = interface && interface_types[type[i]][type[j]];
+  const double *const distance = crosses ? interface->distances() : nullptr;
   return sphc_pair_conductance(mean, conductivity_varies, crosses, k_i, k_j,
-                               conductance[type[i]][type[j]], crosses ? iface_distance[i] : 0.0,
-                               crosses ? iface_distance[j] : 0.0);
+                               conductance[type[i]][type[j]], crosses ? distance[i] : 0.0,
+                               crosses ? distance[j] : 0.0);
 }
 
 double PairSPHClearyHeat::pair_weight(int i, int j, double r) const
 {
-  if (!correct) return 1.0;
+  if (!weights) return 1.0;
   const double *const *const x = atom->x;
   const double r_ij[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
-  if (correct == CORRECT_SECOND) {
-    const int dim = domain->dimension;
-    const int n = sphs_count(dim);
-    double f[SPHS_MAX];
-    sphs_basis(dim, r_ij, kernel.inv_h, f);
-    return sphs_factor(dim, f, &second_nu[(size_t) i * n], &second_nu[(size_t) j * n]);
-  }
-  const double e_ij[3] = {r_ij[0] / r, r_ij[1] / r, r_ij[2] / r};
-  return sphc_second_factor(corr_s[i], corr_s[j], e_ij) *
-      sphc_first_factor(corr_lambda[i], corr_lambda[j], r_ij);
+  return weights->factor(i, j, r_ij, r);
 }
 
 void PairSPHClearyHeat::tally_flows()
@@ -189,8 +178,7 @@ void PairSPHClearyHeat::tally_flows()
       const double rsq = delx * delx + dely * dely + delz * delz;
       if (rsq >= cutsq_kernel) continue;
       const double f_ij = pair_term(i, j, rsq, particles.temperature(i) - particles.temperature(j));
-      const double energy = particles.mass(i) *
-          particles.mass(j) * f_ij;    // into i, out of j
+      const double energy = particles.mass(i) * particles.mass(j) * f_ij;    // into i, out of j
       for (size_t k = 0; k < flows.size(); k++) {
         if ((mask[i] & flows[k].to) && (mask[j] & flows[k].from)) local[k] += energy;
         if ((mask[j] & flows[k].to) && (mask[i] & flows[k].from) && (newton || j < nlocal))
@@ -205,63 +193,39 @@ void PairSPHClearyHeat::tally_flows()
 
 /* ---------------------------------------------------------------------- */
 
-SPHCommStage PairSPHClearyHeat::comm_fields() const
+/* ----------------------------------------------------------------------
+   the stages of this style and its components (SPHExchange)
+------------------------------------------------------------------------- */
+
+void PairSPHClearyHeat::forward(const SPHCommStage &stage)
 {
-  SPHCommStage stage;
-  switch (comm_stage) {
-    case COMM_RELAX:
-      return stage.flat(relax_rate, 1);
-    case COMM_MOMENT:
-      return stage.rows(corr_s, 6);
-    case COMM_FIRST:
-      return stage.rows(corr_kinv, 6).rows(corr_deficit, 3);
-    case COMM_STATE:
-      return stage.rows(corr_s, 6).flat(corr_state, 1);
-    case COMM_LAMBDA:
-      return stage.rows(corr_lambda, 3);
-    case COMM_COUPLING:
-      return stage.rows(corr_coupling, 3);
-    case COMM_SECOND:
-      return stage.flat(comm_values, comm_count);
-    case COMM_IFACE_MOMENT:
-      return stage.rows(iface_moment, 6).rows(iface_vector, 3);
-    case COMM_IFACE_VECTOR:
-      return stage.rows(iface_vector, 3);
-    case COMM_IFACE_SMOOTH:
-      return stage.rows(iface_sum, 3);
-    case COMM_IFACE_NORMAL:
-      return stage.rows(iface_normal, 3);
-    case COMM_IFACE_MARGIN:
-      // the farthest own-material atom and the nearest other one
-      return stage.rows(iface_sum, 1, 0, SPHCommStage::MAX)
-          .rows(iface_sum, 1, 1, SPHCommStage::MIN);
-    case COMM_IFACE_DISTANCE:
-      return stage.flat(iface_distance, 1);
-    case COMM_IFACE_PLANE:
-      return stage.rows(iface_sum, 2);
-    case COMM_IFACE_NEAR:
-      return stage.flat(iface_near, 1, SPHCommStage::MAX);
-  }
-  return stage;
+  active_stage = stage;
+  SPHCompat::forward_comm(comm, this);
+}
+
+void PairSPHClearyHeat::reverse(const SPHCommStage &stage)
+{
+  active_stage = stage;
+  SPHCompat::reverse_comm(comm, this);
 }
 
 int PairSPHClearyHeat::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/,
                                          int * /*pbc*/)
 {
-  return comm_fields().pack(n, send, buf);
+  return active_stage.pack(n, send, buf);
 }
 
 void PairSPHClearyHeat::unpack_forward_comm(int n, int first, double *buf)
 {
-  comm_fields().unpack_forward(n, first, buf);
+  active_stage.unpack_forward(n, first, buf);
 }
 
 int PairSPHClearyHeat::pack_reverse_comm(int n, int first, double *buf)
 {
-  return comm_fields().pack(n, first, buf);
+  return active_stage.pack(n, first, buf);
 }
 
 void PairSPHClearyHeat::unpack_reverse_comm(int n, int *list, double *buf)
 {
-  comm_fields().unpack_reverse(n, list, buf);
+  active_stage.unpack_reverse(n, list, buf);
 }

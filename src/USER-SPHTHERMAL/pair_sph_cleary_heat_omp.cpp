@@ -5,10 +5,10 @@
    pair sph/cleary/heat/omp: each thread takes a slice of the neighbour
    list and adds to its own copy of desph (and relax_rate); the copies are
    summed after the loop, so results equal the serial style's to round-off
-   whatever the number of threads. With 'correction consistent' the loop
-   reads the correction's pair factors in list order and runs on one
-   thread; when sph/harmonic/visc evaluates the term (loop shared) that
-   style's threads do.
+   whatever the number of threads. The factors of a correction are made
+   before the threads start and stored with the neighbour list, so each
+   thread reads its slice's; when sph/harmonic/visc evaluates the term
+   (loop shared) that style's threads do.
 ------------------------------------------------------------------------- */
 
 #if __has_include("thr_omp.h")
@@ -41,7 +41,7 @@ PairSPHClearyHeatOMP::PairSPHClearyHeatOMP(LAMMPS *lmp) :
 
 void PairSPHClearyHeatOMP::compute(int eflag, int vflag)
 {
-  if (in_flow_loop || correct) {
+  if (in_flow_loop) {
     PairSPHClearyHeat::compute(eflag, vflag);
     // the threads' forces are summed by the last /omp style of a hybrid,
     // which this one may be

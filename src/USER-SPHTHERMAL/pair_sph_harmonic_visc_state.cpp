@@ -25,20 +25,20 @@
 #include "sph_body_force.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
-#include "sph_hub.h"
 #include "sph_conduction.h"
 #include "sph_consistent.h"
 #include "sph_dispatch.h"
 #include "sph_flow.h"
+#include "sph_hub.h"
 #include "sph_particle.h"
 #include "sph_support.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
 using namespace LAMMPS_NS;
-
 
 struct PairSPHHarmonicVisc::GradientCall {
   PairSPHHarmonicVisc *pair;
@@ -62,14 +62,10 @@ void PairSPHHarmonicVisc::refresh_gradient_correction()
    neighbours' B are equal and sum_j V_j grad W_ij = 0 (any lattice; test
    flow.gradient.linear); on disordered particles the moment's error is
    removed and the zeroth-order sum remains, which moves particles towards
-   an even arrangement as in the plain form. Atoms whose smallest
-   eigenvalue of M is below FULL_SUPPORT (a free surface) and wall
-   particles keep B = I.
+   an even arrangement as in the plain form. Atoms whose support is
+   incomplete (sphc_moment_normaliser: a free surface) and wall particles
+   keep B = I.
 ------------------------------------------------------------------------- */
-
-// smallest eigenvalue of M that counts as complete support: 0.974 inside a
-// square lattice, about 0.5 in the first row of a free surface
-static constexpr double FULL_SUPPORT = 0.7;
 
 template <int KERNEL> void PairSPHHarmonicVisc::update_gradient_correction()
 {
@@ -116,12 +112,8 @@ template <int KERNEL> void PairSPHHarmonicVisc::update_gradient_correction()
     double inverse[6] = {1.0, 1.0, 1.0, 0.0, 0.0, 0.0};
     if (!(mask[i] & wall_groupbit)) {
       fluid++;
-      const int full = sphc_sym_min_eigen(dim, moment[i]) >= FULL_SUPPORT &&
-          sphc_sym_inverse(dim, moment[i], inverse) > 0.0;
-      if (!full) {
-        plain++;
-        for (int k = 0; k < 6; k++) inverse[k] = (k < 3) ? 1.0 : 0.0;
-      }
+      // M is summed with V_j: the unit volume
+      if (!sphc_moment_normaliser(dim, moment[i], 1.0, inverse)) plain++;
     }
     for (int k = 0; k < 6; k++) moment[i][k] = inverse[k];
   }
@@ -140,13 +132,20 @@ template <int KERNEL> void PairSPHHarmonicVisc::update_gradient_correction()
 }
 
 /* ----------------------------------------------------------------------
-   pressure, viscosity and mass of every owned and ghost atom (ghosts carry
-   rho, esph, cv: no communication is needed)
+   pressure, viscosity and mass of every owned and ghost atom as the flow
+   sees them (ghosts carry rho, esph, cv: no communication is needed):
+   those of the material from fix sph/materials's store, but for the solid
+   particles of fix sph/wall/adami, which take the fluid's state that the
+   wall extrapolates
 ------------------------------------------------------------------------- */
 
 void PairSPHHarmonicVisc::update_atom_state()
 {
-  const SPHParticles particles(atom);
+  SPHAtomState &state = materials->atom_state();
+  state.fill(SPHAtomState::MASS |
+                 ((thermal_expansion || viscosity_varies) ? SPHAtomState::TEMPERATURE : 0),
+             "Pair style sph/harmonic/visc");
+  const double *const temperature = state.temperature();
   if (atom->nmax > nmax) {
     nmax = atom->nmax;
     memory->destroy(pressure);
@@ -167,7 +166,7 @@ void PairSPHHarmonicVisc::update_atom_state()
   const int *const mask = atom->mask;
   const int nall = atom->nlocal + atom->nghost;
   diffusion_rho = thermal_expansion ? diffused_density : rho;
-  particles.masses(mass_of, nall);
+  std::copy(state.mass(), state.mass() + nall, mass_of);
   // the walls that hold solid particles (known after the walls' init)
   std::vector<FixSPHWallAdami *> solid_walls;
   for (auto wall : adami_walls)
@@ -189,10 +188,12 @@ void PairSPHHarmonicVisc::update_atom_state()
     }
     const sphe_eos *eos = materials->eos(type[i]);
     if (eos->thermal) {
-      const double t = particles.temperature(i);
+      const double t = temperature[i];
       const double rho_ref = sphe_reference_density(eos, t);
       if (!(rho_ref > 0.0) || !std::isfinite(rho_ref))
-        SPHCheck::stop(lmp, FLERR, fmt::format(
+        SPHCheck::stop(
+            lmp, FLERR,
+            fmt::format(
                 "Pair style sph/harmonic/visc: atom {} (type {}) at T = {} has no reference "
                 "density: 1 + beta (T - T0) = {} of its equation of state's thermal "
                 "expansion must be > 0",
@@ -203,7 +204,7 @@ void PairSPHHarmonicVisc::update_atom_state()
       pressure[i] = sphe_pressure(eos, rho[i]);
       if (thermal_expansion) diffused_density[i] = rho[i];
     }
-    viscosity[i] = materials->viscosity_at(type[i], viscosity_varies ? particles.temperature(i) : 0.0,
+    viscosity[i] = materials->viscosity_at(type[i], viscosity_varies ? temperature[i] : 0.0,
                                            "Pair style sph/harmonic/visc");
     density[i] = rho[i];
     volume[i] = mass_of[i] / rho[i];

@@ -1,0 +1,414 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   The conduction weights of pair sph/cleary/heat: the factors of
+   'correction consistent' and 'correction second' for the pairs of the
+   support, made anew when the particles move.
+------------------------------------------------------------------------- */
+
+#include "sph_conduction_weights.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "neighbor.h"
+#include "sph_consistent.h"
+#include "sph_exchange.h"
+#include "sph_support_pairs.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+
+SPHConductionWeights *SPHConductionWeights::create(LAMMPS *lmp, int kind, double inv_h, int sweeps)
+{
+  SPHConductionWeights *made = nullptr;
+  if (kind == CONSISTENT) made = new SPHConsistentWeights(lmp, sweeps);
+  if (kind == SECOND) made = new SPHSecondWeights(lmp, inv_h);
+  if (made) made->grow();
+  return made;
+}
+
+SPHConductionWeights::SPHConductionWeights(LAMMPS *lmp, int kind) :
+    Pointers(lmp), kind(kind), nmax(0), s(nullptr), state(nullptr)
+{
+}
+
+SPHConductionWeights::~SPHConductionWeights()
+{
+  memory->destroy(s);
+  memory->destroy(state);
+}
+
+void SPHConductionWeights::grow()
+{
+  if (atom->nmax <= nmax) return;
+  nmax = atom->nmax;
+  memory->destroy(s);
+  memory->destroy(state);
+  memory->create(s, nmax, 6, "sph/cleary/heat:correction_s");
+  memory->create(state, nmax, "sph/cleary/heat:correction_state");
+  grow_more();
+}
+
+double SPHConductionWeights::memory_usage() const
+{
+  return 7.0 * nmax * sizeof(double);
+}
+
+/* ----------------------------------------------------------------------
+   the second moments M of the plain weights; atoms whose smallest
+   eigenvalue of M / V is below full support (a free edge, where the
+   missing first moment is the boundary's adiabatic face) keep the plain
+   term, the others get S = V M^-1
+------------------------------------------------------------------------- */
+
+void SPHConductionWeights::normalise(const SPHSupportPairs &pairs, const double *volume,
+                                     SPHExchange &exchange)
+{
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const int dim = domain->dimension;
+  const int newton = force->newton_pair;
+  const int npairs = pairs.count();
+  grow();
+  for (int i = 0; i < nall; i++)
+    for (int k = 0; k < 6; k++) s[i][k] = 0.0;
+  // each pair is gathered by both its atoms (the j side where it is this
+  // rank's to gather, the rest by reverse communication)
+  for (int q = 0; q < npairs; q++) {
+    const int i = pairs.i[q], j = pairs.j[q];
+    sphc_moment_add(s[i], pairs.g[q], pairs.r_of(q));
+    if (newton || j < nlocal) sphc_moment_add(s[j], pairs.g[q], pairs.r_of(q));
+  }
+  if (newton) exchange.reverse(SPHCommStage().rows(s, 6));
+  for (int i = 0; i < nlocal; i++) state[i] = sphc_moment_normaliser(dim, s[i], volume[i], s[i]);
+  exchange.forward(SPHCommStage().rows(s, 6).flat(state, 1));
+}
+
+void SPHConductionWeights::report() const
+{
+  bigint plain = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (state[i] == 0.0) plain++;
+  bigint plain_all = 0;
+  MPI_Allreduce(&plain, &plain_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (comm->me == 0)
+    utils::logmesg(lmp,
+                   "Pair style sph/cleary/heat: correction {} on {} of {} atoms; {} keep "
+                   "the plain term (incomplete kernel support: free edges or too few neighbours)\n",
+                   name(), atom->natoms - plain_all, atom->natoms, plain_all);
+}
+
+/* ----------------------------------------------------------------------
+   'correction consistent': S, then lambda from 'sweeps' Jacobi sweeps on
+   the first moment of the weights with S (sph_consistent.h)
+------------------------------------------------------------------------- */
+
+SPHConsistentWeights::SPHConsistentWeights(LAMMPS *lmp, int sweeps) :
+    SPHConductionWeights(lmp, CONSISTENT), sweeps(sweeps), kinv(nullptr), lambda(nullptr),
+    deficit(nullptr), coupling(nullptr)
+{
+}
+
+SPHConsistentWeights::~SPHConsistentWeights()
+{
+  release();
+}
+
+void SPHConsistentWeights::release()
+{
+  memory->destroy(kinv);
+  memory->destroy(lambda);
+  memory->destroy(deficit);
+  memory->destroy(coupling);
+}
+
+void SPHConsistentWeights::grow_more()
+{
+  release();
+  memory->create(kinv, nmax, 6, "sph/cleary/heat:correction_kinv");
+  memory->create(lambda, nmax, 3, "sph/cleary/heat:correction_lambda");
+  memory->create(deficit, nmax, 3, "sph/cleary/heat:correction_deficit");
+  memory->create(coupling, nmax, 3, "sph/cleary/heat:correction_coupling");
+}
+
+double SPHConsistentWeights::memory_usage() const
+{
+  return SPHConductionWeights::memory_usage() + 15.0 * nmax * sizeof(double);
+}
+
+void SPHConsistentWeights::refresh(SPHSupportPairs &pairs, const double *volume,
+                                   SPHExchange &exchange)
+{
+  normalise(pairs, volume, exchange);
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const int dim = domain->dimension;
+  const int newton = force->newton_pair;
+  const int npairs = pairs.count();
+  double *const g = pairs.g.data();
+  double *const weight = pairs.weight.data();
+
+  // the weights with S from here on; their first moments s and K
+  for (int q = 0; q < npairs; q++) {
+    const double *const r = pairs.r_of(q);
+    const double distance = pairs.distance[q];
+    const double e[3] = {r[0] / distance, r[1] / distance, r[2] / distance};
+    weight[q] = sphc_second_factor(s[pairs.i[q]], s[pairs.j[q]], e);
+    g[q] *= weight[q];
+  }
+  for (int i = 0; i < nall; i++) {
+    for (int k = 0; k < 6; k++) kinv[i][k] = 0.0;
+    for (int k = 0; k < 3; k++) deficit[i][k] = lambda[i][k] = 0.0;
+  }
+  for (int q = 0; q < npairs; q++) {
+    const int i = pairs.i[q], j = pairs.j[q];
+    const double *const r = pairs.r_of(q);
+    sphc_moment_add(kinv[i], g[q], r);
+    for (int k = 0; k < 3; k++) deficit[i][k] += g[q] * r[k];
+    if (newton || j < nlocal) {
+      sphc_moment_add(kinv[j], g[q], r);
+      for (int k = 0; k < 3; k++) deficit[j][k] -= g[q] * r[k];
+    }
+  }
+  if (newton) exchange.reverse(SPHCommStage().rows(kinv, 6).rows(deficit, 3));
+  const double none[3] = {0.0, 0.0, 0.0};
+  for (int i = 0; i < nlocal; i++) {
+    double inverse[6];
+    if (state[i] == 0.0 || sphc_sym_inverse(dim, kinv[i], inverse) <= 0.0)
+      for (int k = 0; k < 6; k++) inverse[k] = 0.0;    // lambda stays 0
+    for (int k = 0; k < 6; k++) kinv[i][k] = inverse[k];
+    sphc_first_update(kinv[i], none, deficit[i], lambda[i]);
+  }
+
+  // Jacobi sweeps: each with the neighbours' lambda of the sweep before
+  const SPHCommStage lambda_stage = SPHCommStage().rows(lambda, 3);
+  for (int sweep = 1; sweep < sweeps; sweep++) {
+    exchange.forward(lambda_stage);
+    for (int i = 0; i < nall; i++)
+      for (int k = 0; k < 3; k++) coupling[i][k] = 0.0;
+    for (int q = 0; q < npairs; q++) {
+      const int i = pairs.i[q], j = pairs.j[q];
+      const double *const r = pairs.r_of(q);
+      const double *const lambda_i = lambda[i];
+      const double *const lambda_j = lambda[j];
+      const double along_j = g[q] * (r[0] * lambda_j[0] + r[1] * lambda_j[1] + r[2] * lambda_j[2]);
+      for (int k = 0; k < 3; k++) coupling[i][k] += along_j * r[k];
+      if (newton || j < nlocal) {
+        const double along_i =
+            g[q] * (r[0] * lambda_i[0] + r[1] * lambda_i[1] + r[2] * lambda_i[2]);
+        for (int k = 0; k < 3; k++) coupling[j][k] += along_i * r[k];
+      }
+    }
+    if (newton) exchange.reverse(SPHCommStage().rows(coupling, 3));
+    for (int i = 0; i < nlocal; i++) sphc_first_update(kinv[i], coupling[i], deficit[i], lambda[i]);
+  }
+  exchange.forward(lambda_stage);
+  for (int q = 0; q < npairs; q++)
+    weight[q] *= sphc_first_factor(lambda[pairs.i[q]], lambda[pairs.j[q]], pairs.r_of(q));
+}
+
+double SPHConsistentWeights::factor(int i, int j, const double r_ij[3], double r) const
+{
+  const double e_ij[3] = {r_ij[0] / r, r_ij[1] / r, r_ij[2] / r};
+  return sphc_second_factor(s[i], s[j], e_ij) * sphc_first_factor(lambda[i], lambda[j], r_ij);
+}
+
+/* ----------------------------------------------------------------------
+   'correction second': the multipliers nu of sph_second_moment.h for this
+   step's pairs, and each pair's factor; the atoms of incomplete support
+   (state 0) keep nu = 0. The solve starts from the last solution while
+   the atoms keep their indices (no neighbour-list build since; for
+   moving particles), else from nu = 0, which every run's setup does: the
+   start is the same on any number of ranks, and a run split by a restart
+   repeats the factors exactly where the split falls on a build and to
+   the solver's tolerance elsewhere
+------------------------------------------------------------------------- */
+
+// the regularisation epsilon of sph_second_moment.h: the value of the
+// disordered two-material slab's best accuracy at 10 t1 for its cost among
+// 1e-4 to 1e-6 (doc/src/Howto_sph_theory.rst)
+static constexpr double SECOND_REGULARIZATION = 1e-6;
+// The regularisation leaves the moments off by epsilon nu, and near free
+// edges nu carries a large smooth part (a nearly constant first-moment
+// multiplier that changes no interior pair), which errs the Laplacian deep
+// inside (test robust.second_rotated). So the regularised solution starts
+// a solve of the unregularised problem, taken if it converges within these
+// Newton steps; otherwise (no weights with the exact moments, where the
+// unregularised multipliers grow without bound) the regularised one stays
+static constexpr int SECOND_EXACT_NEWTON_STEPS = 20;
+// the solver's limits: residual of Phi's gradient relative to V / h^2, and
+// step counts far above what converging cases take (under 20 Newton
+// steps; conjugate gradients of the order of (width / h)^2 per step)
+static constexpr double SECOND_TOLERANCE = 1e-13;
+static constexpr int SECOND_NEWTON_STEPS = 50;
+static constexpr int SECOND_CG_STEPS = 100000;
+// the coarse space of the two-level preconditioner: grid spacing in h and
+// the largest coarse dimension (a dense factor of that many rows). The
+// slab of 80 x 20 jittered by 0.2 spacings, h = 1.3 spacings, needed the
+// fewest conjugate-gradient steps for the least time with a grid of 2 h
+// (one level: 28 times the steps)
+static constexpr double SECOND_COARSE_SPACING = 2.0;
+static constexpr int SECOND_COARSE_SIZE = 2000;
+
+SPHSecondWeights::SPHSecondWeights(LAMMPS *lmp, double inv_h) :
+    SPHConductionWeights(lmp, SECOND), inv_h(inv_h), result(), exact(-1), warned(0), solved_at(-1),
+    exchange(nullptr)
+{
+}
+
+double SPHSecondWeights::memory_usage() const
+{
+  return SPHConductionWeights::memory_usage() +
+      (double) (nu.capacity() + work.capacity() + volume_owned.capacity() + kept.capacity()) *
+      sizeof(double) +
+      (double) constrained.capacity() * sizeof(int) +
+      (double) solver_pairs.capacity() * sizeof(sphs_pair);
+}
+
+void SPHSecondWeights::refresh(SPHSupportPairs &pairs, const double *volume, SPHExchange &exchange)
+{
+  normalise(pairs, volume, exchange);
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const int dim = domain->dimension;
+  const int n = sphs_count(dim);
+  const int npairs = pairs.count();
+
+  solver_pairs.resize(npairs);
+  for (int q = 0; q < npairs; q++) {
+    sphs_pair &to = solver_pairs[q];
+    to.i = pairs.i[q];
+    to.j = pairs.j[q];
+    for (int c = 0; c < 3; c++) to.r[c] = pairs.r_of(q)[c];
+    to.g = pairs.g[q];
+  }
+  volume_owned.assign(volume, volume + nlocal);
+  constrained.resize(nlocal);
+  for (int i = 0; i < nlocal; i++) constrained[i] = state[i] != 0.0;
+
+  sphs_problem problem;
+  problem.dim = dim;
+  problem.nlocal = nlocal;
+  problem.nall = nall;
+  problem.newton = force->newton_pair;
+  problem.npairs = npairs;
+  problem.pairs = solver_pairs.data();
+  problem.volume = volume_owned.data();
+  problem.constrained = constrained.data();
+  problem.h = 1.0 / inv_h;
+  problem.tolerance = SECOND_TOLERANCE;
+  problem.regularization = SECOND_REGULARIZATION;
+  problem.max_newton = SECOND_NEWTON_STEPS;
+  problem.max_cg = SECOND_CG_STEPS;
+  problem.exchange.context = this;
+  problem.exchange.forward = forward;
+  problem.exchange.reverse = reverse;
+  problem.exchange.sum = sum;
+  problem.exchange.max = max;
+  problem.exchange.sum_array = sum_array;
+  problem.x = atom->x[0];
+  problem.coarse = SECOND_COARSE_SPACING;
+  problem.max_coarse = SECOND_COARSE_SIZE;
+  this->exchange = &exchange;
+  work.resize(sphs_work_size(&problem));
+  const int warm =
+      neighbor->ago > 0 && solved_at >= neighbor->lastcall && nu.size() == (size_t) nall * n;
+  if (!warm) nu.assign((size_t) nall * n, 0.0);
+  result = sphs_solve(&problem, nu.data(), work.data());
+  exact = -1;
+  if (result.converged && result.moments > SECOND_TOLERANCE) {
+    kept = nu;
+    sphs_problem unregularised = problem;
+    unregularised.regularization = 0.0;
+    unregularised.max_newton = SECOND_EXACT_NEWTON_STEPS;
+    sphs_result refined = sphs_solve(&unregularised, nu.data(), work.data());
+    exact = refined.converged;
+    if (refined.converged) {
+      refined.newton_steps += result.newton_steps;
+      refined.cg_steps += result.cg_steps;
+      result = refined;
+    } else
+      nu = kept;    // ghosts included
+  }
+  this->exchange = nullptr;
+  solved_at = update->ntimestep;
+
+  for (int q = 0; q < npairs; q++) {
+    double f[SPHS_MAX];
+    sphs_basis(dim, pairs.r_of(q), inv_h, f);
+    pairs.weight[q] =
+        sphs_factor(dim, f, &nu[(size_t) pairs.i[q] * n], &nu[(size_t) pairs.j[q] * n]);
+  }
+  if (!result.converged && !warned && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair style sph/cleary/heat: correction second: the multipliers reached a "
+                   "residual of {:.3g} (of V / h^2) after {} Newton and {} conjugate-gradient "
+                   "steps, not {:.3g}; the Laplacian is less accurate for quadratic fields",
+                   result.residual, result.newton_steps, result.cg_steps, SECOND_TOLERANCE);
+  if (!result.converged) warned = 1;
+}
+
+double SPHSecondWeights::factor(int i, int j, const double r_ij[3], double /*r*/) const
+{
+  const int dim = domain->dimension;
+  const int n = sphs_count(dim);
+  double f[SPHS_MAX];
+  sphs_basis(dim, r_ij, inv_h, f);
+  return sphs_factor(dim, f, &nu[(size_t) i * n], &nu[(size_t) j * n]);
+}
+
+void SPHSecondWeights::report() const
+{
+  SPHConductionWeights::report();
+  bigint clipped = result.clipped, clipped_all = 0;
+  MPI_Allreduce(&clipped, &clipped_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (comm->me == 0)
+    utils::logmesg(lmp,
+                   "Pair style sph/cleary/heat: correction second: moments to {:.2g} of V / h^2 "
+                   "({}) in {} Newton and {} conjugate-gradient steps (coarse space of {}); {} "
+                   "pairs at factor 0\n",
+                   result.moments,
+                   exact == 1       ? "unregularised problem solved"
+                       : exact == 0 ? "regularised problem solved, unregularised one not converged"
+                                    : fmt::format("regularised problem to {:.2g}", result.residual),
+                   result.newton_steps, result.cg_steps, result.coarse_size, clipped_all);
+}
+
+// the solver's exchanges: n values per atom of 'values', the owners' to
+// their ghosts (forward) or the ghosts' added to their owners' (reverse)
+void SPHSecondWeights::forward(void *context, double *values, int n)
+{
+  static_cast<SPHSecondWeights *>(context)->exchange->forward(SPHCommStage().flat(values, n));
+}
+
+void SPHSecondWeights::reverse(void *context, double *values, int n)
+{
+  static_cast<SPHSecondWeights *>(context)->exchange->reverse(SPHCommStage().flat(values, n));
+}
+
+double SPHSecondWeights::sum(void *context, double value)
+{
+  double total = 0.0;
+  MPI_Allreduce(&value, &total, 1, MPI_DOUBLE, MPI_SUM,
+                static_cast<SPHSecondWeights *>(context)->world);
+  return total;
+}
+
+void SPHSecondWeights::sum_array(void *context, double *values, int n)
+{
+  MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_SUM,
+                static_cast<SPHSecondWeights *>(context)->world);
+}
+
+double SPHSecondWeights::max(void *context, double value)
+{
+  double largest = 0.0;
+  MPI_Allreduce(&value, &largest, 1, MPI_DOUBLE, MPI_MAX,
+                static_cast<SPHSecondWeights *>(context)->world);
+  return largest;
+}

@@ -1,0 +1,111 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SPH_CONDUCTION_WEIGHTS_H
+#define LMP_SPH_CONDUCTION_WEIGHTS_H
+
+#include "pointers.h"
+#include "sph_second_moment.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class SPHExchange;
+class SPHSupportPairs;
+
+// The factors w_ij by which a correction of pair sph/cleary/heat multiplies
+// each pair's conduction term, behind one interface: 'correction
+// consistent' (sph_consistent.h) and 'second' (sph_second_moment.h);
+// 'none' has no object (every factor 1). Both start from the same
+// normalised second moment, which also decides where an atom's support is
+// complete (corrected) or not (the plain term).
+class SPHConductionWeights : protected Pointers {
+ public:
+  enum Kind { NONE = 0, CONSISTENT = 1, SECOND = 2 };
+  // the weights of 'kind' (nullptr for NONE); inv_h the inverse of the
+  // kernel's smoothing length, sweeps the Jacobi sweeps of CONSISTENT
+  static SPHConductionWeights *create(LAMMPS *lmp, int kind, double inv_h, int sweeps);
+  ~SPHConductionWeights() override;
+
+  // the factors of this step's pairs into pairs.weight (volume: m / rho of
+  // every owned and ghost atom), with the states of every owned and ghost atom
+  virtual void refresh(SPHSupportPairs &pairs, const double *volume, SPHExchange &exchange) = 0;
+  // the factor between atoms i and j (owned or ghost) at r_ij = x_i - x_j,
+  // |r_ij| = r, for the last refresh
+  virtual double factor(int i, int j, const double r_ij[3], double r) const = 0;
+  // at a run's setup, on every rank: the log lines of the last update
+  virtual void report() const;
+  virtual double memory_usage() const;
+  // a new run: the solvers' once-per-run warnings may be given again
+  virtual void rearm() {}
+
+  // per atom (owned and ghost, room from construction on, filled by
+  // refresh()): 1 where the atom's pair terms are corrected, 0 where it keeps
+  // the plain term (incomplete support)
+  const double *states() const { return state; }
+  const char *name() const { return kind == SECOND ? "second" : "consistent"; }
+  // room for atom->nmax atoms
+  void grow();
+
+ protected:
+  SPHConductionWeights(LAMMPS *lmp, int kind);
+  const int kind;
+  int nmax;
+  double **s;       // the normalised second moment S = V M^-1 (6 per atom)
+  double *state;    // 1: corrected, 0: plain
+  // M of the plain weights, then S and the states, on every atom
+  void normalise(const SPHSupportPairs &pairs, const double *volume, SPHExchange &exchange);
+  virtual void grow_more() {}
+};
+
+// 'correction consistent': S and the first-moment vector lambda from Jacobi sweeps
+class SPHConsistentWeights : public SPHConductionWeights {
+ public:
+  SPHConsistentWeights(LAMMPS *lmp, int sweeps);
+  ~SPHConsistentWeights() override;
+  void refresh(SPHSupportPairs &pairs, const double *volume, SPHExchange &exchange) override;
+  double factor(int i, int j, const double r_ij[3], double r) const override;
+  double memory_usage() const override;
+
+ private:
+  const int sweeps;
+  double **kinv, **lambda, **deficit, **coupling;
+  void grow_more() override;
+  void release();
+};
+
+// 'correction second': the multipliers nu of sph_second_moment.h's solve
+class SPHSecondWeights : public SPHConductionWeights {
+ public:
+  SPHSecondWeights(LAMMPS *lmp, double inv_h);
+  void refresh(SPHSupportPairs &pairs, const double *volume, SPHExchange &exchange) override;
+  double factor(int i, int j, const double r_ij[3], double r) const override;
+  void report() const override;
+  double memory_usage() const override;
+  void rearm() override { warned = 0; }
+
+ private:
+  const double inv_h;
+  std::vector<double> nu, work, volume_owned, kept;
+  std::vector<int> constrained;
+  std::vector<sphs_pair> solver_pairs;
+  sphs_result result;    // of the last solve
+  // the last solve's second stage (the unregularised problem): 1 taken,
+  // 0 not converged (the regularised multipliers kept), -1 not tried
+  int exact;
+  int warned;
+  bigint solved_at;         // step of the last solve, -1 before the first
+  SPHExchange *exchange;    // during refresh()
+  static void forward(void *context, double *values, int n);
+  static void reverse(void *context, double *values, int n);
+  static double sum(void *context, double value);
+  static double max(void *context, double value);
+  static void sum_array(void *context, double *values, int n);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

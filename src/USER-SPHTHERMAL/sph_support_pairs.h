@@ -1,0 +1,105 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SPH_SUPPORT_PAIRS_H
+#define LMP_SPH_SUPPORT_PAIRS_H
+
+#include "neigh_list.h"
+#include "sph_consistent.h"
+#include "sph_kernels.h"
+
+#include <cmath>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+// The pairs of a half neighbour list that lie inside the kernel support,
+// stored with the list: entry ii of the list owns the pairs
+// [first[ii], first[ii + 1]), in the order of its neighbours. Made when the
+// particles move and read by the conduction weights, the interface
+// estimate and the pair loop, which finds the pairs of its slice of the
+// list (a thread's) at first[ii]. One array per quantity, so that a pass
+// streams only what it reads (the loop: the weights).
+class SPHSupportPairs {
+ public:
+  std::vector<int> first;    // per list entry, and the count at the end
+  std::vector<int> i, j;
+  std::vector<double> r;           // x_i - x_j, 3 per pair
+  std::vector<double> distance;    // |r|
+  std::vector<double> dwdr, w;     // the kernel's dW/dr and W at that distance
+  std::vector<double> g;           // the plain weight V_i V_j (-r dW/dr) / (r^2 + eta^2)
+  std::vector<double> weight;      // the factor w_ij that the conduction term applies
+
+  int count() const { return first.empty() ? 0 : first.back(); }
+  const double *r_of(int q) const { return &r[3 * (size_t) q]; }
+
+  // the pairs of 'list' within 'cutsq' for positions x, with volume V of
+  // every owned and ghost atom; where 'near' is given, only the pairs with
+  // near[i] or near[j] non-zero; the weights all 1
+  template <int KERNEL>
+  void gather(const NeighList *list, const double *const *x, const sphk_kernel &kernel,
+              double cutsq, double eta2, const double *volume, const double *near)
+  {
+    const int inum = list->inum;
+    int capacity = 0;
+    for (int ii = 0; ii < inum; ii++) capacity += list->numneigh[list->ilist[ii]];
+    fit(capacity);
+    first.resize(inum + 1);
+    int n = 0;
+    for (int ii = 0; ii < inum; ii++) {
+      const int atom_i = list->ilist[ii];
+      const int *const jlist = list->firstneigh[atom_i];
+      const int jnum = list->numneigh[atom_i];
+      first[ii] = n;
+      // every entry written at position n, kept (n advanced) only inside
+      for (int jj = 0; jj < jnum; jj++) {
+        const int atom_j = jlist[jj] & NEIGHMASK;
+        double *const r_n = &r[3 * (size_t) n];
+        r_n[0] = x[atom_i][0] - x[atom_j][0];
+        r_n[1] = x[atom_i][1] - x[atom_j][1];
+        r_n[2] = x[atom_i][2] - x[atom_j][2];
+        const double rsq = r_n[0] * r_n[0] + r_n[1] * r_n[1] + r_n[2] * r_n[2];
+        i[n] = atom_i;
+        j[n] = atom_j;
+        distance[n] = rsq;
+        const int wanted = !near || near[atom_i] != 0.0 || near[atom_j] != 0.0;
+        n += (rsq < cutsq) & wanted;
+      }
+    }
+    first[inum] = n;
+    for (int q = 0; q < n; q++) {
+      const double rr = sqrt(distance[q]);
+      distance[q] = rr;
+      dwdr[q] = kernel.dw_scale * sphk_df(KERNEL, rr * kernel.inv_h);
+      w[q] = kernel.w_scale * sphk_f(KERNEL, rr * kernel.inv_h);
+      g[q] = volume[i[q]] * volume[j[q]] * sphc_brookshaw_weight(rr, dwdr[q], eta2);
+      weight[q] = 1.0;
+    }
+  }
+
+  double memory_usage() const
+  {
+    return (double) i.capacity() * (2 * sizeof(int) + 9 * sizeof(double)) +
+        (double) first.capacity() * sizeof(int);
+  }
+
+ private:
+  void fit(int n)
+  {
+    if ((int) i.size() >= n) return;
+    i.resize(n);
+    j.resize(n);
+    r.resize(3 * (size_t) n);
+    distance.resize(n);
+    dwdr.resize(n);
+    w.resize(n);
+    g.resize(n);
+    weight.resize(n);
+  }
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
