@@ -39,6 +39,8 @@
 
 using namespace LAMMPS_NS;
 
+constexpr double SPHInterfaceDistance::NONE;    // (C++11: a definition for its uses by reference)
+
 SPHInterfaceDistance::SPHInterfaceDistance(LAMMPS *lmp, const std::string &given_name) :
     Pointers(lmp), crossing(nullptr), given_name(given_name), given_index(-1), nmax(0),
     distance(nullptr), near_of(nullptr), moment(nullptr), vector(nullptr), normal(nullptr),
