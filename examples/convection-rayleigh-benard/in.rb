@@ -109,7 +109,7 @@ variable        rhoinit atom 1.0+(y/2.0-y*y/2.0-1.0/12.0)*v_g/(v_c0*v_c0)
 if "${init} == hydrostatic" then "set group fluid sph/rho v_rhoinit"
 
 pair_style      hybrid/overlay sph/harmonic/visc ${kernel} ${cut} eta ${eta} delta ${delta} pressure ${pform} &
-                sph/cleary/heat ${kernel} ${cut} eta ${eta}
+                sph/cleary/heat same eta ${eta}
 pair_coeff      * * sph/harmonic/visc
 pair_coeff      * * sph/cleary/heat
 neighbor        $(0.2*v_dx) bin

@@ -29,7 +29,7 @@ using namespace LAMMPS_NS;
 
 PairSPHKernel::PairSPHKernel(LAMMPS *lmp, const char *style, const char *from_materials) :
     Pair(lmp), style(style), from_materials(from_materials), kernel_kind(-1), cut_global(0.0),
-    eta_factor(0.1)
+    eta_factor(0.1), kernel_same(0)
 {
   restartinfo = 1;
   single_enable = 0;
@@ -58,13 +58,20 @@ void PairSPHKernel::allocate()
 
 int PairSPHKernel::parse_kernel(int narg, char **arg)
 {
+  // 'same': the other pair's, known at init (its settings may come later)
+  kernel_same = narg >= 1 && strcmp(arg[0], "same") == 0;
+  if (kernel_same) {
+    kernel_kind = -1;
+    cut_global = 0.0;
+    return 1;
+  }
   if (narg < 2)
     error->all(FLERR, "Illegal pair_style {} command: expected <kernel> <cutoff>", style);
   kernel_kind = sphk_lookup(arg[0]);
   if (kernel_kind < 0)
     error->all(FLERR,
-               "Illegal pair_style {} command: unknown kernel '{}' (lucy, cubic, quintic or "
-               "wendland)",
+               "Illegal pair_style {} command: unknown kernel '{}' (lucy, cubic, quintic, "
+               "wendland, or same)",
                style, arg[0]);
   cut_global = utils::numeric(FLERR, arg[1], false, lmp);
   if (cut_global <= 0.0)
@@ -72,17 +79,47 @@ int PairSPHKernel::parse_kernel(int narg, char **arg)
   return 2;
 }
 
+/* the kernel and cutoff of every pair given 'same' from the pair of the
+   other kind (conduction or flow), for all the package's pairs at the
+   first of their inits, so that each sees the others' resolved */
+
+void PairSPHKernel::resolve_same_kernels()
+{
+  const std::vector<PairSPHKernel *> pairs = SPHHub(lmp).pairs();
+  for (PairSPHKernel *pair : pairs) {
+    if (!pair->kernel_same) continue;
+    const PairSPHKernel *other = nullptr;
+    for (PairSPHKernel *candidate : pairs)
+      if (!candidate->same_family(pair)) other = candidate;
+    const char *other_style = pair->conducts() ? "sph/harmonic/visc" : "sph/cleary/heat";
+    if (!other)
+      error->all(FLERR,
+                 "Pair style {}: kernel 'same' takes the kernel and cutoff of pair style {}, "
+                 "which pair_style {} does not have",
+                 pair->style, other_style, force->pair_style);
+    if (other->kernel_same)
+      error->all(FLERR,
+                 "Pair styles {} and {} are both given kernel 'same': give one of them a kernel "
+                 "and cutoff",
+                 pair->style, other->style);
+    pair->kernel_kind = other->kernel_kind;
+    pair->cut_global = other->cut_global;
+  }
+}
+
 double PairSPHKernel::init_kernel()
 {
+  resolve_same_kernels();
   // a support beyond the whole box is a typo (e.g. 1e10 for 1e-2), not a
   // kernel: say so here, not as a neighbour-binning error at 'run'
   double extent = 0.0;
   for (int d = 0; d < domain->dimension; d++) extent = MAX(extent, domain->prd[d]);
   if (cut_global > extent)
-    error->all(FLERR,
-               "Pair style {}: cutoff {} is larger than the simulation box (largest extent {}); the "
-               "cutoff is the kernel support, a few particle spacings",
-               style, cut_global, extent);
+    error->all(
+        FLERR,
+        "Pair style {}: cutoff {} is larger than the simulation box (largest extent {}); the "
+        "cutoff is the kernel support, a few particle spacings",
+        style, cut_global, extent);
 
   // in hybrid/overlay: no type pair twice in this style (its heat or force
   // would count twice); one instance only; the flow pair with the heat
@@ -187,7 +224,8 @@ void PairSPHKernel::check_neighbours()
       const double rsq = dx * dx + dy * dy + dz * dz;
       if (rsq < cutsq_kernel) local++;
       if (rsq == 0.0 && std::min(atom->tag[i], atom->tag[j]) < same[0])
-        same[0] = std::min(atom->tag[i], atom->tag[j]), same[1] = std::max(atom->tag[i], atom->tag[j]);
+        same[0] = std::min(atom->tag[i], atom->tag[j]),
+        same[1] = std::max(atom->tag[i], atom->tag[j]);
     }
   }
   tagint first_same;
@@ -217,8 +255,8 @@ void PairSPHKernel::check_rates(const double *rate, const char *quantity)
 {
   const int i = SPHCheck::first_nonfinite(rate, atom->nlocal);
   if (i >= 0)
-    SPHCheck::nonfinite(lmp, FLERR, fmt::format("Pair style {}", style).c_str(), quantity, i, rate[i],
-                        diagnose(i));
+    SPHCheck::nonfinite(lmp, FLERR, fmt::format("Pair style {}", style).c_str(), quantity, i,
+                        rate[i], diagnose(i));
 }
 
 void PairSPHKernel::check_rates3(double *const *rate, const char *quantity)

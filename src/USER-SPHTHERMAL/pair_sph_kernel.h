@@ -43,11 +43,16 @@ class PairSPHKernel : public Pair {
   int kernel_kind;               // SPHK_* of sph_kernels.h
   double cut_global;             // kernel support radius
   double eta_factor;             // eta = eta_factor * h
-  sphk_kernel kernel;            // fixed to the dimension and cutoff by init_kernel()
+  // 'same' in place of kernel and cutoff: those of the other pair (flow or
+  // conduction), resolved at init
+  int kernel_same;
+  sphk_kernel kernel;    // fixed to the dimension and cutoff by init_kernel()
 
   virtual void allocate();
-  // kernel and cutoff from arg[0], arg[1]; returns the index of the next argument
+  // kernel and cutoff from arg[0], arg[1], or 'same' in arg[0]; returns the
+  // index of the next argument
   int parse_kernel(int narg, char **arg);
+  void resolve_same_kernels();
   // the kernel of this run's dimension; returns eta^2. Also the checks of
   // the cutoff against the box and of the other SPH pair styles of a hybrid
   double init_kernel();

@@ -65,6 +65,15 @@ foreach(np 2 4)
   sphthermal_state_test(flow.shared_loop.mpi.np${np} same ${thermal_flow_input}
     ARGS ${shared_loop_varying_k} NP ${np} RTOL 1e-12)
 endforeach()
+# kernel 'same' (either pair, whichever comes first in the hybrid) gives
+# what the kernel given twice gives, and the shared loop is still taken
+foreach(which heat flow)
+  sphthermal_state_test(flow.kernel_same.${which} same ${thermal_flow_input}
+    ARGS --var same=${which} --var laws=varying --var2 same=none RTOL 1e-14)
+  sphthermal_lammps_test(flow.kernel_same.${which}_shared_loop_taken ${thermal_flow_input}
+    IN_BUILD_DIR VARS steps 0 same ${which} LABELS regression
+    PASS "evaluated in the pair loop of sph/harmonic/visc")
+endforeach()
 # the shared loop is taken where it can be, and not with 'loop own' or an
 # option that needs more than the pair (correction consistent)
 set(shared_loop_taken "evaluated in the pair loop of sph/harmonic/visc")
