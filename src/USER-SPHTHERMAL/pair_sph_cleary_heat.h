@@ -27,7 +27,7 @@ PairStyle(sph/cleary/heat,PairSPHClearyHeat);
 
 namespace LAMMPS_NS {
 
-class PairSPHClearyHeat : public PairSPHKernel, protected SPHExchange {
+class PairSPHClearyHeat : public PairSPHKernel {
  public:
   PairSPHClearyHeat(class LAMMPS *);
   ~PairSPHClearyHeat() override;
@@ -39,10 +39,6 @@ class PairSPHClearyHeat : public PairSPHKernel, protected SPHExchange {
   void read_restart_settings(FILE *) override;
   double memory_usage() override;
   bool conducts() const override { return true; }
-  int pack_forward_comm(int, int *, double *, int, int *) override;
-  void unpack_forward_comm(int, int, double *) override;
-  int pack_reverse_comm(int, int, double *) override;
-  void unpack_reverse_comm(int, int *, double *) override;
 
   // heat flows between two groups, tallied in compute() on request (fix
   // sph/heatflow, after this style's init): the index of the flow into the
@@ -128,10 +124,6 @@ class PairSPHClearyHeat : public PairSPHKernel, protected SPHExchange {
   // values per atom of the largest reverse communication but that of
   // 'correction second': the moments of the correction (6 and 3)
   static constexpr int COMM_REVERSE_MOMENTS = 9;
-  // the stage being communicated (SPHExchange)
-  SPHCommStage active_stage;
-  void forward(const SPHCommStage &stage) override;
-  void reverse(const SPHCommStage &stage) override;
   // 'mean interface': per type pair, 1 when the two types differ in
   // conductivity law (the pair crosses an interface); per type, the
   // conductivity when all are constant; the distances (nullptr without)

@@ -30,11 +30,11 @@
 #include "sph_body_force.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
-#include "sph_hub.h"
 #include "sph_conduction.h"
 #include "sph_consistent.h"
 #include "sph_dispatch.h"
 #include "sph_flow.h"
+#include "sph_hub.h"
 #include "sph_support.h"
 #include "update.h"
 
@@ -50,12 +50,11 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
                   "viscosities and equations of state come from fix sph/materials"),
     pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI), xi(SPHF_XI_CLEARY), delta(0.1),
     heating(0.0), mean_pressure_held(0), mean_pressure(0.0), gradient_correction(0),
-    gradient_inverse(nullptr), nmax_gradient(0), comm_stage(COMM_VEST),
-    diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr), eta2(0.0),
-    materials(nullptr), viscosity_varies(0), wall_groupbit(0), pressure(nullptr),
-    viscosity(nullptr), mass_of(nullptr), volume(nullptr), density(nullptr),
-    diffused_density(nullptr), diffusion_rho(nullptr), thermal_expansion(0), nmax(0), heat(nullptr),
-    shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0)
+    gradient_inverse(nullptr), nmax_gradient(0), diffusion_form(DIFFUSION_BODY_FORCE),
+    hydrostatic(0), body_force(nullptr), eta2(0.0), materials(nullptr), viscosity_varies(0),
+    wall_groupbit(0), pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr),
+    density(nullptr), diffused_density(nullptr), diffusion_rho(nullptr), thermal_expansion(0),
+    nmax(0), heat(nullptr), shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0)
 {
   // the continuity equation and the viscous term need the velocities of
   // ghost atoms: turned on here, as comm_modify vel yes would
@@ -103,10 +102,7 @@ void PairSPHHarmonicVisc::begin_compute()
   SPHCheck::particles(lmp, FLERR, "Pair style sph/harmonic/visc", SPHCheck::RHO | SPHCheck::ESPH);
   // fix sph sets vest = v on owned atoms at setup without updating their
   // ghosts: refresh them, or results depend on newton and the rank count
-  if (update->setupflag) {
-    comm_stage = COMM_VEST;
-    SPHCompat::forward_comm(comm, this);
-  }
+  if (update->setupflag) forward(SPHCommStage().rows(atom->vest, 3));
   update_atom_state();
   if (update->setupflag) check_neighbours();
   if (gradient_correction) refresh_gradient_correction();
@@ -178,12 +174,8 @@ void PairSPHHarmonicVisc::end_compute()
   check_rates3(atom->f, "force");
   check_rates(atom->drho, "drho");
   if (heat && heat->term_in_flow_loop()) heat->end_flow_loop_term();
-  if (shift_sums_wanted && force->newton_pair) {
-    comm_stage = COMM_SHIFT;
-    SPHCompat::reverse_comm(comm, this);
-  }
+  if (shift_sums_wanted && force->newton_pair) reverse(SPHCommStage().flat(shift_sum, 3));
 }
-
 
 void PairSPHHarmonicVisc::tally_pair(int i, int j, double fx, double fy, double fz, double delx,
                                      double dely, double delz, void * /*thread*/)
@@ -215,7 +207,6 @@ void PairSPHHarmonicVisc::eval_dimension(int ifrom, int ito, const Rates &rates)
   else
     eval<KERNEL, PRESSURE, VISCOSITY, TERMS, 3>(ifrom, ito, rates);
 }
-
 
 /* ----------------------------------------------------------------------
    f_i += F_ij, f_j -= F_ij and drho of both for every pair in the kernel
@@ -299,10 +290,10 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
     // its denominator: F_ij per unit temperature difference, then F_ij
     auto add_heat = [&](int j, double r_dwdr, double inv_heat) {
       // (the flow loop takes the term only with the harmonic mean, no interface)
-      const double conductance_ij = sphc_pair_conductance(
-          SPHC_HARMONIC, (TERMS & HEAT_ATOM_K) != 0, 0, k_i,
-          (TERMS & HEAT_ATOM_K) ? term.conductivity[j] : 0.0,
-          (TERMS & HEAT_ATOM_K) ? 0.0 : conductance_i[type[j]], 0.0, 0.0);
+      const double conductance_ij =
+          sphc_pair_conductance(SPHC_HARMONIC, (TERMS & HEAT_ATOM_K) != 0, 0, k_i,
+                                (TERMS & HEAT_ATOM_K) ? term.conductivity[j] : 0.0,
+                                (TERMS & HEAT_ATOM_K) ? 0.0 : conductance_i[type[j]], 0.0, 0.0);
       const double relax_ij = sphc_cleary_pair_inv(conductance_ij, 1.0, r_dwdr, inv_heat);
       const double heat_ij = relax_ij * (temp_i - term.temperature[j]);
       desph_i += term.mass[j] * heat_ij;
@@ -332,7 +323,8 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
       const double dvx = vest[i][0] - vest[j][0];
       const double dvy = vest[i][1] - vest[j][1];
       const double dvz = (DIM == 3) ? vest[i][2] - vest[j][2] : 0.0;
-      const double vr_est = (VISCOSITY == SPHF_V_CLEARY) ? dvx * delx + dvy * dely + dvz * delz : 0.0;
+      const double vr_est = (VISCOSITY == SPHF_V_CLEARY) ? dvx * delx + dvy * dely + dvz * delz
+                                                         : 0.0;
       double s_r, s_rv, s_v, c_i, c_j, inv_heat;
       // the heat term's denominator shares the flow's one division
       const double heat_den =

@@ -33,10 +33,6 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   void read_restart_settings(FILE *) override;
   double memory_usage() override;
   bool conducts() const override { return false; }
-  int pack_forward_comm(int, int *, double *, int, int *) override;
-  void unpack_forward_comm(int, int, double *) override;
-  int pack_reverse_comm(int, int, double *) override;
-  void unpack_reverse_comm(int, int *, double *) override;
 
   // fix sph/shift's sum_j V_j grad_i W_ij for the atoms of 'groupbit', made
   // in this style's pair loop from the next compute() on (asked at every
@@ -48,12 +44,12 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   const double *shift_sums() const { return shift_sum; }
 
  protected:
-  int pressure_form;      // SPHF_P_* of sph_flow.h (also selects the continuity form)
-  int viscosity_form;     // SPHF_V_* of sph_flow.h
-  double xi;              // factor of the cleary viscosity
-  int xi_given;           // xi was given (only the cleary form reads it)
-  double delta;           // density diffusion (Ng et al. 2020, eq 5), 0: none
-  double heating;         // fraction of the viscous work turned into heat, 0: none
+  int pressure_form;     // SPHF_P_* of sph_flow.h (also selects the continuity form)
+  int viscosity_form;    // SPHF_V_* of sph_flow.h
+  double xi;             // factor of the cleary viscosity
+  int xi_given;          // xi was given (only the cleary form reads it)
+  double delta;          // density diffusion (Ng et al. 2020, eq 5), 0: none
+  double heating;        // fraction of the viscous work turned into heat, 0: none
   // 1: the pair terms see the pressure less an offset (pvector[0], for
   // compute pair) that holds the fluid's volume-weighted mean pressure at
   // mean_pressure
@@ -67,19 +63,15 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   int gradient_correction;
   double **gradient_inverse;
   int nmax_gradient;
-  // what pack_forward_comm / pack_reverse_comm carry
-  enum { COMM_VEST, COMM_SHIFT, COMM_GRADIENT_MOMENT, COMM_GRADIENT_INVERSE };
-  int comm_stage;
-  SPHCommStage comm_fields() const;    // the per-atom values of comm_stage
   // the density diffusion: Fourtakas's (Reece et al. 2024, eq 39) with the
   // run's body force (the default), Molteni's (Ng et al. 2020, eq 5: no
   // gravity), or Fourtakas's with a vector given in the command
   enum { DIFFUSION_BODY_FORCE, DIFFUSION_MOLTENI, DIFFUSION_GIVEN };
   int diffusion_form;
-  int hydrostatic;              // 1: the diffusion leaves the hydrostatic gradient of 'gravity' alone
-  double gravity[3];            // the acceleration of the hydrostatic diffusion
-  const double *body_force;     // the run's body force (fix gravity), nullptr when none
-  double eta2;            // eta^2, regularises r -> 0
+  int hydrostatic;      // 1: the diffusion leaves the hydrostatic gradient of 'gravity' alone
+  double gravity[3];    // the acceleration of the hydrostatic diffusion
+  const double *body_force;    // the run's body force (fix gravity), nullptr when none
+  double eta2;                 // eta^2, regularises r -> 0
   class FixSPHMaterials *materials;
   int viscosity_varies;    // 1 when some viscosity depends on T
   int wall_groupbit;       // particles of every fix sph/wall/adami (no density diffusion)

@@ -24,10 +24,10 @@
 #include "sph_body_force.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
-#include "sph_hub.h"
 #include "sph_conduction.h"
 #include "sph_consistent.h"
 #include "sph_flow.h"
+#include "sph_hub.h"
 #include "sph_support.h"
 #include "update.h"
 
@@ -35,7 +35,6 @@
 #include <cstring>
 
 using namespace LAMMPS_NS;
-
 
 static const char cmd[] = "pair_style sph/harmonic/visc";
 
@@ -67,16 +66,6 @@ bool PairSPHHarmonicVisc::provide_shift_sums(int groupbit)
   return true;
 }
 
-int PairSPHHarmonicVisc::pack_reverse_comm(int n, int first, double *buf)
-{
-  return comm_fields().pack(n, first, buf);
-}
-
-void PairSPHHarmonicVisc::unpack_reverse_comm(int n, int *list_send, double *buf)
-{
-  comm_fields().unpack_reverse(n, list_send, buf);
-}
-
 /* ----------------------------------------------------------------------
    pair_style sph/harmonic/visc kernel cutoff [pressure symmetric|sum|averaged]
      [viscosity cleary|adami|morris] [xi value] [eta f] [delta value]
@@ -92,8 +81,8 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
   xi = SPHF_XI_CLEARY;
   xi_given = 0;
   eta_factor = -1.0;    // the default depends on the viscosity form
-  delta = 0.1;    // Ng et al. 2020: "not a tunable parameter", 0.1 for all flows
-  heating = 0.0;    // Reece et al. 2024 and Ng et al. 2020 neglect it
+  delta = 0.1;          // Ng et al. 2020: "not a tunable parameter", 0.1 for all flows
+  heating = 0.0;        // Reece et al. 2024 and Ng et al. 2020 neglect it
   mean_pressure_held = 0;
   mean_pressure = 0.0;
   gradient_correction = 0;
@@ -116,8 +105,8 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
       viscosity_form = sphf_viscosity_lookup(value);
       if (viscosity_form < 0)
         error->all(FLERR,
-                   "Illegal {} command: unknown viscosity form '{}' (cleary, adami or morris)",
-                   cmd, value);
+                   "Illegal {} command: unknown viscosity form '{}' (cleary, adami or morris)", cmd,
+                   value);
     } else if (strcmp(arg[iarg], "xi") == 0) {
       xi = utils::numeric(FLERR, value, false, lmp);
       xi_given = 1;
@@ -200,7 +189,8 @@ void PairSPHHarmonicVisc::init_style()
 
   // turned on by the constructor; off only after an explicit comm_modify vel no
   if (!comm->ghost_velocity)
-    error->all(FLERR, "Pair style sph/harmonic/visc requires ghost velocities: remove comm_modify vel no");
+    error->all(FLERR,
+               "Pair style sph/harmonic/visc requires ghost velocities: remove comm_modify vel no");
 
   materials = FixSPHMaterials::find(lmp, "Pair style sph/harmonic/visc");
   // the walls first: a wall type without an equation of state is a solid
@@ -246,7 +236,8 @@ void PairSPHHarmonicVisc::init_style()
     thermal_expansion = materials->thermal_expansion();
     nmax = 0;
   }
-  SPHCheck::atom_state(lmp, FLERR, "Pair style sph/harmonic/visc", 0,
+  SPHCheck::atom_state(
+      lmp, FLERR, "Pair style sph/harmonic/visc", 0,
       SPHCheck::RHO |
           ((viscosity_varies || thermal_expansion) ? SPHCheck::CV | SPHCheck::ESPH : 0));
 
@@ -270,7 +261,6 @@ void PairSPHHarmonicVisc::init_style()
       SPHBodyForce::warn_overridden(lmp, "Pair style sph/harmonic/visc", "fourtakas", gravity,
                                     "'diffusion fourtakas' (the default) reads it");
   }
-
 
   eta2 = init_kernel();
   eos_of.assign(atom->ntypes + 1, nullptr);
@@ -336,34 +326,4 @@ double PairSPHHarmonicVisc::memory_usage()
 {
   return Pair::memory_usage() +
       (5.0 * nmax + 3.0 * nmax_shift + 6.0 * nmax_gradient) * sizeof(double);
-}
-
-/* ----------------------------------------------------------------------
-   vest of the ghost atoms, at setup
-------------------------------------------------------------------------- */
-
-SPHCommStage PairSPHHarmonicVisc::comm_fields() const
-{
-  SPHCommStage stage;
-  switch (comm_stage) {
-    case COMM_VEST:
-      return stage.rows(atom->vest, 3);
-    case COMM_SHIFT:
-      return stage.flat(shift_sum, 3);
-    case COMM_GRADIENT_MOMENT:
-    case COMM_GRADIENT_INVERSE:
-      return stage.rows(gradient_inverse, 6);
-  }
-  return stage;
-}
-
-int PairSPHHarmonicVisc::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/,
-                                           int * /*pbc*/)
-{
-  return comm_fields().pack(n, send, buf);
-}
-
-void PairSPHHarmonicVisc::unpack_forward_comm(int n, int first, double *buf)
-{
-  comm_fields().unpack_forward(n, first, buf);
 }

@@ -105,8 +105,7 @@ template <int KERNEL> void PairSPHHarmonicVisc::update_gradient_correction()
       if (!wall_j && (newton_pair || j < nlocal)) sphc_moment_add(moment[j], g * volume[i], del);
     }
   }
-  comm_stage = COMM_GRADIENT_MOMENT;
-  if (newton_pair) SPHCompat::reverse_comm(comm, this);
+  if (newton_pair) reverse(SPHCommStage().rows(moment, 6));
   bigint plain = 0, fluid = 0;
   for (int i = 0; i < nlocal; i++) {
     double inverse[6] = {1.0, 1.0, 1.0, 0.0, 0.0, 0.0};
@@ -117,8 +116,7 @@ template <int KERNEL> void PairSPHHarmonicVisc::update_gradient_correction()
     }
     for (int k = 0; k < 6; k++) moment[i][k] = inverse[k];
   }
-  comm_stage = COMM_GRADIENT_INVERSE;
-  SPHCompat::forward_comm(comm, this);
+  forward(SPHCommStage().rows(moment, 6));
   if (update->setupflag) {
     bigint mine[2] = {plain, fluid}, all[2];
     MPI_Allreduce(mine, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);

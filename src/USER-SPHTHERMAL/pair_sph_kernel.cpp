@@ -17,6 +17,7 @@
 #include "neigh_list.h"
 #include "pair_sph_harmonic_visc.h"
 #include "sph_checks.h"
+#include "sph_compat.h"
 #include "update.h"
 
 #include <algorithm>
@@ -305,4 +306,40 @@ std::string PairSPHKernel::diagnose(int i)
       return fmt::format("atom {} lies at distance 0 and eta is 0 (give eta > 0)", atom->tag[j]);
   }
   return "";
+}
+
+/* ----------------------------------------------------------------------
+   the per-atom values of one stage between owners and ghosts (SPHExchange)
+------------------------------------------------------------------------- */
+
+void PairSPHKernel::forward(const SPHCommStage &stage)
+{
+  active_stage = stage;
+  SPHCompat::forward_comm(comm, this);
+}
+
+void PairSPHKernel::reverse(const SPHCommStage &stage)
+{
+  active_stage = stage;
+  SPHCompat::reverse_comm(comm, this);
+}
+
+int PairSPHKernel::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+{
+  return active_stage.pack(n, send, buf);
+}
+
+void PairSPHKernel::unpack_forward_comm(int n, int first, double *buf)
+{
+  active_stage.unpack_forward(n, first, buf);
+}
+
+int PairSPHKernel::pack_reverse_comm(int n, int first, double *buf)
+{
+  return active_stage.pack(n, first, buf);
+}
+
+void PairSPHKernel::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  active_stage.unpack_reverse(n, list, buf);
 }

@@ -7,6 +7,8 @@
 #define LMP_PAIR_SPH_KERNEL_H
 
 #include "pair.h"
+#include "sph_comm_stage.h"
+#include "sph_exchange.h"
 #include "sph_hub.h"
 #include "sph_kernels.h"
 
@@ -18,14 +20,20 @@ namespace LAMMPS_NS {
 // and its support radius from 'pair_style <style> <kernel> <cutoff> ...',
 // 'pair_coeff * *' without coefficients (the materials come from fix
 // sph/materials), restart of the type pairs, and the kernel settings that
-// fixes and computes read (found through SPHHub).
-class PairSPHKernel : public Pair {
+// fixes and computes read (found through SPHHub); the communication of the
+// styles' and their components' per-atom values, one stage at a time.
+class PairSPHKernel : public Pair, protected SPHExchange {
  public:
   PairSPHKernel(class LAMMPS *, const char *style, const char *from_materials);
   ~PairSPHKernel() override;
   void coeff(int, char **) override;
   void write_restart(FILE *) override;
   void read_restart(FILE *) override;
+  // the stage being communicated (forward() and reverse())
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
   // the kernel as given, for the styles that evaluate the same kernel
   SPHKernelSettings kernel_settings() const { return {kernel_kind, cut_global, eta_factor}; }
   // the conduction pair (sph/cleary/heat and its /omp) or the flow pair
@@ -46,7 +54,13 @@ class PairSPHKernel : public Pair {
   // 'same' in place of kernel and cutoff: those of the other pair (flow or
   // conduction), resolved at init
   int kernel_same;
-  sphk_kernel kernel;    // fixed to the dimension and cutoff by init_kernel()
+  sphk_kernel kernel;
+  // SPHExchange: the stage's values sent now (comm_forward and comm_reverse,
+  // set by each style, bound the largest)
+  SPHCommStage active_stage;
+  void forward(const SPHCommStage &stage) override;
+  void reverse(
+      const SPHCommStage &stage) override;    // fixed to the dimension and cutoff by init_kernel()
 
   virtual void allocate();
   // kernel and cutoff from arg[0], arg[1], or 'same' in arg[0]; returns the
