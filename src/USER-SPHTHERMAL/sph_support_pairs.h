@@ -53,9 +53,13 @@ class SPHSupportPairs {
       const int *const jlist = list->firstneigh[atom_i];
       const int jnum = list->numneigh[atom_i];
       first[ii] = n;
+      // with 'near', the atoms far from it skip their neighbours that are
+      // too (most pairs, with the interface alone: an early branch is cheaper)
+      const bool skip_far = near && near[atom_i] == 0.0;
       // every entry written at position n, kept (n advanced) only inside
       for (int jj = 0; jj < jnum; jj++) {
         const int atom_j = jlist[jj] & NEIGHMASK;
+        if (skip_far && near[atom_j] == 0.0) continue;
         double *const r_n = &r[3 * (size_t) n];
         r_n[0] = x[atom_i][0] - x[atom_j][0];
         r_n[1] = x[atom_i][1] - x[atom_j][1];
@@ -64,8 +68,7 @@ class SPHSupportPairs {
         i[n] = atom_i;
         j[n] = atom_j;
         distance[n] = rsq;
-        const int wanted = !near || near[atom_i] != 0.0 || near[atom_j] != 0.0;
-        n += (rsq < cutsq) & wanted;
+        n += (rsq < cutsq);
       }
     }
     first[inum] = n;
