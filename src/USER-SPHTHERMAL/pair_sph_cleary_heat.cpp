@@ -92,7 +92,7 @@ void PairSPHClearyHeat::compute(int eflag, int vflag)
 void PairSPHClearyHeat::begin_compute()
 {
   SPHCheck::particles(lmp, FLERR, "Pair style sph/cleary/heat", SPHCheck::RHO | SPHCheck::ESPH);
-  fill_atom_state();
+  fill_atom_state(false);
   if (update->setupflag) check_neighbours();
   refresh_pairs = (weights || interface) && !pairs_current();
   if (relax_wanted) zero_relax_rate();

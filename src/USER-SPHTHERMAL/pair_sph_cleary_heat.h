@@ -167,7 +167,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   SPH_LOOP void eval(int ifrom, int ito, double *desph, double *relax);
   void tally_flows();
   int flow_loop_possible();
-  void fill_atom_state();
+  void fill_atom_state(bool flow_loop);    // the state for the flow loop's term, or the own loop's
   void finish_relax();
   std::string diagnose(int) override;
 };

@@ -72,7 +72,7 @@ int PairSPHClearyHeat::flow_loop_possible()
 
 PairSPHClearyHeat::FlowLoopTerm PairSPHClearyHeat::begin_flow_loop_term()
 {
-  fill_atom_state();
+  fill_atom_state(true);
   if (update->setupflag) check_neighbours();
   if (relax_wanted) zero_relax_rate();
   FlowLoopTerm term;
@@ -92,15 +92,17 @@ PairSPHClearyHeat::FlowLoopTerm PairSPHClearyHeat::begin_flow_loop_term()
    sph/materials: filled once per force evaluation for all the styles
 ------------------------------------------------------------------------- */
 
-void PairSPHClearyHeat::fill_atom_state()
+void PairSPHClearyHeat::fill_atom_state(bool flow_loop)
 {
   SPHAtomState &state = materials->atom_state();
+  // the own loop takes the masses by type (or rmass) as it goes; the flow
+  // loop and the support's volumes read the per-atom masses
   const int support = (weights || interface) ? SPHAtomState::VOLUME : 0;
-  state.fill(SPHAtomState::TEMPERATURE | SPHAtomState::MASS | support |
+  state.fill(SPHAtomState::TEMPERATURE | (flow_loop ? SPHAtomState::MASS : 0) | support |
                  (conductivity_varies ? SPHAtomState::CONDUCTIVITY : 0),
              "Pair style sph/cleary/heat");
   temperature = state.temperature();
-  mass_of = state.mass();
+  mass_of = (flow_loop || support) ? state.mass() : nullptr;
   volume = support ? state.volume() : nullptr;
   conductivity = conductivity_varies ? state.conductivity() : nullptr;
 }

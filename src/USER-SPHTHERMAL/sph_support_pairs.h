@@ -30,14 +30,14 @@ class SPHSupportPairs {
   std::vector<double> distance;    // |r|
   std::vector<double> dwdr, w;     // the kernel's dW/dr and W at that distance
   std::vector<double> g;           // the plain weight V_i V_j (-r dW/dr) / (r^2 + eta^2)
-  std::vector<double> weight;      // the factor w_ij that the conduction term applies
+  std::vector<double> weight;      // the factor w_ij of a correction (SPHConductionWeights)
 
   int count() const { return first.empty() ? 0 : first.back(); }
   const double *r_of(int q) const { return &r[3 * (size_t) q]; }
 
   // the pairs of 'list' within 'cutsq' for positions x, with volume V of
   // every owned and ghost atom; where 'near' is given, only the pairs with
-  // near[i] or near[j] non-zero; the weights all 1
+  // near[i] or near[j] non-zero (the factors are a correction's to write)
   template <int KERNEL>
   void gather(const NeighList *list, const double *const *x, const sphk_kernel &kernel,
               double cutsq, double eta2, const double *volume, const double *near)
@@ -78,7 +78,6 @@ class SPHSupportPairs {
       dwdr[q] = kernel.dw_scale * sphk_df(KERNEL, rr * kernel.inv_h);
       w[q] = kernel.w_scale * sphk_f(KERNEL, rr * kernel.inv_h);
       g[q] = volume[i[q]] * volume[j[q]] * sphc_brookshaw_weight(rr, dwdr[q], eta2);
-      weight[q] = 1.0;
     }
   }
 
