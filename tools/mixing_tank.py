@@ -30,6 +30,7 @@ from sphthermal_tools.dump import frame_times, read_frames
 
 R, H = 0.0193, 0.0386
 T_HOT, T_COLD = 303.0, 283.0
+RHO0 = 1.204    # the air's rest density in both examples (kg/m^3)
 FIELDS = [("c_T", "T (K)"), ("c_rho", "rho (kg/m^3)"), ("c_mix[1]", "F (volume fraction of A)"),
           ("c_mix[2]", "FTLE (1/s)"), ("c_mix[3]", "Robinson's M"), ("c_mix[4]", "VF-FTLE")]
 
@@ -49,7 +50,7 @@ def write_tank_data(n, path):
     dx = H / n
     tank = sph_boundary.cylinder(R + dx / 2, H + dx, dx, eps=0.99, layers=3, offset=(0.5, 0.5, 0.0),
                                  z_split=(H + dx) / 2, lids="lattice")
-    tank.write_data(path, rho=1.204, cv=1006.0, T=T_COLD)
+    tank.write_data(path, rho=RHO0, cv=1006.0, T=T_COLD)
     return dx
 
 
@@ -85,16 +86,16 @@ def symmetry_2d(frame, dx):
     return worst["c_T"], worst["c_rho"]
 
 
-def symmetry_3d(frame, dx):
+def symmetry_3d(frame, dx, rho_scale=None):
     """The largest spread of the four quadrants' means in a ring (radius x
-    height, two spacings each): T in theta_H - theta_C, rho in the range of
-    the rings' means."""
+    height, two spacings each): T in theta_H - theta_C, rho in rho_scale
+    (default: the range of the rings' means)."""
     x, y, z = frame["x"], frame["y"], frame["z"]
     r = np.hypot(x, y)
     ring = (np.minimum(r // (2 * dx), R // (2 * dx)) * 1000 + z // (2 * dx)).astype(int)
     quadrant = ((x >= 0).astype(int) + 2 * (y >= 0)).astype(int)
     result = []
-    for name, scale in (("c_T", T_HOT - T_COLD), ("c_rho", None)):
+    for name, scale in (("c_T", T_HOT - T_COLD), ("c_rho", rho_scale)):
         spreads, means = [], []
         for b in np.unique(ring):
             inside = ring == b
@@ -212,14 +213,19 @@ def main():
           f"(the paper loses 7 % in 2-D over 300 s)")
     for k, ((step, frame), when) in enumerate(zip(frames, times)):
         fluid = {name: col[fluid_of(frame, a.dim)] for name, col in frame.items()}
+        print(f"dump {k} (t = {when:g}): fluid density {100 * (fluid['c_rho'].min() / RHO0 - 1):+.2f} % "
+              f"to {100 * (fluid['c_rho'].max() / RHO0 - 1):+.2f} % of rho0, mean "
+              f"{100 * (fluid['c_rho'].mean() / RHO0 - 1):+.3f} %")
         if a.dim == 2:
             t_asym, rho_asym = symmetry_2d(fluid, a.dx)
             print(f"dump {k} (t = {when:g}): mirror asymmetry: T {t_asym:.2e} of theta_H - theta_C, "
                   f"rho {rho_asym:.2e} of its range")
         else:
             (t_max, t_mean), (rho_max, rho_mean) = symmetry_3d(fluid, a.dx)
+            _, (rho0_max, _) = symmetry_3d(fluid, a.dx, RHO0)
             print(f"dump {k} (t = {when:g}): quadrant spread, largest (mean) over rings: T {t_max:.2e} "
-                  f"({t_mean:.2e}) of theta_H - theta_C, rho {rho_max:.2e} ({rho_mean:.2e}) of the rings' range")
+                  f"({t_mean:.2e}) of theta_H - theta_C, rho {rho_max:.2e} ({rho_mean:.2e}) of the rings' range, "
+                  f"{rho0_max:.2e} of rho0")
     if a.png:
         plot_measures(m, a.png)
         plot_fields(frames[-1][1], a.dim, a.dx, a.png, times[-1])

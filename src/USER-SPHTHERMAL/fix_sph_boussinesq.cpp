@@ -7,6 +7,10 @@
      f_i = -m_i g beta_i (T_i - T0)
    g from the 'gravity' keyword, or the acceleration of fix gravity, which
    then also adds the weight m g: together g (1 - beta (T - T0)).
+   T0 'mean': the group's mean temperature weighted by m beta, updated every
+   step, so that the buoyancy sums to zero: the uniform part of the body
+   force, which in a closed domain only the pressure balances (and which
+   compresses a weakly compressible fluid), is never applied.
 ------------------------------------------------------------------------- */
 
 #include "fix_sph_boussinesq.h"
@@ -46,13 +50,14 @@ static constexpr double MAX_COMPRESSION = 0.05;
 /* ---------------------------------------------------------------------- */
 
 FixSPHBoussinesq::FixSPHBoussinesq(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), gravity_keyword(0), beta(nullptr), force_summed(0), zero_warned(0),
-    compression_checked(0)
+    Fix(lmp, narg, arg), gravity_keyword(0), reference_mean(0), beta(nullptr), force_summed(0),
+    zero_warned(0), compression_checked(0)
 {
   if (!atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Fix sph/boussinesq requires atom style sph (esph, cv)");
-  if (narg < 4) error->all(FLERR, "Illegal {} command: expected <T0>", cmd);
-  buoyancy.t0 = utils::numeric(FLERR, arg[3], false, lmp);
+  if (narg < 4) error->all(FLERR, "Illegal {} command: expected <T0> (a temperature or 'mean')", cmd);
+  reference_mean = (strcmp(arg[3], "mean") == 0);
+  buoyancy.t0 = reference_mean ? 0.0 : utils::numeric(FLERR, arg[3], false, lmp);
   gravity_given[0] = gravity_given[1] = gravity_given[2] = 0.0;
   int iarg = 4;
   while (iarg < narg) {
@@ -92,7 +97,7 @@ FixSPHBoussinesq::~FixSPHBoussinesq()
 
 int FixSPHBoussinesq::setmask()
 {
-  return POST_FORCE;
+  return POST_FORCE | (reference_mean ? END_OF_STEP : 0);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -168,6 +173,8 @@ void FixSPHBoussinesq::init()
                    "and feel no buoyancy",
                    without, group->names[igroup]);
   SPHCheck::atom_state(lmp, FLERR, "Fix sph/boussinesq", groupbit, SPHCheck::CV);
+  // before the walls and the pair read T0 in the set-up's forces
+  if (reference_mean) update_mean_reference();
   // before any wall extrapolates a pressure from the buoyancy (at set-up);
   // a fix gravity with variables sets its acceleration at its set-up first
   const int known = gravity_keyword || SPHBodyForce::constant(SPHBodyForce::source(lmp));
@@ -274,6 +281,44 @@ void FixSPHBoussinesq::check_compression()
                    worst_c0, MAX_COMPRESSION, worst_type,
                    sqrt(gnorm * fabs(beta[worst_type]) * dt_max * extent / MAX_COMPRESSION));
 }
+
+/* ----------------------------------------------------------------------
+   T0 'mean': sum m beta T / sum m beta over the group, the T0 at which the
+   buoyancy sums to zero; after each step's temperatures, for the next
+   step's forces (the walls' and the pair's before this fix's post_force)
+------------------------------------------------------------------------- */
+
+void FixSPHBoussinesq::update_mean_reference()
+{
+  const SPHParticles particles(atom);
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  double local[3] = {0.0, 0.0, 0.0}, all[3];
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double weight = particles.mass(i) * beta[type[i]];
+    local[0] += weight * particles.temperature(i);
+    local[1] += weight;
+    local[2] += fabs(weight);
+  }
+  MPI_Allreduce(local, all, 3, MPI_DOUBLE, MPI_SUM, world);
+  const double t0 = all[0] / all[1];
+  // expansion coefficients of both signs that (nearly) cancel leave T0 to round-off
+  if (!std::isfinite(t0) || !(fabs(all[1]) > 1e-10 * all[2]))
+    error->all(FLERR,
+               "Fix sph/boussinesq: T0 mean of group {} is {} (sum of m beta T {}, of m beta {}, "
+               "of m |beta| {}): the group's expansion coefficients sum to zero, or a "
+               "temperature is not finite",
+               group->names[igroup], t0, all[0], all[1], all[2]);
+  buoyancy.t0 = t0;
+}
+
+void FixSPHBoussinesq::end_of_step()
+{
+  update_mean_reference();
+}
+
+/* ---------------------------------------------------------------------- */
 
 void FixSPHBoussinesq::post_force(int /*vflag*/)
 {

@@ -27,6 +27,7 @@ class FixSPHBoussinesq : public Fix {
   void init() override;
   void setup(int) override;
   void post_force(int) override;
+  void end_of_step() override;
   double compute_vector(int) override;
   // the buoyancy it adds: read by the styles that need the body force of
   // each atom (SPHBodyForce::find_buoyancy)
@@ -35,6 +36,7 @@ class FixSPHBoussinesq : public Fix {
  protected:
   double gravity_given[3];    // the 'gravity' keyword's vector
   int gravity_keyword;        // 1 when given
+  int reference_mean;         // T0 'mean': updated every step (update_mean_reference)
   double *beta;               // expansion coefficient per type
   SPHBodyForce::Buoyancy buoyancy;
   double force_local[3], force_total[3];
@@ -42,6 +44,7 @@ class FixSPHBoussinesq : public Fix {
   int zero_warned;            // the warning of fix gravity's magnitude 0 given
   int compression_checked;    // check_compression() done (at the first setup)
   void check_compression();
+  void update_mean_reference();
 };
 
 }    // namespace LAMMPS_NS

@@ -26,7 +26,6 @@
 #include "neighbor.h"
 #include "pair_sph_harmonic_visc.h"
 #include "sph_body_force.h"
-#include "sph_buoyancy.h"
 #include "sph_checks.h"
 #include "sph_comm_stage.h"
 #include "sph_compat.h"
@@ -280,13 +279,9 @@ void FixSPHWallAdami::pre_force_walls()
     // with thermal expansion the pair refuses a T without reference density
     fluid_pressure[m] = sphe_pressure_at(materials->eos(type[j]), rho[j],
                                          thermal_expansion ? particles.temperature(j) : 0.0);
-    double accel[3] = {body[0], body[1], body[2]};
-    if (buoyancy && (mask[j] & buoyancy->groupbit)) {
-      double a[3];
-      sphb_acceleration(buoyancy->gravity, buoyancy->beta[type[j]], particles.temperature(j), buoyancy->t0,
-                        a);
-      for (int k = 0; k < 3; k++) accel[k] += a[k];
-    }
+    double accel[3];
+    SPHBodyForce::acceleration(body, buoyancy, mask[j], type[j],
+                               buoyancy ? particles.temperature(j) : 0.0, accel);
     for (int k = 0; k < 3; k++) fluid_rho_accel[3 * (size_t) m + k] = rho[j] * accel[k];
   }
   for (int i = 0; i < atom->nlocal; i++) {

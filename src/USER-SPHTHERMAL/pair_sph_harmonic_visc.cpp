@@ -51,7 +51,7 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI), xi(SPHF_XI_CLEARY), delta(0.1),
     heating(0.0), mean_pressure_held(0), mean_pressure(0.0), gradient_correction(0),
     gradient_inverse(nullptr), nmax_gradient(0), diffusion_form(DIFFUSION_BODY_FORCE),
-    hydrostatic(0), body_force(nullptr), eta2(0.0), materials(nullptr), viscosity_varies(0),
+    hydrostatic(0), body_force(nullptr), buoyancy(nullptr), eta2(0.0), materials(nullptr), viscosity_varies(0),
     wall_groupbit(0), pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr),
     density(nullptr), diffused_density(nullptr), diffusion_rho(nullptr), thermal_expansion(0),
     nmax(0), heat(nullptr), shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0)
@@ -103,14 +103,14 @@ void PairSPHHarmonicVisc::begin_compute()
   // fix sph sets vest = v on owned atoms at setup without updating their
   // ghosts: refresh them, or results depend on newton and the rank count
   if (update->setupflag) forward(SPHCommStage().rows(atom->vest, 3));
-  update_atom_state();
-  if (update->setupflag) check_neighbours();
-  if (gradient_correction) refresh_gradient_correction();
   // fix gravity may vary its acceleration in time
   if (diffusion_form == DIFFUSION_BODY_FORCE && body_force) {
     for (int k = 0; k < 3; k++) gravity[k] = body_force[k];
-    hydrostatic = (gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0);
+    hydrostatic = (gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0) || buoyancy;
   }
+  update_atom_state();
+  if (update->setupflag) check_neighbours();
+  if (gradient_correction) refresh_gradient_correction();
   heat_term = PairSPHClearyHeat::FlowLoopTerm();
   if (heat && heat->term_in_flow_loop()) heat_term = heat->begin_flow_loop_term();
   if (shift_sums_wanted) {
@@ -245,7 +245,7 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
   const sphe_eos *const *const eos_of = this->eos_of.data();
   const double delta_h_half = 0.5 * delta * kernel.h;
   const int hydrostatic = this->hydrostatic;
-  const double gravity[3] = {this->gravity[0], this->gravity[1], this->gravity[2]};
+  const double *const body_accel = this->body_accel.data();
   const PairSPHClearyHeat::FlowLoopTerm term = heat_term;
   double *const shift_sum = this->shift_sum;
   const double *const *const gradient_inverse = this->gradient_inverse;
@@ -379,7 +379,12 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
         const double delta_h_c0 = delta_h_half * (eos_i->c0 + eos_j->c0);
         double drho_ji = atom_rho[j] - atom_rho[i], drho_ij = -drho_ji;
         if (hydrostatic) {
-          const double g_r = gravity[0] * delx + gravity[1] * dely + gravity[2] * delz;
+          // the pressure difference that balances the body force across the
+          // pair: the mean of both accelerations (buoyancy varies with T)
+          const double *const a_i = body_accel + 3 * i, *const a_j = body_accel + 3 * j;
+          const double g_r = 0.5 *
+              ((a_i[0] + a_j[0]) * delx + (a_i[1] + a_j[1]) * dely +
+               ((DIM == 3) ? (a_i[2] + a_j[2]) * delz : 0.0));
           drho_ji -= sphe_density(eos_i, eos_i->p_background - eos_i->rho0 * g_r) - eos_i->rho0;
           drho_ij -= sphe_density(eos_j, eos_j->p_background + eos_j->rho0 * g_r) - eos_j->rho0;
         }

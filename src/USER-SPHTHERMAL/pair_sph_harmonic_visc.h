@@ -14,6 +14,7 @@ PairStyle(sph/harmonic/visc,PairSPHHarmonicVisc);
 
 #include "pair_sph_cleary_heat.h"
 #include "pair_sph_kernel.h"
+#include "sph_body_force.h"
 #include "sph_comm_stage.h"
 #include "sph_eos.h"
 
@@ -68,9 +69,13 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // gravity), or Fourtakas's with a vector given in the command
   enum { DIFFUSION_BODY_FORCE, DIFFUSION_MOLTENI, DIFFUSION_GIVEN };
   int diffusion_form;
-  int hydrostatic;      // 1: the diffusion leaves the hydrostatic gradient of 'gravity' alone
-  double gravity[3];    // the acceleration of the hydrostatic diffusion
+  // 1: the diffusion leaves alone the density gradient that balances the
+  // body force: 'gravity' plus, on buoyant atoms, fix sph/boussinesq's buoyancy
+  int hydrostatic;
+  double gravity[3];    // the uniform acceleration of the hydrostatic diffusion
   const double *body_force;    // the run's body force (fix gravity), nullptr when none
+  const SPHBodyForce::Buoyancy *buoyancy;    // fix sph/boussinesq's, nullptr when none
+  std::vector<double> body_accel;    // with hydrostatic: per atom (owned, ghost) its acceleration
   double eta2;                 // eta^2, regularises r -> 0
   class FixSPHMaterials *materials;
   int viscosity_varies;    // 1 when some viscosity depends on T

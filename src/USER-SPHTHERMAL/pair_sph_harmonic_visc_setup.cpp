@@ -243,11 +243,13 @@ void PairSPHHarmonicVisc::init_style()
 
   // the hydrostatic diffusion reads the body force of the run, or assumes one
   body_force = SPHBodyForce::find(lmp, "Pair style sph/harmonic/visc");
+  // and the buoyancy of fix sph/boussinesq, which varies from atom to atom
+  buoyancy = (diffusion_form == DIFFUSION_MOLTENI) ? nullptr : SPHBodyForce::find_buoyancy(lmp);
   if (diffusion_form == DIFFUSION_MOLTENI) {
     hydrostatic = 0;
   } else if (diffusion_form == DIFFUSION_BODY_FORCE) {
     for (int k = 0; k < 3; k++) gravity[k] = body_force ? body_force[k] : 0.0;
-    hydrostatic = (gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0);
+    hydrostatic = (gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0) || buoyancy;
   } else {
     int other_force = 0;
     for (int ifix = 0; ifix < modify->nfix; ifix++)

@@ -141,7 +141,9 @@ void PairSPHHarmonicVisc::update_atom_state()
 {
   SPHAtomState &state = materials->atom_state();
   state.fill(SPHAtomState::MASS |
-                 ((thermal_expansion || viscosity_varies) ? SPHAtomState::TEMPERATURE : 0),
+                 ((thermal_expansion || viscosity_varies || (hydrostatic && buoyancy))
+                      ? SPHAtomState::TEMPERATURE
+                      : 0),
              "Pair style sph/harmonic/visc");
   const double *const temperature = state.temperature();
   if (atom->nmax > nmax) {
@@ -206,6 +208,12 @@ void PairSPHHarmonicVisc::update_atom_state()
                                            "Pair style sph/harmonic/visc");
     density[i] = rho[i];
     volume[i] = mass_of[i] / rho[i];
+  }
+  if (hydrostatic) {
+    body_accel.resize(3 * (size_t) nall);
+    for (int i = 0; i < nall; i++)
+      SPHBodyForce::acceleration(gravity, buoyancy, mask[i], type[i],
+                                 buoyancy ? temperature[i] : 0.0, &body_accel[3 * (size_t) i]);
   }
   pvector[0] = mean_pressure_held ? hold_mean_pressure() : 0.0;
 }

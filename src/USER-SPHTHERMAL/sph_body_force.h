@@ -6,6 +6,8 @@
 #ifndef LMP_SPH_BODY_FORCE_H
 #define LMP_SPH_BODY_FORCE_H
 
+#include "sph_buoyancy.h"
+
 namespace LAMMPS_NS {
 
 class LAMMPS;
@@ -26,6 +28,21 @@ namespace SPHBodyForce {
     const double *beta;       // expansion coefficient per type (1..ntypes)
     int groupbit;             // the buoyant atoms
   };
+
+  // the body acceleration an atom feels: 'body' (fix gravity's, or a
+  // style's given vector) plus the buoyancy when the atom is buoyant
+  // ('buoyancy' may be nullptr); t is its temperature
+  inline void acceleration(const double body[3], const Buoyancy *buoyancy, int mask, int type,
+                           double t, double a[3])
+  {
+    a[0] = body[0];
+    a[1] = body[1];
+    a[2] = body[2];
+    if (!buoyancy || !(mask & buoyancy->groupbit)) return;
+    double b[3];
+    sphb_acceleration(buoyancy->gravity, buoyancy->beta[type], t, buoyancy->t0, b);
+    for (int k = 0; k < 3; k++) a[k] += b[k];
+  }
 
   // the acceleration vector of the body-force fix, valid for the fix's
   // lifetime and updated by it when it varies in time; nullptr when there

@@ -146,9 +146,17 @@ foreach(case poiseuille:poiseuille_20 couette:couette_20 two-fluid-couette:two_f
   add_example_test(flow.validation.${name} flow-${example} quick ${name})
 endforeach()
 
-# Fourtakas's diffusion vanishes at hydrostatic balance, Molteni's does not
+# Fourtakas's diffusion vanishes at hydrostatic balance, Molteni's does not:
+# under fix gravity, fix sph/boussinesq's buoyancy (T0 given or 'mean'), both
 sphthermal_python_test(flow.diffusion.hydrostatic flow/test_fourtakas.py
   ARGS $<TARGET_FILE:sph_state_host> ${SPHTHERMAL_PLUGIN} LABELS unit)
+foreach(case buoyancy:300.0 both:300.0 buoyancy:mean both:mean)
+  string(REPLACE ":" ";" parts ${case})
+  list(GET parts 0 force)
+  list(GET parts 1 t0)
+  sphthermal_python_test(flow.diffusion.hydrostatic_${force}_${t0} flow/test_fourtakas.py
+    ARGS $<TARGET_FILE:sph_state_host> ${SPHTHERMAL_PLUGIN} ${force} ${t0} LABELS unit)
+endforeach()
 
 # the adaptive timestep (fix sph/dt/reset)
 include(${CMAKE_CURRENT_LIST_DIR}/dt_reset.cmake)
