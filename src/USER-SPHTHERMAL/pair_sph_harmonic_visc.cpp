@@ -54,7 +54,8 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     hydrostatic(0), body_force(nullptr), buoyancy(nullptr), eta2(0.0), materials(nullptr), viscosity_varies(0),
     wall_groupbit(0), pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr),
     density(nullptr), diffused_density(nullptr), diffusion_rho(nullptr), thermal_expansion(0),
-    nmax(0), heat(nullptr), shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0)
+    nmax(0), heat(nullptr), shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0),
+    background_warned(0)
 {
   // the continuity equation and the viscous term need the velocities of
   // ghost atoms: turned on here, as comm_modify vel yes would
@@ -373,8 +374,8 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
       // density diffusion (Ng et al. 2020, eqs 5-6; Fourtakas's with
       // hydrostatic), not across walls (the papers set rho_b = rho_a there)
       double diffusion_j = 0.0;
-      if ((TERMS & DIFFUSION) && !wall_i && !wall_j) {
-        const sphe_eos *const eos_j = eos_of[type[j]];
+      const sphe_eos *const eos_j = (TERMS & DIFFUSION) ? eos_of[type[j]] : nullptr;
+      if ((TERMS & DIFFUSION) && !wall_i && !wall_j && eos_j->rho0 == eos_i->rho0) {
         // one coefficient per pair: the mean speed of sound of the two
         const double delta_h_c0 = delta_h_half * (eos_i->c0 + eos_j->c0);
         double drho_ji = atom_rho[j] - atom_rho[i], drho_ij = -drho_ji;

@@ -112,6 +112,8 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   double *shift_sum;    // per owned and ghost atom, 3 each
   int nmax_shift;
   std::vector<const sphe_eos *> eos_of;    // per type (nullptr: none), for the diffusion
+  int background_warned;                   // warn_background() warned (once per style)
+  void warn_background();
 
   // where the pair loops add their rates: the atom's arrays, or one
   // thread's copies of them (the /omp style; thread: its ThrData)

@@ -267,6 +267,7 @@ void PairSPHHarmonicVisc::init_style()
   eta2 = init_kernel();
   eos_of.assign(atom->ntypes + 1, nullptr);
   for (int t = 1; t <= atom->ntypes; t++) eos_of[t] = materials->eos(t);
+  warn_background();
   // sph/cleary/heat decides at its init whether this loop evaluates its term
   heat = SPHHub(lmp).heat();
   // fix sph/shift asks again at its init
@@ -328,4 +329,34 @@ double PairSPHHarmonicVisc::memory_usage()
 {
   return Pair::memory_usage() +
       (5.0 * nmax + 3.0 * nmax_shift + 6.0 * nmax_gradient) * sizeof(double);
+}
+
+/* ----------------------------------------------------------------------
+   the kernel gradient of a uniform pressure is not zero where the particles
+   are not on a lattice: a background pressure large against a fluid's own
+   rho0 c0^2 accelerates its particles apart (bench/stability, two-fluid
+   Couette at density ratio 1000: stable with the light fluid's background
+   up to 0.4 of its rho0 c0^2, unstable at every timestep from 1 on, e.g.
+   with the heavy fluid's 0.01 rho0 c0^2 given to both)
+------------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::warn_background()
+{
+  static constexpr double MAX_BACKGROUND = 0.5;    // of rho0 c0^2
+  if (comm->me != 0 || background_warned) return;
+  for (int t = 1; t <= atom->ntypes; t++) {
+    const sphe_eos *eos = eos_of[t];
+    if (!eos || !(eos->rho0 > 0.0) || !(eos->c0 > 0.0)) continue;
+    const double stiffness = eos->rho0 * eos->c0 * eos->c0;
+    if (!(eos->p_background > MAX_BACKGROUND * stiffness)) continue;
+    error->warning(FLERR,
+                   "Pair style sph/harmonic/visc: the background pressure {} of atom type {} is "
+                   "{:.3g} rho0 c0^2 of its equation of state (rho0 {}, c0 {}), more than {}: the "
+                   "kernel gradient's error of a uniform pressure drives its particles apart; with "
+                   "fluids of different densities give the background from the lightest "
+                   "(fix sph/materials 'background')",
+                   eos->p_background, t, eos->p_background / stiffness, eos->rho0, eos->c0,
+                   MAX_BACKGROUND);
+    background_warned = 1;
+  }
 }
