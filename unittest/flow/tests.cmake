@@ -158,6 +158,10 @@ foreach(case buoyancy:300.0 both:300.0 buoyancy:mean both:mean)
     ARGS $<TARGET_FILE:sph_state_host> ${SPHTHERMAL_PLUGIN} ${force} ${t0} LABELS unit)
 endforeach()
 
+# two fluids of density ratio 2, 10 and 1000: no diffusion across the
+# interface, layered Couette flow stable with the defaults
+sphthermal_python_test(flow.two_fluids.stable flow/test_two_fluids.py LAMMPS LABELS unit)
+
 # the adaptive timestep (fix sph/dt/reset)
 include(${CMAKE_CURRENT_LIST_DIR}/dt_reset.cmake)
 
