@@ -74,3 +74,6 @@ sphthermal_python_test(convection.mpi.shift_shared_np2 convection/test_shift.py 
 # cutoff alone: 2e-6; Adami neighbours within the cutoff alone: fails too)
 sphthermal_state_test(convection.mirror.skin same ${cavity_small}
   ARGS --var steps=100 --var2 skin=0.1 RTOL 1e-10)
+
+# fix sph/boussinesq T0 'mean': the buoyancy sums to zero while the fluid warms
+sphthermal_python_test(convection.boussinesq.mean convection/test_boussinesq_mean.py LAMMPS LABELS unit)
