@@ -25,10 +25,7 @@ TEND=${TEND:-30}
 name=tank3d_${components}_${N}
 
 # the particles (tools/sph_boundary.py; the layout is described in
-# tools/mixing_tank.py, write_tank_data). With the pair's density diffusion on,
-# fluid leaked through the top lid within 1 s with Cleary's eps 0.5 and
-# within 4 s with eps 0.99 and ring lids; in.tank3d turns it off, and ring
-# lids then held too in a 6 s check.
+# tools/mixing_tank.py, write_tank_data).
 dx=$("$PYTHON" "$root/tools/mixing_tank.py" setup "$N" "$name.data")
 $run "$LMP" -in "$here/in.tank3d" -var plugin "$PLUGIN" -var data "$name.data" -var dx "$dx" \
   -var components "$components" -var tend "$TEND" ${C0:+-var c0 "$C0"} -var out "$name.dump" -var mixing "$name.mixing.txt" \
