@@ -55,7 +55,8 @@ FixSPHBoussinesq::FixSPHBoussinesq(LAMMPS *lmp, int narg, char **arg) :
 {
   if (!atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Fix sph/boussinesq requires atom style sph (esph, cv)");
-  if (narg < 4) error->all(FLERR, "Illegal {} command: expected <T0> (a temperature or 'mean')", cmd);
+  if (narg < 4)
+    error->all(FLERR, "Illegal {} command: expected <T0> (a temperature or 'mean')", cmd);
   reference_mean = (strcmp(arg[3], "mean") == 0);
   buoyancy.t0 = reference_mean ? 0.0 : utils::numeric(FLERR, arg[3], false, lmp);
   gravity_given[0] = gravity_given[1] = gravity_given[2] = 0.0;
@@ -105,8 +106,9 @@ int FixSPHBoussinesq::setmask()
 void FixSPHBoussinesq::init()
 {
   if (SPHHub(lmp).fixes<FixSPHBoussinesq>().size() > 1)
-    error->all(FLERR, "Fix sph/boussinesq: only one may be defined (give each type its beta in "
-                      "fix sph/materials instead)");
+    error->all(FLERR,
+               "Fix sph/boussinesq: only one may be defined (give each type its beta in "
+               "fix sph/materials instead)");
 
   // g: the keyword's, or fix gravity's (which then also adds the weight)
   const double *gvec = SPHBodyForce::find(lmp, "Fix sph/boussinesq");
@@ -354,4 +356,3 @@ double FixSPHBoussinesq::compute_vector(int n)
   }
   return force_total[n];
 }
-

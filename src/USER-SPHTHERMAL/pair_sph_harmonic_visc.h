@@ -72,11 +72,11 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // 1: the diffusion leaves alone the density gradient that balances the
   // body force: 'gravity' plus, on buoyant atoms, fix sph/boussinesq's buoyancy
   int hydrostatic;
-  double gravity[3];    // the uniform acceleration of the hydrostatic diffusion
+  double gravity[3];           // the uniform acceleration of the hydrostatic diffusion
   const double *body_force;    // the run's body force (fix gravity), nullptr when none
   const SPHBodyForce::Buoyancy *buoyancy;    // fix sph/boussinesq's, nullptr when none
   std::vector<double> body_accel;    // with hydrostatic: per atom (owned, ghost) its acceleration
-  double eta2;                 // eta^2, regularises r -> 0
+  double eta2;                       // eta^2, regularises r -> 0
   class FixSPHMaterials *materials;
   int viscosity_varies;    // 1 when some viscosity depends on T
   int wall_groupbit;       // particles of every fix sph/wall/adami (no density diffusion)
