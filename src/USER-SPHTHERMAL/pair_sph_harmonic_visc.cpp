@@ -105,10 +105,7 @@ void PairSPHHarmonicVisc::begin_compute()
   // ghosts: refresh them, or results depend on newton and the rank count
   if (update->setupflag) forward(SPHCommStage().rows(atom->vest, 3));
   // fix gravity may vary its acceleration in time
-  if (diffusion_form == DIFFUSION_BODY_FORCE && body_force) {
-    for (int k = 0; k < 3; k++) gravity[k] = body_force[k];
-    hydrostatic = (gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0) || buoyancy;
-  }
+  if (diffusion_form == DIFFUSION_BODY_FORCE) read_body_force();
   update_atom_state();
   if (update->setupflag) check_neighbours();
   if (gradient_correction) refresh_gradient_correction();

@@ -76,6 +76,7 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   const double *body_force;    // the run's body force (fix gravity), nullptr when none
   const SPHBodyForce::Buoyancy *buoyancy;    // fix sph/boussinesq's, nullptr when none
   std::vector<double> body_accel;    // with hydrostatic: per atom (owned, ghost) its acceleration
+  void read_body_force();            // gravity and hydrostatic of 'diffusion fourtakas'
   double eta2;                       // eta^2, regularises r -> 0
   class FixSPHMaterials *materials;
   int viscosity_varies;    // 1 when some viscosity depends on T

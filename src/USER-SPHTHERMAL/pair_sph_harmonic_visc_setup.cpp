@@ -248,8 +248,7 @@ void PairSPHHarmonicVisc::init_style()
   if (diffusion_form == DIFFUSION_MOLTENI) {
     hydrostatic = 0;
   } else if (diffusion_form == DIFFUSION_BODY_FORCE) {
-    for (int k = 0; k < 3; k++) gravity[k] = body_force ? body_force[k] : 0.0;
-    hydrostatic = (gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0) || buoyancy;
+    read_body_force();
   } else {
     int other_force = 0;
     for (int ifix = 0; ifix < modify->nfix; ifix++)
@@ -359,4 +358,15 @@ void PairSPHHarmonicVisc::warn_background()
                    MAX_BACKGROUND);
     background_warned = 1;
   }
+}
+
+/* ----------------------------------------------------------------------
+   'diffusion fourtakas': the acceleration of the hydrostatic diffusion is
+   the run's body force (0 without one); hydrostatic with it or a buoyancy
+------------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::read_body_force()
+{
+  for (int k = 0; k < 3; k++) gravity[k] = body_force ? body_force[k] : 0.0;
+  hydrostatic = (gravity[0] != 0.0 || gravity[1] != 0.0 || gravity[2] != 0.0) || buoyancy;
 }
