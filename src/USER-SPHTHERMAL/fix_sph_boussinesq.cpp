@@ -11,6 +11,12 @@
    step, so that the buoyancy sums to zero: the uniform part of the body
    force, which in a closed domain only the pressure balances (and which
    compresses a weakly compressible fluid), is never applied.
+   T0 'layers': the same mean in each layer across g, linear between the
+   layers' centres. A body force that depends on the height along g alone
+   is the gradient of a potential: in an incompressible fluid only the
+   pressure changes with it, but a weakly compressible one is compressed by
+   it. Taking it out leaves the flow of the Boussinesq equations unchanged
+   and does not make a stratified fluid carry its weight by compression.
 ------------------------------------------------------------------------- */
 
 #include "fix_sph_boussinesq.h"
@@ -31,6 +37,7 @@
 #include "sph_hub.h"
 #include "sph_particle.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -50,15 +57,19 @@ static constexpr double MAX_COMPRESSION = 0.05;
 /* ---------------------------------------------------------------------- */
 
 FixSPHBoussinesq::FixSPHBoussinesq(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), gravity_keyword(0), reference_mean(0), beta(nullptr), force_summed(0),
-    zero_warned(0), compression_checked(0)
+    Fix(lmp, narg, arg), gravity_keyword(0), reference_kind(REFERENCE_GIVEN), layer_given(0.0),
+    spacing(0.0), beta(nullptr), force_summed(0), zero_warned(0), compression_checked(0)
 {
   if (!atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Fix sph/boussinesq requires atom style sph (esph, cv)");
   if (narg < 4)
-    error->all(FLERR, "Illegal {} command: expected <T0> (a temperature or 'mean')", cmd);
-  reference_mean = (strcmp(arg[3], "mean") == 0);
-  buoyancy.t0 = reference_mean ? 0.0 : utils::numeric(FLERR, arg[3], false, lmp);
+    error->all(FLERR, "Illegal {} command: expected <T0> (a temperature, 'mean' or 'layers')", cmd);
+  if (strcmp(arg[3], "mean") == 0)
+    reference_kind = REFERENCE_MEAN;
+  else if (strcmp(arg[3], "layers") == 0)
+    reference_kind = REFERENCE_LAYERS;
+  buoyancy.t0 = (reference_kind == REFERENCE_GIVEN) ? utils::numeric(FLERR, arg[3], false, lmp)
+                                                    : 0.0;
   gravity_given[0] = gravity_given[1] = gravity_given[2] = 0.0;
   int iarg = 4;
   while (iarg < narg) {
@@ -69,6 +80,16 @@ FixSPHBoussinesq::FixSPHBoussinesq(LAMMPS *lmp, int narg, char **arg) :
         gravity_given[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
       gravity_keyword = 1;
       iarg += 4;
+    } else if (strcmp(arg[iarg], "layer") == 0) {
+      if (iarg + 1 >= narg) error->all(FLERR, "Illegal {} command: 'layer' needs a thickness", cmd);
+      if (reference_kind != REFERENCE_LAYERS)
+        error->all(FLERR, "Illegal {} command: 'layer' is the thickness of T0 'layers'; T0 is {}",
+                   cmd, arg[3]);
+      layer_given = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(layer_given > 0.0) || !std::isfinite(layer_given))
+        error->all(FLERR, "Illegal {} command: 'layer {}': the thickness must be > 0", cmd,
+                   arg[iarg + 1]);
+      iarg += 2;
     } else
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
   }
@@ -83,6 +104,11 @@ FixSPHBoussinesq::FixSPHBoussinesq(LAMMPS *lmp, int narg, char **arg) :
   buoyancy.beta = beta;
   buoyancy.groupbit = groupbit;
   buoyancy.gravity = gravity_given;
+  buoyancy.nlayers = 0;
+  buoyancy.layer_t0 = nullptr;
+  buoyancy.unit[0] = buoyancy.unit[1] = buoyancy.unit[2] = 0.0;
+  buoyancy.origin = 0.0;
+  buoyancy.width = 0.0;    // set at the first update
 
   vector_flag = 1;
   size_vector = 3;
@@ -98,7 +124,7 @@ FixSPHBoussinesq::~FixSPHBoussinesq()
 
 int FixSPHBoussinesq::setmask()
 {
-  return POST_FORCE | (reference_mean ? END_OF_STEP : 0);
+  return POST_FORCE | (reference_kind != REFERENCE_GIVEN ? END_OF_STEP : 0);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -176,12 +202,15 @@ void FixSPHBoussinesq::init()
                    without, group->names[igroup]);
   SPHCheck::atom_state(lmp, FLERR, "Fix sph/boussinesq", groupbit, SPHCheck::CV);
   // before the walls and the pair read T0 in the set-up's forces
-  if (reference_mean) update_mean_reference();
+  update_reference();
   // before any wall extrapolates a pressure from the buoyancy (at set-up);
   // a fix gravity with variables sets its acceleration at its set-up first
   const int known = gravity_keyword || SPHBodyForce::constant(SPHBodyForce::source(lmp));
   if (known && !gravity_keyword)
     SPHBodyForce::check_finite(lmp, FLERR, "Fix sph/boussinesq", buoyancy.gravity);
+  // with layers the stratified part does not compress: the bound below,
+  // that of one T0, does not hold
+  if (reference_kind == REFERENCE_LAYERS) compression_checked = 1;
   if (!compression_checked && known) {
     check_compression();
     compression_checked = 1;
@@ -315,9 +344,145 @@ void FixSPHBoussinesq::update_mean_reference()
   buoyancy.t0 = t0;
 }
 
+/* ----------------------------------------------------------------------
+   T0 'layers': sum m beta T / sum m beta over the group's atoms in each
+   layer across g. The layers tile the group's extent along g, each about
+   the thickness asked for; a layer without buoyant atoms takes the value
+   of the nearest one that has some.
+------------------------------------------------------------------------- */
+
+void FixSPHBoussinesq::update_layer_reference()
+{
+  const double *const g = buoyancy.gravity;
+  const double gnorm = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  // no direction yet (a variable gravity at 0): one layer, the mean
+  if (!(gnorm > 0.0) || !std::isfinite(gnorm)) {
+    update_mean_reference();
+    buoyancy.nlayers = 0;
+    return;
+  }
+  if (!(spacing > 0.0)) spacing = mean_spacing();
+  const double thickness = layer_given > 0.0 ? layer_given : 2.0 * spacing;
+  for (int k = 0; k < 3; k++) {
+    buoyancy.unit[k] = g[k] / gnorm;
+    // a periodic image has another height: no layers along a periodic direction
+    if (buoyancy.unit[k] != 0.0 && domain->periodicity[k])
+      error->all(FLERR,
+                 "Fix sph/boussinesq: T0 layers across g = ({} {} {}) need a box that is not "
+                 "periodic along g, but it is periodic in {}",
+                 g[0], g[1], g[2], "xyz"[k]);
+  }
+  // the group's extent along g, half a spacing beyond its outer atoms: the
+  // layers then centre on the rows of a lattice that fills it
+  const double *const *const x = atom->x;
+  const int *const mask = atom->mask;
+  double local_extent[2] = {-INFINITY, -INFINITY}, extent[2];
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double along =
+        x[i][0] * buoyancy.unit[0] + x[i][1] * buoyancy.unit[1] + x[i][2] * buoyancy.unit[2];
+    local_extent[0] = fmax(local_extent[0], -along);
+    local_extent[1] = fmax(local_extent[1], along);
+  }
+  MPI_Allreduce(local_extent, extent, 2, MPI_DOUBLE, MPI_MAX, world);
+  const double lo = -extent[0] - 0.5 * spacing;
+  const double span = extent[1] + extent[0] + spacing;
+  const int n = std::max(1, (int) lround(span / thickness));
+  buoyancy.origin = lo;
+  buoyancy.width = span / n;
+  buoyancy.nlayers = n;
+
+  const SPHParticles particles(atom);
+  const int *const type = atom->type;
+  std::vector<double> local(3 * (size_t) n, 0.0), all(3 * (size_t) n);
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double along =
+        x[i][0] * buoyancy.unit[0] + x[i][1] * buoyancy.unit[1] + x[i][2] * buoyancy.unit[2];
+    const int k = std::min(n - 1, std::max(0, (int) floor((along - lo) / buoyancy.width)));
+    const double weight = particles.mass(i) * beta[type[i]];
+    local[3 * k] += weight * particles.temperature(i);
+    local[3 * k + 1] += weight;
+    local[3 * k + 2] += fabs(weight);
+  }
+  MPI_Allreduce(local.data(), all.data(), 3 * n, MPI_DOUBLE, MPI_SUM, world);
+  layer_t0.assign(n, 0.0);
+  std::vector<int> filled(n, 0);
+  double sum[3] = {0.0, 0.0, 0.0};
+  for (int k = 0; k < n; k++) {
+    for (int c = 0; c < 3; c++) sum[c] += all[3 * k + c];
+    if (fabs(all[3 * k + 1]) > 1e-10 * all[3 * k + 2]) {
+      layer_t0[k] = all[3 * k] / all[3 * k + 1];
+      filled[k] = std::isfinite(layer_t0[k]);
+    }
+  }
+  // the same condition as 'mean' on the whole group
+  const double t0 = sum[0] / sum[1];
+  if (!std::isfinite(t0) || !(fabs(sum[1]) > 1e-10 * sum[2]))
+    error->all(FLERR,
+               "Fix sph/boussinesq: T0 layers of group {}: the mean is {} (sum of m beta T {}, "
+               "of m beta {}, of m |beta| {}): the group's expansion coefficients sum to zero, "
+               "or a temperature is not finite",
+               group->names[igroup], t0, sum[0], sum[1], sum[2]);
+  // layers without buoyant atoms: the nearest filled layer's value
+  int last = -1;
+  for (int k = 0; k < n; k++) {
+    if (filled[k]) {
+      for (int e = last + 1; e < k; e++)
+        layer_t0[e] = (last < 0 || k - e < e - last) ? layer_t0[k] : layer_t0[last];
+      last = k;
+    }
+  }
+  for (int e = last + 1; e < n; e++) layer_t0[e] = layer_t0[last];
+  buoyancy.layer_t0 = layer_t0.data();
+}
+
+/* ----------------------------------------------------------------------
+   the group's mean spacing (m / rho)^(1/d); twice it is the default
+   thickness of the layers, two rows of particles (fewer atoms per layer
+   make T0 noisy, thicker ones leave more of the stratification to the
+   pressure)
+------------------------------------------------------------------------- */
+
+double FixSPHBoussinesq::mean_spacing()
+{
+  const SPHParticles particles(atom);
+  const double *const rho = atom->rho;
+  const int *const mask = atom->mask;
+  const double exponent = 1.0 / domain->dimension;
+  double local[2] = {0.0, 0.0}, all[2];
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit) || !(rho[i] > 0.0)) continue;
+    local[0] += pow(particles.mass(i) / rho[i], exponent);
+    local[1] += 1.0;
+  }
+  MPI_Allreduce(local, all, 2, MPI_DOUBLE, MPI_SUM, world);
+  const double mean = all[1] > 0.0 ? all[0] / all[1] : 0.0;
+  if (!(mean > 0.0) || !std::isfinite(mean))
+    error->all(FLERR,
+               "Fix sph/boussinesq: T0 layers: group {} has no atom with a finite mass and "
+               "density > 0 to take the layers' thickness from; give 'layer <thickness>'",
+               group->names[igroup]);
+  if (comm->me == 0)
+    utils::logmesg(lmp, "Fix sph/boussinesq: T0 by layers across g, {:.6g} thick ({})\n",
+                   layer_given > 0.0 ? layer_given : 2.0 * mean,
+                   layer_given > 0.0
+                       ? std::string("keyword 'layer'")
+                       : "twice the mean spacing of group " + std::string(group->names[igroup]));
+  return mean;
+}
+
+void FixSPHBoussinesq::update_reference()
+{
+  if (reference_kind == REFERENCE_MEAN)
+    update_mean_reference();
+  else if (reference_kind == REFERENCE_LAYERS)
+    update_layer_reference();
+}
+
 void FixSPHBoussinesq::end_of_step()
 {
-  update_mean_reference();
+  update_reference();
 }
 
 /* ---------------------------------------------------------------------- */
@@ -329,12 +494,13 @@ void FixSPHBoussinesq::post_force(int /*vflag*/)
   const int *const type = atom->type;
   const int *const mask = atom->mask;
   const double *const g = buoyancy.gravity;
-  const double t0 = buoyancy.t0;
+  const double *const *const x = atom->x;
   force_local[0] = force_local[1] = force_local[2] = 0.0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     double a[3];
-    sphb_acceleration(g, beta[type[i]], particles.temperature(i), t0, a);
+    sphb_acceleration(g, beta[type[i]], particles.temperature(i),
+                      SPHBodyForce::reference(buoyancy, x[i]), a);
     const double m = particles.mass(i);
     for (int k = 0; k < 3; k++) {
       f[i][k] += m * a[k];

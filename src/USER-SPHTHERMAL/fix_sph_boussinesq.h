@@ -15,6 +15,8 @@ FixStyle(sph/boussinesq,FixSPHBoussinesq);
 #include "fix.h"
 #include "sph_body_force.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 // Buoyancy of a fluid in the Boussinesq approximation: f = -m g beta (T - T0)
@@ -36,8 +38,12 @@ class FixSPHBoussinesq : public Fix {
  protected:
   double gravity_given[3];    // the 'gravity' keyword's vector
   int gravity_keyword;        // 1 when given
-  int reference_mean;         // T0 'mean': updated every step (update_mean_reference)
-  double *beta;               // expansion coefficient per type
+  enum { REFERENCE_GIVEN, REFERENCE_MEAN, REFERENCE_LAYERS };
+  int reference_kind;              // T0 given, 'mean' or 'layers' (updated every step)
+  double layer_given;              // the 'layer' keyword's thickness, 0 when not given
+  double spacing;                  // the group's mean spacing (T0 'layers'), 0 until known
+  std::vector<double> layer_t0;    // T0 'layers': the value at each layer's centre
+  double *beta;                    // expansion coefficient per type
   SPHBodyForce::Buoyancy buoyancy;
   double force_local[3], force_total[3];
   int force_summed;
@@ -45,6 +51,9 @@ class FixSPHBoussinesq : public Fix {
   int compression_checked;    // check_compression() done (at the first setup)
   void check_compression();
   void update_mean_reference();
+  void update_layer_reference();
+  void update_reference();
+  double mean_spacing();
 };
 
 }    // namespace LAMMPS_NS

@@ -281,7 +281,7 @@ void FixSPHWallAdami::pre_force_walls()
                                          thermal_expansion ? particles.temperature(j) : 0.0);
     double accel[3];
     SPHBodyForce::acceleration(body, buoyancy, mask[j], type[j],
-                               buoyancy ? particles.temperature(j) : 0.0, accel);
+                               buoyancy ? particles.temperature(j) : 0.0, atom->x[j], accel);
     for (int k = 0; k < 3; k++) fluid_rho_accel[3 * (size_t) m + k] = rho[j] * accel[k];
   }
   for (int i = 0; i < atom->nlocal; i++) {

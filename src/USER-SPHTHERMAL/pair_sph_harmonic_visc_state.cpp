@@ -213,7 +213,8 @@ void PairSPHHarmonicVisc::update_atom_state()
     body_accel.resize(3 * (size_t) nall);
     for (int i = 0; i < nall; i++)
       SPHBodyForce::acceleration(gravity, buoyancy, mask[i], type[i],
-                                 buoyancy ? temperature[i] : 0.0, &body_accel[3 * (size_t) i]);
+                                 buoyancy ? temperature[i] : 0.0, atom->x[i],
+                                 &body_accel[3 * (size_t) i]);
   }
   pvector[0] = mean_pressure_held ? hold_mean_pressure() : 0.0;
 }

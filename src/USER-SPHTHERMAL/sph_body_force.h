@@ -21,26 +21,46 @@ class Fix;
 namespace SPHBodyForce {
 
   // The buoyancy of fix sph/boussinesq: a = -g beta(type) (T - T0) on the
-  // atoms of its group (sph_buoyancy.h), valid for the fix's lifetime.
+  // atoms of its group (sph_buoyancy.h), valid for the fix's lifetime. T0 is
+  // one temperature, or (nlayers > 0) a function of the height along g:
+  // linear between the values at the layers' centres, and in the outer half
+  // of the first and last layer.
   struct Buoyancy {
-    const double *gravity;    // g: the fix's own vector or fix gravity's
-    double t0;                // reference temperature
-    const double *beta;       // expansion coefficient per type (1..ntypes)
-    int groupbit;             // the buoyant atoms
+    const double *gravity;     // g: the fix's own vector or fix gravity's
+    double t0;                 // reference temperature (nlayers == 0)
+    const double *beta;        // expansion coefficient per type (1..ntypes)
+    int groupbit;              // the buoyant atoms
+    int nlayers;               // T0 by layers: their number, 0 for one T0
+    const double *layer_t0;    // T0 at the centre of each layer
+    double unit[3];            // direction of g
+    double origin, width;      // layer k spans origin + [k, k + 1) width along unit
   };
+
+  // T0 at position x
+  inline double reference(const Buoyancy &b, const double x[3])
+  {
+    if (b.nlayers == 0) return b.t0;
+    const double along = x[0] * b.unit[0] + x[1] * b.unit[1] + x[2] * b.unit[2];
+    if (b.nlayers == 1) return b.layer_t0[0];
+    const double c = (along - b.origin) / b.width - 0.5;
+    // the outer half layers continue their neighbours' line
+    const int k = c < 1.0 ? 0 : (c >= b.nlayers - 2 ? b.nlayers - 2 : (int) c);
+    const double frac = c - k;
+    return (1.0 - frac) * b.layer_t0[k] + frac * b.layer_t0[k + 1];
+  }
 
   // the body acceleration an atom feels: 'body' (fix gravity's, or a
   // style's given vector) plus the buoyancy when the atom is buoyant
-  // ('buoyancy' may be nullptr); t is its temperature
+  // ('buoyancy' may be nullptr); t is its temperature, x its position
   inline void acceleration(const double body[3], const Buoyancy *buoyancy, int mask, int type,
-                           double t, double a[3])
+                           double t, const double x[3], double a[3])
   {
     a[0] = body[0];
     a[1] = body[1];
     a[2] = body[2];
     if (!buoyancy || !(mask & buoyancy->groupbit)) return;
     double b[3];
-    sphb_acceleration(buoyancy->gravity, buoyancy->beta[type], t, buoyancy->t0, b);
+    sphb_acceleration(buoyancy->gravity, buoyancy->beta[type], t, reference(*buoyancy, x), b);
     for (int k = 0; k < 3; k++) a[k] += b[k];
   }
 

@@ -77,3 +77,4 @@ sphthermal_state_test(convection.mirror.skin same ${cavity_small}
 
 # fix sph/boussinesq T0 'mean': the buoyancy sums to zero while the fluid warms
 sphthermal_python_test(convection.boussinesq.mean convection/test_boussinesq_mean.py LAMMPS LABELS unit)
+sphthermal_python_test(convection.boussinesq.layers convection/test_boussinesq_layers.py LAMMPS LABELS unit)
