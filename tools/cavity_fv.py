@@ -39,7 +39,10 @@ quartic through the largest grid value and two neighbours on each side.
 As a module: solve(ra, pr=0.71, n=64, stretch=1.5, ...) returns a dict (see
 solve), profiles_at(result, xs) interpolates theta and v on y = 0.5 at
 arbitrary x, richardson(ra, pr, n, ...) solves on N/4, N/2, N and estimates
-the error of the N result. As a script, see --help.
+the error of the N result (extrapolate(a, b, c) is its Richardson step).
+Grid also takes heated plates, a rectangle and free-slip sides, and march()
+integrates any Grid in time: rb_fv.py (Rayleigh-Benard rolls) uses both.
+As a script, see --help.
 """
 
 import argparse
@@ -67,20 +70,22 @@ LAYOUT = ("hmid: y = 0.5, x at the cell centres plus both walls; vmid: x = 0.5, 
 # --------------------------------------------------------------------- grid
 
 class Axis:
-    """One direction of the grid: faces f (n + 1), centres c (n), widths d (n)
-    and the centre-to-centre distances h (n + 1), half cells at the walls."""
+    """One direction of the grid, [0, length]: faces f (n + 1), centres c (n),
+    widths d (n) and the centre-to-centre distances h (n + 1), half cells at
+    the walls."""
 
-    def __init__(self, n, stretch):
+    def __init__(self, n, stretch, length=1.0):
         s = np.linspace(0.0, 1.0, n + 1)
         if stretch > 0:
             f = 0.5 * (1.0 + np.tanh(stretch * (2.0 * s - 1.0)) / math.tanh(stretch))
         else:
             f = s.copy()
-        f[0], f[-1] = 0.0, 1.0
-        self.n, self.f = n, f
+        f = f * length
+        f[0], f[-1] = 0.0, length
+        self.n, self.f, self.length = n, f, length
         self.c = 0.5 * (f[:-1] + f[1:])
         self.d = np.diff(f)
-        self.h = np.diff(np.concatenate(([0.0], self.c, [1.0])))
+        self.h = np.diff(np.concatenate(([0.0], self.c, [length])))
         one = np.ones(n)
         # cells <- interior faces: face i+1 minus face i (wall faces are 0)
         self.div = sp.diags([one[:n - 1], -one[:n - 1]], [0, -1], shape=(n, n - 1), format="csr")
@@ -110,71 +115,93 @@ class Axis:
 
 
 class Grid:
-    """Square N x N staggered grid; unknown vector q = [u, v, p, theta] with
-    u[(N-1), N] on the interior vertical faces (x = f[1:-1], y = c),
-    v[N, (N-1)] on the interior horizontal faces (x = c, y = f[1:-1]),
-    p[N, N] and theta[N, N] at the centres; arrays indexed [i_x, j_y]."""
+    """Staggered grid of nx x n cells on [0, width] x [0, 1]; unknown vector
+    q = [u, v, p, theta] with u[(nx-1), n] on the interior vertical faces
+    (x = f[1:-1], y = c), v[nx, (n-1)] on the interior horizontal faces
+    (x = c, y = f[1:-1]), p[nx, n] and theta[nx, n] at the centres; arrays
+    indexed [i_x, j_y]. Every wall has u.n = 0.
 
-    def __init__(self, n, stretch):
-        if n < 4:
+    heated = "sides": theta = 1 on x = 0, 0 on x = width, top and bottom
+    adiabatic (the cavity); "plates": theta = 1 on y = 0, 0 on y = 1, the
+    sides adiabatic (a Rayleigh-Benard cell). slip_sides: the side walls
+    x = 0, width are free-slip (dv/dx = 0) instead of no-slip; top and
+    bottom are always no-slip. stretch_x: the map's b in x (default stretch)."""
+
+    def __init__(self, n, stretch, heated="sides", nx=None, width=1.0, stretch_x=None, slip_sides=False):
+        nx = n if nx is None else nx
+        if min(n, nx) < 4:
             raise ValueError("need at least 4 cells per side")
-        self.n, self.stretch = n, stretch
-        self.ax = ax = Axis(n, stretch)
+        if heated not in ("sides", "plates"):
+            raise ValueError("heated is 'sides' or 'plates'")
+        self.n, self.nx, self.stretch, self.heated = n, nx, stretch, heated
+        self.slip_sides = slip_sides
+        self.ax = ax = Axis(nx, stretch if stretch_x is None else stretch_x, width)
         self.ay = ay = Axis(n, stretch)
-        nu, nc = (n - 1) * n, n * n
-        self.sizes = (nu, nu, nc, nc)
+        ny = n
+        nu, nv, nc = (nx - 1) * ny, nx * (ny - 1), nx * ny
+        self.sizes = (nu, nv, nc, nc)
         self.offsets = np.cumsum((0,) + self.sizes)
-        In, Im = sp.identity(n, format="csr"), sp.identity(n - 1, format="csr")
+        I = lambda m: sp.identity(m, format="csr")  # noqa: E731,E741
+        Inx, Imx, Iny, Imy = I(nx), I(nx - 1), I(ny), I(ny - 1)
         K = lambda a, b: sp.kron(a, b, format="csr")  # noqa: E731
 
         # control-volume areas
         self.area_u = np.outer(ax.h[1:-1], ay.d).ravel()
         self.area_v = np.outer(ax.d, ay.h[1:-1]).ravel()
         self.area_c = np.outer(ax.d, ay.d).ravel()
-        dy_u = np.outer(np.ones(n - 1), ay.d).ravel()     # face length of a u face
-        dx_v = np.outer(ax.d, np.ones(n - 1)).ravel()     # face length of a v face
-        dy_c = np.outer(np.ones(n), ay.d).ravel()
-        dx_c = np.outer(ax.d, np.ones(n)).ravel()
+        dy_u = np.outer(np.ones(nx - 1), ay.d).ravel()    # face length of a u face
+        dx_v = np.outer(ax.d, np.ones(ny - 1)).ravel()    # face length of a v face
+        dy_c = np.outer(np.ones(nx), ay.d).ravel()
+        dx_c = np.outer(ax.d, np.ones(ny)).ravel()
         D = sp.diags
 
         # u momentum: x fluxes at the cell centres, y fluxes at the nodes
-        self.u_to_c = K(ax.f2c, In)                       # u -> centres (n, n)
-        self.u_xflux_div = K(ax.grad, In) @ D(dy_c)       # centres -> u CVs
-        self.v_to_node_mass = K(ax.c2f_len, Im)           # v -> nodes (n-1, n-1)
-        self.u_to_node = K(Im, ay.c2f)                    # u -> nodes
-        self.u_yflux_div = K(Im, ay.div)                  # nodes -> u CVs
-        self.u_grad_p = D(dy_u) @ K(ax.grad, In)
-        self.u_visc = (D(dy_u) @ K(ax.lap_faces, In)
-                       + D(np.outer(ax.h[1:-1], np.ones(n)).ravel()) @ K(Im, ay.lap_dirichlet))
-        # v momentum
-        self.v_to_c = K(In, ay.f2c)
-        self.v_yflux_div = K(In, ay.grad) @ D(dx_c)
-        self.u_to_node_mass = K(Im, ay.c2f_len)
-        self.v_to_node = K(ax.c2f, Im)
-        self.v_xflux_div = K(ax.div, Im)
-        self.v_grad_p = D(dx_v) @ K(In, ay.grad)
-        self.v_visc = (D(np.outer(np.ones(n), ay.h[1:-1]).ravel()) @ K(ax.lap_dirichlet, Im)
-                       + D(dx_v) @ K(In, ay.lap_faces))
-        self.t_to_v = D(self.area_v) @ K(In, ay.c2f)      # buoyancy, integrated
+        self.u_to_c = K(ax.f2c, Iny)                      # u -> centres (nx, ny)
+        self.u_xflux_div = K(ax.grad, Iny) @ D(dy_c)      # centres -> u CVs
+        self.v_to_node_mass = K(ax.c2f_len, Imy)          # v -> nodes (nx-1, ny-1)
+        self.u_to_node = K(Imx, ay.c2f)                   # u -> nodes
+        self.u_yflux_div = K(Imx, ay.div)                 # nodes -> u CVs
+        self.u_grad_p = D(dy_u) @ K(ax.grad, Iny)
+        self.u_visc = (D(dy_u) @ K(ax.lap_faces, Iny)
+                       + D(np.outer(ax.h[1:-1], np.ones(ny)).ravel()) @ K(Imx, ay.lap_dirichlet))
+        # v momentum; a free-slip side wall passes no shear stress (Neumann)
+        self.v_to_c = K(Inx, ay.f2c)
+        self.v_yflux_div = K(Inx, ay.grad) @ D(dx_c)
+        self.u_to_node_mass = K(Imx, ay.c2f_len)
+        self.v_to_node = K(ax.c2f, Imy)
+        self.v_xflux_div = K(ax.div, Imy)
+        self.v_grad_p = D(dx_v) @ K(Inx, ay.grad)
+        lap_vx = ax.lap_neumann if slip_sides else ax.lap_dirichlet
+        self.v_visc = (D(np.outer(np.ones(nx), ay.h[1:-1]).ravel()) @ K(lap_vx, Imy)
+                       + D(dx_v) @ K(Inx, ay.lap_faces))
+        self.t_to_v = D(self.area_v) @ K(Inx, ay.c2f)     # buoyancy, integrated
         # continuity (integrated divergence) = -(pressure gradient)^T
-        self.div_u = D(dy_c) @ K(ax.div, In)
-        self.div_v = D(dx_c) @ K(In, ay.div)
+        self.div_u = D(dy_c) @ K(ax.div, Iny)
+        self.div_v = D(dx_c) @ K(Inx, ay.div)
         # energy
-        self.t_to_u = K(ax.c2f, In)
-        self.t_xflux_div = K(ax.div, In) @ D(dy_u)
-        self.t_to_v_face = K(In, ay.c2f)
-        self.t_yflux_div = K(In, ay.div) @ D(dx_v)
-        self.t_diff = D(dy_c) @ K(ax.lap_dirichlet, In) + D(dx_c) @ K(In, ay.lap_neumann)
-        bx = np.zeros(n)
-        bx[0] = 1.0 / ax.h[0]              # theta = 1 on the hot wall x = 0 (0 on x = 1)
-        self.t_diff_b = (np.outer(bx, ay.d)).ravel()
+        self.t_to_u = K(ax.c2f, Iny)
+        self.t_xflux_div = K(ax.div, Iny) @ D(dy_u)
+        self.t_to_v_face = K(Inx, ay.c2f)
+        self.t_yflux_div = K(Inx, ay.div) @ D(dx_v)
+        plates = heated == "plates"
+        self.t_diff = (D(dy_c) @ K(ax.lap_neumann if plates else ax.lap_dirichlet, Iny)
+                       + D(dx_c) @ K(Inx, ay.lap_dirichlet if plates else ay.lap_neumann))
+        # theta = 1 on the hot wall (x = 0 or y = 0), 0 on the opposite one
+        if plates:
+            by = np.zeros(ny)
+            by[0] = 1.0 / ay.h[0]
+            self.t_diff_b = np.outer(ax.d, by).ravel()
+        else:
+            bx = np.zeros(nx)
+            bx[0] = 1.0 / ax.h[0]
+            self.t_diff_b = np.outer(bx, ay.d).ravel()
         self.mass = np.concatenate((self.area_u, self.area_v, np.zeros(nc), self.area_c))
         self.pin = self.offsets[2]         # p of cell (0, 0) is held at 0
 
     def split(self, q):
-        o, n = self.offsets, self.n
-        return (q[o[0]:o[1]].reshape(n - 1, n), q[o[1]:o[2]].reshape(n, n - 1),
-                q[o[2]:o[3]].reshape(n, n), q[o[3]:o[4]].reshape(n, n))
+        o, nx, ny = self.offsets, self.nx, self.n
+        return (q[o[0]:o[1]].reshape(nx - 1, ny), q[o[1]:o[2]].reshape(nx, ny - 1),
+                q[o[2]:o[3]].reshape(nx, ny), q[o[3]:o[4]].reshape(nx, ny))
 
     def residual(self, q, ra, pr, jacobian=True):
         """Integrated residuals of the four equations, and the Jacobian."""
@@ -225,8 +252,11 @@ class Grid:
     def conduction(self):
         """Rest, linear theta: the Ra = 0 solution (also the exact p = 0)."""
         q = np.zeros(self.offsets[-1])
-        t = np.outer(1.0 - self.ax.c, np.ones(self.n)).ravel()
-        q[self.offsets[3]:] = t
+        if self.heated == "plates":
+            t = np.outer(np.ones(self.nx), 1.0 - self.ay.c)
+        else:
+            t = np.outer(1.0 - self.ax.c / self.ax.length, np.ones(self.n))
+        q[self.offsets[3]:] = t.ravel()
         return q
 
     def uniform(self, value):
@@ -237,17 +267,23 @@ class Grid:
     def padded(self, q):
         """Fields with their wall values, for interpolation: ((x, y, values), ...)."""
         u, v, p, t = self.split(q)
-        ax, ay, n = self.ax, self.ay, self.n
-        yc_w = np.concatenate(([0.0], ay.c, [1.0]))
-        xc_w = np.concatenate(([0.0], ax.c, [1.0]))
-        uf = np.zeros((n + 1, n + 2))
+        ax, ay, nx, ny = self.ax, self.ay, self.nx, self.n
+        yc_w = np.concatenate(([0.0], ay.c, [ay.length]))
+        xc_w = np.concatenate(([0.0], ax.c, [ax.length]))
+        uf = np.zeros((nx + 1, ny + 2))
         uf[1:-1, 1:-1] = u
-        vf = np.zeros((n + 2, n + 1))
+        vf = np.zeros((nx + 2, ny + 1))
         vf[1:-1, 1:-1] = v
-        tf = np.empty((n + 2, n + 2))
+        if self.slip_sides:
+            vf[0, 1:-1], vf[-1, 1:-1] = v[0, :], v[-1, :]
+        tf = np.empty((nx + 2, ny + 2))
         tf[1:-1, 1:-1] = t
-        tf[0, :], tf[-1, :] = 1.0, 0.0
-        tf[1:-1, 0], tf[1:-1, -1] = t[:, 0], t[:, -1]
+        if self.heated == "plates":
+            tf[:, 0], tf[:, -1] = 1.0, 0.0
+            tf[0, 1:-1], tf[-1, 1:-1] = t[0, :], t[-1, :]
+        else:
+            tf[0, :], tf[-1, :] = 1.0, 0.0
+            tf[1:-1, 0], tf[1:-1, -1] = t[:, 0], t[:, -1]
         return ((ax.f, yc_w, uf), (xc_w, ay.f, vf), (ax.c, ay.c, p), (xc_w, yc_w, tf))
 
     def prolong(self, coarse, qc):
@@ -470,7 +506,22 @@ def transient(ra, pr=0.71, n=32, t_end=0.5, dt=1e-3, stretch=1.5, tol=1e-9, thet
     backward Euler) with a fixed step dt; returns the dict of solve at t_end
     with the time as 't'."""
     grid = Grid(n, stretch)
-    q = grid.uniform(theta0)
+    report = None
+    if verbose:
+        def report(t, q):
+            res = analyse(grid, q, ra, pr)
+            print(f"#   t {t:.4g}: Nu hot {res['nu_mean_hot']:.5f} cold {res['nu_mean_cold']:.5f}",
+                  file=sys.stderr)
+    q = march(grid, grid.uniform(theta0), ra, pr, t_end, dt, tol, report)
+    res = analyse(grid, q, ra, pr)
+    res["t"] = float(t_end)
+    return res
+
+
+def march(grid, q, ra, pr, t_end, dt, tol=1e-9, report=None):
+    """Integrate the solution q on grid over the time t_end by BDF2 (first
+    step backward Euler) with a fixed step near dt, Newton per step; returns
+    the final q. report(t, q), if given, is called ten times on the way."""
     M = sp.diags(grid.mass)
     steps = max(1, int(math.ceil(t_end / dt - 1e-9)))
     dt = t_end / steps
@@ -491,13 +542,9 @@ def transient(ra, pr=0.71, n=32, t_end=0.5, dt=1e-3, stretch=1.5, tol=1e-9, thet
         else:
             raise NoConvergence(f"time step {k} did not converge")
         q_old, q = q, qn
-        if verbose and (k + 1) % max(1, steps // 10) == 0:
-            res = analyse(grid, q, ra, pr)
-            print(f"#   t {(k + 1) * dt:.4g}: Nu hot {res['nu_mean_hot']:.5f} cold {res['nu_mean_cold']:.5f}",
-                  file=sys.stderr)
-    res = analyse(grid, q, ra, pr)
-    res["t"] = float(t_end)
-    return res
+        if report is not None and (k + 1) % max(1, steps // 10) == 0:
+            report((k + 1) * dt, q)
+    return q
 
 
 def profiles_at(result, xs):
@@ -530,14 +577,23 @@ def richardson(ra, pr=0.71, n=128, stretch=1.5, tol=1e-9, n_start=32, verbose=Fa
     f1, f2, f3 = (grids[n // 4], grids[n // 2], grids[n])
     table = {}
     for key in QUANTITIES:
-        a, b, c = f1[key], f2[key], f3[key]
-        order = float("nan")
-        if (b - a) * (c - b) > 0 and c != b:
-            order = math.log((b - a) / (c - b)) / math.log(2.0)
-        p = order if 1.0 < order < 4.0 else 2.0
-        extra = c + (c - b) / (2.0 ** p - 1.0)
+        c = f3[key]
+        extra, order = extrapolate(f1[key], f2[key], c)
         table[key] = (c, extra, c - extra, order)
     return grids, table
+
+
+def extrapolate(a, b, c):
+    """Richardson extrapolation of the values a, b, c on grids of spacing
+    4h, 2h, h: returns (extrapolated value, observed order). The observed
+    order p = log2((b - a) / (c - b)) is used when 1 < p < 4, else 2 (the
+    scheme's), so that a noisy or non-monotone sequence is not extrapolated
+    with a wild exponent; the order is nan when the sequence is not monotone."""
+    order = float("nan")
+    if (b - a) * (c - b) > 0 and c != b:
+        order = math.log((b - a) / (c - b)) / math.log(2.0)
+    p = order if 1.0 < order < 4.0 else 2.0
+    return c + (c - b) / (2.0 ** p - 1.0), order
 
 
 def to_json(result):

@@ -6,6 +6,9 @@ add_error_cases(convection convection/errors.in)
 sphthermal_python_test(convection.reference.rb_linear tools/test_rb_linear.py LABELS unit)
 # the reference of the heated cavity (steady Boussinesq finite volumes)
 sphthermal_python_test(convection.reference.cavity_fv tools/test_cavity_fv.py LABELS unit)
+# the reference of steady Rayleigh-Benard rolls (the same finite volumes, one roll
+# between free-slip sides): conduction below onset, the onset of rb_linear, Nu at 1e4
+sphthermal_python_test(convection.reference.rb_fv tools/test_rb_fv.py LABELS unit)
 # mirror walls: exact for linear fields, energy kept, Nu = 1 without buoyancy
 foreach(check linear conserve)
   sphthermal_python_test(convection.adiabatic.${check} convection/test_walls.py LAMMPS
