@@ -9,6 +9,10 @@
         that bracket the onset and narrows the bracket on the sign of the
         measured growth rate; prints each step, the onset estimate and its
         error against the linear theory; writes a PNG
+    analyse.py nu log.rb [log.rb ...] [--from 0.4] [--out FILE]
+        convection above onset: the mean Nusselt number of each log (both
+        plates, over t >= FROM) against the steady rolls of tools/rb_fv.py
+        (its results file), and the drift of the fluid's mean density
 
 The growth rate of the perturbation's kinetic energy KE ~ exp(2 sigma t):
 sigma = 0.5 d ln(KE)/dt, fitted by least squares over the thermo rows of
@@ -38,6 +42,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 import rb_linear
+import rb_fv
 from sphthermal_tools.log import longest_thermo_table
 
 
@@ -101,6 +106,46 @@ def cmd_fit(args):
         ra_c = linear_theory(1.0, 1.0, widths.pop())[1]
         print(f"onset between Ra {r0:g} and {r1:g}: {est:.1f}, linear theory {ra_c:.2f}, "
               f"error {100.0 * (est / ra_c - 1.0):+.2f} %")
+    return 0
+
+
+def cmd_nu(args):
+    """Mean Nu over t >= args.start of each log against the reference."""
+    reference = rb_fv.read_results(args.reference)
+    lines = ["| Ra | particles per H | mean Nu (hot, cold) | reference | error | "
+             "std of Nu | mean density, start -> end | steps |",
+             "|---|---|---|---|---|---|---|---|"]
+    worst = 0.0
+    for log in args.logs:
+        ra, pr, width = run_parameters(log)
+        n = int(re.search(r"x (\d+) fluid particles", open(log).read()).group(1))
+        table = thermo_table(log)
+        t = table["Time"]
+        use = t >= args.start
+        if use.sum() < 3:
+            sys.exit(f"analyse: {log} has fewer than 3 thermo rows at t >= {args.start}")
+        hot, cold = table["c_nu_hot[1]"][use], table["c_nu_cold[1]"][use]
+        nu = 0.5 * (hot.mean() + cold.mean())
+        key = min(reference, key=lambda k: abs(k[0] / ra - 1) + abs(k[1] - pr) + abs(k[2] - width))
+        if abs(key[0] / ra - 1) > 1e-6 or abs(key[1] - pr) > 1e-9 or abs(key[2] - width) > 1e-9:
+            sys.exit(f"analyse: no reference for Ra {ra:g}, Pr {pr:g}, W {width:g} in {args.reference}")
+        ref, ref_err = reference[key]["nu"]
+        err = 100.0 * (nu / ref - 1.0)
+        worst = max(worst, abs(err))
+        rho = table["c_rhoave"]
+        lines.append(f"| {ra:g} | {n} | {nu:.4f} ({hot.mean():.4f}, {cold.mean():.4f}) | "
+                     f"{ref:.4f} +- {ref_err:.1g} | {err:+.2f} % | {np.std(0.5 * (hot + cold)):.4f} | "
+                     f"{rho[0]:.5f} -> {rho[-1]:.5f} (t = {t[-1]:.3g}) | {int(table['Step'][-1])} |")
+    text = "\n".join(lines) + "\n"
+    print(f"mean Nu over t >= {args.start:g} (H^2/alpha) against tools/rb_fv.py")
+    print(text, end="")
+    if args.out:
+        with open(args.out, "w") as f:
+            f.write(f"# analyse.py nu --from {args.start:g}: mean Nu of in.rb above onset "
+                    f"against tools/rb_fv.py\n{text}")
+    if args.max_error is not None and worst > args.max_error:
+        print(f"FAIL: |Nu error| {worst:.2f} % > {args.max_error} %")
+        return 1
     return 0
 
 
@@ -260,9 +305,18 @@ def main():
     o.add_argument("--out", default=".", help="directory of the logs and the PNG")
     o.add_argument("--png", default="onset.png")
     o.add_argument("--max-error", type=float, help="fail (exit 1) above this onset error, %%")
+    u = sub.add_parser("nu", help="mean Nu of logs above onset against tools/rb_fv.py")
+    u.add_argument("logs", nargs="+")
+    u.add_argument("--from", dest="start", type=float, default=0.4,
+                   help="average over t >= FROM (default 0.4 H^2/alpha)")
+    u.add_argument("--reference", default=os.path.join(ROOT, "tools", "rb_fv_results.txt"))
+    u.add_argument("--out", help="write the table to this file")
+    u.add_argument("--max-error", type=float, help="fail (exit 1) above this |Nu error|, %%")
     args = p.parse_args()
     if args.mode == "fit":
         return cmd_fit(args)
+    if args.mode == "nu":
+        return cmd_nu(args)
     if args.pr != 0.71:
         args.var = (args.var or []) + [f"pr={args.pr:g}"]
     return cmd_onset(args)

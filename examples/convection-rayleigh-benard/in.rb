@@ -53,6 +53,11 @@ variable init    index hydrostatic
 variable every   index 100
 variable out     index rb.dump
 variable dump    index no
+variable t0      index 0.5
+variable gradient index none
+variable conduction index "mean harmonic"
+variable shift   index 0
+variable continuity index no
 
 variable has_plugin equal is_file(${plugin})
 if "${has_plugin}" then "plugin load ${plugin}" &
@@ -109,7 +114,7 @@ variable        rhoinit atom 1.0+(y/2.0-y*y/2.0-1.0/12.0)*v_g/(v_c0*v_c0)
 if "${init} == hydrostatic" then "set group fluid sph/rho v_rhoinit"
 
 pair_style      hybrid/overlay sph/harmonic/visc ${kernel} ${cut} eta ${eta} delta ${delta} pressure ${pform} &
-                sph/cleary/heat same eta ${eta}
+                correction ${gradient} sph/cleary/heat same eta ${eta} ${conduction}
 pair_coeff      * * sph/harmonic/visc
 pair_coeff      * * sph/cleary/heat
 neighbor        $(0.2*v_dx) bin
@@ -118,8 +123,9 @@ neigh_modify    delay 0 every 1 check yes exclude type 2 2
 fix             flow_walls wall sph/wall/adami
 fix             hot hot sph/wall/dirichlet 1.0 surface layer
 fix             cold cold sph/wall/dirichlet 0.0 surface layer
-fix             buoyancy fluid sph/boussinesq 0.5 gravity 0.0 -${g} 0.0
+fix             buoyancy fluid sph/boussinesq ${t0} gravity 0.0 -${g} 0.0
 fix             integrate fluid sph
+if "${shift} > 0" then "fix shift fluid sph/shift skillen ${shift} continuity ${continuity}"
 fix             dt fluid sph/dt/reset 1 acoustic ${cac}
 
 # Nu of the plates from the heat they give (hot) and take up (cold): 1 in
