@@ -9,10 +9,12 @@
         that bracket the onset and narrows the bracket on the sign of the
         measured growth rate; prints each step, the onset estimate and its
         error against the linear theory; writes a PNG
-    analyse.py nu log.rb [log.rb ...] [--from 0.4] [--out FILE]
+    analyse.py nu [log.rb ...] [--run RA ...] [--from 0.4] [--out FILE]
         convection above onset: the mean Nusselt number of each log (both
         plates, over t >= FROM) against the steady rolls of tools/rb_fv.py
-        (its results file), and the drift of the fluid's mean density
+        (its results file), and the drift of the fluid's mean density;
+        --run first runs in.rb with 'settings convection' at each RA (--n,
+        --tend; LAMMPS from $LMP, the plugin from $PLUGIN, logs in --dir)
 
 The growth rate of the perturbation's kinetic energy KE ~ exp(2 sigma t):
 sigma = 0.5 d ln(KE)/dt, fitted by least squares over the thermo rows of
@@ -111,6 +113,14 @@ def cmd_fit(args):
 
 def cmd_nu(args):
     """Mean Nu over t >= args.start of each log against the reference."""
+    for ra in args.run or []:
+        args.eps, args.width = 1e-2, 2.0
+        args.var = (args.var or []) + ["settings=convection"]
+        log, wall = run_lammps(ra, args, args.dir, args.tend)
+        print(f"Ra = {ra:g}, {args.n} per H, to t = {args.tend:g}: {wall:.0f} s ({log})", flush=True)
+        args.logs.append(log)
+    if not args.logs:
+        sys.exit("analyse: nu needs logs or --run")
     reference = rb_fv.read_results(args.reference)
     lines = ["| Ra | particles per H | mean Nu (hot, cold) | reference | error | "
              "std of Nu | mean density, start -> end | steps |",
@@ -149,12 +159,13 @@ def cmd_nu(args):
     return 0
 
 
-def run_lammps(ra, args, outdir):
-    """Runs in.rb at ra; returns (log path, wall time in s)."""
+def run_lammps(ra, args, outdir, tend=None):
+    """Runs in.rb at ra to tend (default the fit window's end); returns (log
+    path, wall time in s)."""
     log = os.path.join(outdir, f"log.rb.w{args.width:g}.n{args.n}.{ra:.2f}")
     cmd = [args.lmp, "-in", os.path.join(HERE, "in.rb"), "-var", "plugin", args.plugin,
            "-var", "ra", f"{ra:.6g}", "-var", "width", f"{args.width:g}",
-           "-var", "n", str(args.n), "-var", "tend", f"{args.window[1]:g}",
+           "-var", "n", str(args.n), "-var", "tend", f"{tend if tend else args.window[1]:g}",
            "-var", "eps", f"{args.eps:g}", "-log", log, "-screen", "none"]
     for kv in args.var or []:
         cmd += ["-var"] + kv.split("=", 1)
@@ -306,7 +317,15 @@ def main():
     o.add_argument("--png", default="onset.png")
     o.add_argument("--max-error", type=float, help="fail (exit 1) above this onset error, %%")
     u = sub.add_parser("nu", help="mean Nu of logs above onset against tools/rb_fv.py")
-    u.add_argument("logs", nargs="+")
+    u.add_argument("logs", nargs="*")
+    u.add_argument("--run", type=float, nargs="+", metavar="RA", help="run in.rb at these Ra first")
+    u.add_argument("--n", type=int, default=20, help="particles per H (--run)")
+    u.add_argument("--tend", type=float, default=0.8, help="end time (--run)")
+    u.add_argument("--dir", default=".", help="directory of the logs (--run)")
+    u.add_argument("--var", action="append", metavar="NAME=VALUE", help="more -var for in.rb (--run)")
+    u.add_argument("--lmp", default=os.environ.get("LMP", os.path.join(ROOT, "build", "lmp")))
+    u.add_argument("--plugin", default=os.environ.get("PLUGIN",
+                                                      os.path.join(ROOT, "build", "sphthermalplugin.so")))
     u.add_argument("--from", dest="start", type=float, default=0.4,
                    help="average over t >= FROM (default 0.4 H^2/alpha)")
     u.add_argument("--reference", default=os.path.join(ROOT, "tools", "rb_fv_results.txt"))

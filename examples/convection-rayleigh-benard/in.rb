@@ -1,4 +1,4 @@
-# Rayleigh-Benard onset: a fluid layer of height H = 1 between two no-slip,
+# Rayleigh-Benard convection: a fluid layer of height H = 1 between two no-slip,
 # isothermal plates (bottom y = 0 at T = 1, top y = H at T = 0), periodic
 # in x with width W (default 2H), Pr = 0.71, Boussinesq buoyancy. It starts
 # in the conduction state T = 1 - y plus a small perturbation
@@ -23,16 +23,33 @@
 #   (its pressure form), cac (acoustic coefficient of fix sph/dt/reset), init
 #   (hydrostatic: the density of the conduction state's pressure; uniform:
 #   rho0 everywhere), every (thermo), dump (yes: write the fluid to the
-#   file out at the end).
+#   file out at the end), t0 (T0 of fix sph/boussinesq: 0.5 or layers),
+#   gradient (correction of the flow pair), conduction (keywords of the heat
+#   pair), shift (skillen coefficient, 0: none), continuity (of the shift).
+# settings = onset (the defaults below) or convection: above onset, to a
+#   steady state (t = 0.8), with the flagship cavity's settings (without
+#   the background pressure particles entered the plates at 10 and 16 per H
+#   and lost the run at 20 and 30), and T0 by layers, so that the conduction
+#   state is not compressed and the run starts from the rest density
+#   ('run.sh nu').
 # Defaults and why (README.md): cfac 5, so that c0^2 = 100 times the
 #   pressure difference of the conduction state, g/8 (density range 0.9 %);
 #   at cfac 10 the run goes unstable with cac 0.1 (stable with cac 0.05).
 #   bg 0: a background pressure slows the growth (it stiffens the particle
 #   lattice: bg 0.01 at cfac 5 gave sigma 5.9 instead of 7.5 at Ra 3000).
-#   delta 0: without fix gravity the pair's density diffusion is Molteni's,
-#   which flattens the hydrostatic density of the conduction state.
+#   delta 0: the density diffusion slowed the growth of the perturbation,
+#   measured with Molteni's form, which flattened the hydrostatic density of
+#   the conduction state (the pair's Fourtakas form now reads the buoyancy).
 
 variable plugin  index ../../build/sphthermalplugin.so
+variable settings index onset
+if "${settings} == convection" then &
+  "variable tend index 0.8" "variable kemax index 1e30" "variable delta index 0.1" &
+  "variable init index uniform" "variable t0 index layers" "variable gradient index gradient" &
+  "variable conduction index 'correction consistent'" "variable shift index 2" &
+  "variable continuity index yes" "variable every index 200" "variable bg index 0.1" &
+elif "${settings} != onset" then &
+  "print 'ERROR: settings ${settings}: onset or convection'" "quit 1"
 variable ra      index 3000
 variable pr      index 0.71
 variable n       index 20

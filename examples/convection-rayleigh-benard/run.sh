@@ -20,20 +20,10 @@ here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../common.sh"
 
 if [ "${1:-}" = nu ]; then
-  N=${N:-20}
-  logs=""
-  for ra in ${RA:-1e4 2e4}; do
-    # the flagship cavity's settings; T0 by layers, so the conduction state
-    # is not compressed and the run starts from the rest density
-    $run "$LMP" -in "$here/in.rb" -var plugin "$PLUGIN" -var ra "$ra" -var n "$N" \
-      -var tend "${TEND:-0.8}" -var kemax 1e30 -var every 200 -var t0 layers -var init uniform \
-      -var gradient gradient -var conduction "correction consistent" -var shift 2 \
-      -var continuity yes -var bg 0.1 -var delta 0.1 -log "log.nu.$ra.n$N" > /dev/null
-    logs="$logs log.nu.$ra.n$N"
-  done
   # shellcheck disable=SC2086
-  "$PYTHON" "$here/analyse.py" nu $logs --from "${FROM:-0.4}" --out nu.txt \
-    ${MAX_NU_ERROR:+--max-error "$MAX_NU_ERROR"}
+  "$PYTHON" "$here/analyse.py" nu --run ${RA:-1e4 2e4} --n "${N:-20}" --tend "${TEND:-0.8}" \
+    --lmp "$LMP" --plugin "$PLUGIN" \
+    --from "${FROM:-0.4}" --out nu.txt ${MAX_NU_ERROR:+--max-error "$MAX_NU_ERROR"}
   exit
 fi
 
