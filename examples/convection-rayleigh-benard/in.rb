@@ -25,7 +25,8 @@
 #   rho0 everywhere), every (thermo), dump (yes: write the fluid to the
 #   file out at the end), t0 (T0 of fix sph/boussinesq: 0.5 or layers),
 #   gradient (correction of the flow pair), conduction (keywords of the heat
-#   pair), shift (skillen coefficient, 0: none), continuity (of the shift).
+#   pair), shift (skillen coefficient, 0: none), continuity (of the shift),
+#   hold (yes: fix sph/hold/volume keeps the fluid's volume).
 # settings = onset (the defaults below) or convection: above onset, to a
 #   steady state (t = 0.8), with the flagship cavity's settings (without
 #   the background pressure particles entered the plates at 10 and 16 per H
@@ -47,7 +48,7 @@ if "${settings} == convection" then &
   "variable tend index 0.8" "variable kemax index 1e30" "variable delta index 0.1" &
   "variable init index uniform" "variable t0 index layers" "variable gradient index gradient" &
   "variable conduction index 'correction consistent'" "variable shift index 2" &
-  "variable continuity index yes" "variable every index 200" "variable bg index 0.1" &
+  "variable continuity index yes" "variable every index 200" "variable bg index 0.1" "variable hold index yes" &
 elif "${settings} != onset" then &
   "print 'ERROR: settings ${settings}: onset or convection'" "quit 1"
 variable ra      index 3000
@@ -75,6 +76,7 @@ variable gradient index none
 variable conduction index "mean harmonic"
 variable shift   index 0
 variable continuity index no
+variable hold    index no
 
 variable has_plugin equal is_file(${plugin})
 if "${has_plugin}" then "plugin load ${plugin}" &
@@ -143,6 +145,7 @@ fix             cold cold sph/wall/dirichlet 0.0 surface layer
 fix             buoyancy fluid sph/boussinesq ${t0} gravity 0.0 -${g} 0.0
 fix             integrate fluid sph
 if "${shift} > 0" then "fix shift fluid sph/shift skillen ${shift} continuity ${continuity}"
+if "${hold} == yes" then "fix hold fluid sph/hold/volume"
 fix             dt fluid sph/dt/reset 1 acoustic ${cac}
 
 # Nu of the plates from the heat they give (hot) and take up (cold): 1 in
@@ -160,6 +163,9 @@ compute         rho fluid sph/rho/atom
 compute         rhomin fluid reduce min c_rho
 compute         rhomax fluid reduce max c_rho
 compute         rhoave fluid reduce ave c_rho
+# the fluid's volume, sum m / rho (fix sph/hold/volume holds it)
+variable        volume atom mass/c_rho
+compute         volume fluid reduce sum v_volume
 thermo_style    custom step time dt c_ke v_vymax c_nu_hot[1] c_nu_cold[1] c_rhomin c_rhomax c_rhoave elapsed cpuremain
 thermo_modify   format float %.10g
 thermo          ${every}
@@ -177,4 +183,4 @@ if "${dump} == yes" then "compute T fluid sph/t/atom" &
 run             0 post no
 if "${dump} == yes" then &
    "write_dump fluid custom ${out} id x y vx vy c_T c_rho modify sort id format float %.15g"
-print           "final: Ra = ${ra} t = $(time:%.5f) steps = $(step) KE = $(c_ke:%.6e) vymax = $(v_vymax:%.6e) Nu_hot = $(v_nu_hot:%.6f) Nu_cold = $(v_nu_cold:%.6f)"
+print           "final: Ra = ${ra} t = $(time:%.5f) steps = $(step) KE = $(c_ke:%.6e) vymax = $(v_vymax:%.6e) Nu_hot = $(v_nu_hot:%.6f) Nu_cold = $(v_nu_cold:%.6f) volume = $(c_volume:%.15g)"

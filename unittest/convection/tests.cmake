@@ -91,3 +91,7 @@ sphthermal_state_test(convection.mirror.skin same ${cavity_small}
 # fix sph/boussinesq T0 'mean': the buoyancy sums to zero while the fluid warms
 sphthermal_python_test(convection.boussinesq.mean convection/test_boussinesq_mean.py LAMMPS LABELS unit)
 sphthermal_python_test(convection.boussinesq.layers convection/test_boussinesq_layers.py LAMMPS LABELS unit)
+# fix sph/hold/volume: the layer's volume held to round-off, and across a restart
+sphthermal_python_test(convection.hold_volume convection/test_hold_volume.py LAMMPS LABELS unit)
+sphthermal_python_test(convection.mpi.hold_volume_np2 convection/test_hold_volume.py LAMMPS
+  ARGS --np 2 --mpirun ${MPIRUN} LABELS mpi PROCESSORS 2)
