@@ -166,7 +166,8 @@ compute         rhoave fluid reduce ave c_rho
 # the fluid's volume, sum m / rho (fix sph/hold/volume holds it)
 variable        volume atom mass/c_rho
 compute         volume fluid reduce sum v_volume
-thermo_style    custom step time dt c_ke v_vymax c_nu_hot[1] c_nu_cold[1] c_rhomin c_rhomax c_rhoave elapsed cpuremain
+thermo_style    custom step time dt c_ke v_vymax c_nu_hot[1] c_nu_cold[1] c_rhomin c_rhomax c_rhoave &
+                c_volume elapsed cpuremain
 thermo_modify   format float %.10g
 thermo          ${every}
 print           "Ra = ${ra}, Pr = ${pr}, width = ${width}, ${nw} x ${n} fluid particles, c0 = $(v_c0:%.4g), g = $(v_g:%.6g), eps = ${eps}, init = ${init}"
@@ -179,7 +180,7 @@ run             100000000
 # run 0; the dump also needs c_T and c_rho of this step
 if "${dump} == yes" then "compute T fluid sph/t/atom" &
    "compute Tsum fluid reduce sum c_T" &
-   "thermo_style custom step time dt c_ke v_vymax c_nu_hot[1] c_nu_cold[1] c_rhomin c_Tsum"
+   "thermo_style custom step time dt c_ke v_vymax c_nu_hot[1] c_nu_cold[1] c_rhomin c_Tsum c_volume"
 run             0 post no
 if "${dump} == yes" then &
    "write_dump fluid custom ${out} id x y vx vy c_T c_rho modify sort id format float %.15g"

@@ -99,9 +99,10 @@ double FixSPHHoldVolume::group_volume()
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     if (!(rho[i] > 0.0) || !std::isfinite(rho[i]))
-      error->one(FLERR,
-                 "Fix sph/hold/volume: rho of atom {} (type {}) is {}; it must be finite and > 0",
-                 atom->tag[i], atom->type[i], rho[i]);
+      SPHCheck::stop(lmp, FLERR,
+                     fmt::format("Fix sph/hold/volume: rho of atom {} (type {}) is {}; it must be "
+                                 "finite and > 0",
+                                 atom->tag[i], atom->type[i], rho[i]));
     local += particles.mass(i) / rho[i];
   }
   MPI_Allreduce(&local, &all, 1, MPI_DOUBLE, MPI_SUM, world);
