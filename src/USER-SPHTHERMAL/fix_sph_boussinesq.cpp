@@ -169,10 +169,7 @@ void FixSPHBoussinesq::init()
   // beta per type from the hub; the group must have some
   FixSPHMaterials *materials = FixSPHMaterials::find(lmp, "Fix sph/boussinesq");
   for (int t = 1; t <= atom->ntypes; t++) beta[t] = materials->expansion(t);
-  std::vector<int> local(atom->ntypes + 1, 0), present(atom->ntypes + 1, 0);
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) local[atom->type[i]] = 1;
-  MPI_Allreduce(local.data(), present.data(), atom->ntypes + 1, MPI_INT, MPI_MAX, world);
+  const std::vector<int> present = SPHCheck::group_types(lmp, groupbit);
   std::string without;
   int buoyant = 0;
   for (int t = 1; t <= atom->ntypes; t++) {
@@ -279,10 +276,7 @@ void FixSPHBoussinesq::check_compression()
 
   // the type of the group compressed the most
   FixSPHMaterials *materials = FixSPHMaterials::find(lmp, "Fix sph/boussinesq");
-  std::vector<int> local_types(atom->ntypes + 1, 0), present(atom->ntypes + 1, 0);
-  for (int i = 0; i < atom->nlocal; i++)
-    if (mask[i] & groupbit) local_types[atom->type[i]] = 1;
-  MPI_Allreduce(local_types.data(), present.data(), atom->ntypes + 1, MPI_INT, MPI_MAX, world);
+  const std::vector<int> present = SPHCheck::group_types(lmp, groupbit);
   double worst = 0.0, worst_c0 = 0.0;
   int worst_type = 0;
   for (int t = 1; t <= atom->ntypes; t++) {

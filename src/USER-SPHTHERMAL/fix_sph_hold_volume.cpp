@@ -61,10 +61,7 @@ void FixSPHHoldVolume::init()
     error->all(FLERR, "Fix sph/hold/volume: group {} has no atoms", group->names[igroup]);
   // a fluid whose equation of state expands with T changes its volume for a reason
   FixSPHMaterials *materials = FixSPHMaterials::find(lmp, "Fix sph/hold/volume");
-  std::vector<int> local(atom->ntypes + 1, 0), present(atom->ntypes + 1, 0);
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) local[atom->type[i]] = 1;
-  MPI_Allreduce(local.data(), present.data(), atom->ntypes + 1, MPI_INT, MPI_MAX, world);
+  const std::vector<int> present = SPHCheck::group_types(lmp, groupbit);
   for (int t = 1; t <= atom->ntypes; t++) {
     const sphe_eos *eos = materials->eos(t);
     if (present[t] && eos && eos->thermal)

@@ -203,6 +203,16 @@ bigint SPHCheck::group_count(LAMMPS *lmp, int groupbit)
   return all;
 }
 
+std::vector<int> SPHCheck::group_types(LAMMPS *lmp, int groupbit)
+{
+  const int ntypes = lmp->atom->ntypes;
+  std::vector<int> local(ntypes + 1, 0), present(ntypes + 1, 0);
+  for (int i = 0; i < lmp->atom->nlocal; i++)
+    if (lmp->atom->mask[i] & groupbit) local[lmp->atom->type[i]] = 1;
+  MPI_Allreduce(local.data(), present.data(), ntypes + 1, MPI_INT, MPI_MAX, lmp->world);
+  return present;
+}
+
 void SPHCheck::warn_empty(LAMMPS *lmp, const char *file, int line, const char *who, int igroup)
 {
   if (group_count(lmp, lmp->group->bitmask[igroup]) == 0 && lmp->comm->me == 0)

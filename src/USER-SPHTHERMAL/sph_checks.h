@@ -86,6 +86,9 @@ namespace SPHCheck {
   int groups_overlap(LAMMPS *lmp, int groupbit1, int groupbit2);
   // number of atoms of a group (collective)
   bigint group_count(LAMMPS *lmp, int groupbit);
+  // the atom types of a group: [t] = 1 when an atom of type t is in it,
+  // for t = 1 .. ntypes (collective)
+  std::vector<int> group_types(LAMMPS *lmp, int groupbit);
   // a warning (rank 0) when group igroup has no atoms: for the computes,
   // whose values are then all 0 (the group may fill later)
   void warn_empty(LAMMPS *lmp, const char *file, int line, const char *who, int igroup);

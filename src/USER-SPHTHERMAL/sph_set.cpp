@@ -113,13 +113,12 @@ void SPHSet::command(int narg, char **arg)
 
 int SPHSet::types_in_group(int *present)
 {
-  const int ntypes = atom->ntypes;
-  std::vector<int> local(ntypes + 1, 0);
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) local[atom->type[i]] = 1;
-  MPI_Allreduce(local.data(), present, ntypes + 1, MPI_INT, MPI_MAX, world);
+  const std::vector<int> types = SPHCheck::group_types(lmp, groupbit);
   int n = 0;
-  for (int t = 1; t <= ntypes; t++) n += present[t];
+  for (int t = 0; t <= atom->ntypes; t++) {
+    present[t] = types[t];
+    if (t > 0) n += types[t];
+  }
   return n;
 }
 
