@@ -205,9 +205,6 @@ void FixSPHBoussinesq::init()
   const int known = gravity_keyword || SPHBodyForce::constant(SPHBodyForce::source(lmp));
   if (known && !gravity_keyword)
     SPHBodyForce::check_finite(lmp, FLERR, "Fix sph/boussinesq", buoyancy.gravity);
-  // with layers the stratified part does not compress: the bound below,
-  // that of one T0, does not hold
-  if (reference_kind == REFERENCE_LAYERS) compression_checked = 1;
   if (!compression_checked && known) {
     check_compression();
     compression_checked = 1;
@@ -418,6 +415,9 @@ void FixSPHBoussinesq::update_layer_reference()
                "of m beta {}, of m |beta| {}): the group's expansion coefficients sum to zero, "
                "or a temperature is not finite",
                group->names[igroup], t0, sum[0], sum[1], sum[2]);
+  // the compression check's T0: next to heated sides the buoyancy of the
+  // temperature along a layer compresses as that about the mean does
+  buoyancy.t0 = t0;
   // layers without buoyant atoms: the nearest filled layer's value
   int last = -1;
   for (int k = 0; k < n; k++) {

@@ -42,8 +42,8 @@ FixSPHHoldVolume::FixSPHHoldVolume(LAMMPS *lmp, int narg, char **arg) :
   if (narg != 3)
     error->all(FLERR, "Illegal {} command: expected 'fix ID <group> {}'", cmd, cmd + 4);
   if (!atom->rho_flag) error->all(FLERR, "Fix sph/hold/volume requires atom style sph (rho)");
-  scalar_flag = 1;    // the relative drift of the volume corrected in the last step
-  extscalar = 0;
+  scalar_flag = 1;    // the volume before the last step's correction
+  extscalar = 1;
   global_freq = 1;
   restart_global = 1;
 }
@@ -109,7 +109,7 @@ double FixSPHHoldVolume::group_volume()
 void FixSPHHoldVolume::end_of_step()
 {
   const double volume = group_volume();
-  drifted = volume / held - 1.0;
+  drifted = volume;
   const double scale = volume / held;
   double *const rho = atom->rho;
   const int *const mask = atom->mask;

@@ -32,7 +32,7 @@ class FixSPHHoldVolume : public Fix {
 
  protected:
   double held;       // the volume held, 0 until the first setup
-  double drifted;    // the volume before the last correction over the held one, less 1
+  double drifted;    // the volume before the last correction
 
   double group_volume();
 };
