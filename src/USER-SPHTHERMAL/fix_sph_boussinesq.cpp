@@ -324,15 +324,24 @@ void FixSPHBoussinesq::update_mean_reference()
     local[2] += fabs(weight);
   }
   MPI_Allreduce(local, all, 3, MPI_DOUBLE, MPI_SUM, world);
-  const double t0 = all[0] / all[1];
+  buoyancy.t0 = checked_mean(all, fmt::format("T0 mean of group {} is", group->names[igroup]));
+}
+
+/* ----------------------------------------------------------------------
+   sum m beta T / sum m beta from the group's sums (m beta T, m beta,
+   m |beta|), for T0 mean and T0 layers alike; 'head' names which
+------------------------------------------------------------------------- */
+
+double FixSPHBoussinesq::checked_mean(const double sum[3], const std::string &head)
+{
+  const double t0 = sum[0] / sum[1];
   // expansion coefficients of both signs that (nearly) cancel leave T0 to round-off
-  if (!std::isfinite(t0) || !(fabs(all[1]) > 1e-10 * all[2]))
+  if (!std::isfinite(t0) || !(fabs(sum[1]) > 1e-10 * sum[2]))
     error->all(FLERR,
-               "Fix sph/boussinesq: T0 mean of group {} is {} (sum of m beta T {}, of m beta {}, "
-               "of m |beta| {}): the group's expansion coefficients sum to zero, or a "
-               "temperature is not finite",
-               group->names[igroup], t0, all[0], all[1], all[2]);
-  buoyancy.t0 = t0;
+               "Fix sph/boussinesq: {} {} (sum of m beta T {}, of m beta {}, of m |beta| {}): the "
+               "group's expansion coefficients sum to zero, or a temperature is not finite",
+               head, t0, sum[0], sum[1], sum[2]);
+  return t0;
 }
 
 /* ----------------------------------------------------------------------
@@ -407,17 +416,11 @@ void FixSPHBoussinesq::update_layer_reference()
       filled[k] = std::isfinite(layer_t0[k]);
     }
   }
-  // the same condition as 'mean' on the whole group
-  const double t0 = sum[0] / sum[1];
-  if (!std::isfinite(t0) || !(fabs(sum[1]) > 1e-10 * sum[2]))
-    error->all(FLERR,
-               "Fix sph/boussinesq: T0 layers of group {}: the mean is {} (sum of m beta T {}, "
-               "of m beta {}, of m |beta| {}): the group's expansion coefficients sum to zero, "
-               "or a temperature is not finite",
-               group->names[igroup], t0, sum[0], sum[1], sum[2]);
-  // the compression check's T0: next to heated sides the buoyancy of the
+  // the whole group's mean, checked as 'mean' checks it; it is the
+  // compression check's T0: next to heated sides the buoyancy of the
   // temperature along a layer compresses as that about the mean does
-  buoyancy.t0 = t0;
+  buoyancy.t0 =
+      checked_mean(sum, fmt::format("T0 layers of group {}: the mean is", group->names[igroup]));
   // layers without buoyant atoms: the nearest filled layer's value
   int last = -1;
   for (int k = 0; k < n; k++) {

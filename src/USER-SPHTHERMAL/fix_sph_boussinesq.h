@@ -15,6 +15,7 @@ FixStyle(sph/boussinesq,FixSPHBoussinesq);
 #include "fix.h"
 #include "sph_body_force.h"
 
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -51,6 +52,7 @@ class FixSPHBoussinesq : public Fix {
   int compression_checked;    // check_compression() done (at the first setup)
   void check_compression();
   void update_mean_reference();
+  double checked_mean(const double sum[3], const std::string &head);
   void update_layer_reference();
   void update_reference();
   double mean_spacing();

@@ -37,7 +37,7 @@ static const char cmd[] = "fix sph/hold/volume";
 /* ---------------------------------------------------------------------- */
 
 FixSPHHoldVolume::FixSPHHoldVolume(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), held(0.0), drifted(0.0)
+    Fix(lmp, narg, arg), held(0.0), volume_before(0.0)
 {
   if (narg != 3)
     error->all(FLERR, "Illegal {} command: expected 'fix ID <group> {}'", cmd, cmd + 4);
@@ -108,9 +108,8 @@ double FixSPHHoldVolume::group_volume()
 
 void FixSPHHoldVolume::end_of_step()
 {
-  const double volume = group_volume();
-  drifted = volume;
-  const double scale = volume / held;
+  volume_before = group_volume();
+  const double scale = volume_before / held;
   double *const rho = atom->rho;
   const int *const mask = atom->mask;
   for (int i = 0; i < atom->nlocal; i++)
@@ -119,7 +118,7 @@ void FixSPHHoldVolume::end_of_step()
 
 double FixSPHHoldVolume::compute_scalar()
 {
-  return drifted;
+  return volume_before;
 }
 
 /* ----------------------------------------------------------------------

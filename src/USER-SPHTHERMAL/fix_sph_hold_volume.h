@@ -31,8 +31,8 @@ class FixSPHHoldVolume : public Fix {
   void restart(char *) override;
 
  protected:
-  double held;       // the volume held, 0 until the first setup
-  double drifted;    // the volume before the last correction
+  double held;             // the volume held, 0 until the first setup
+  double volume_before;    // the volume before the last correction (the scalar)
 
   double group_volume();
 };
