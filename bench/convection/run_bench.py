@@ -29,7 +29,7 @@ from sphthermal_tools.log import late_rows, longest_thermo_table
 
 def run(lmp, plugin, ra, n, kernel, hdx, out):
     log = os.path.join(out, f"log.ra{ra:g}.{kernel}{hdx:g}.n{n}")
-    cmd = [lmp, "-in", os.path.join(ROOT, "examples/convection-cavity/in.cavity"), "-var", "plugin",
+    cmd = [lmp, "-in", os.path.join(ROOT, "examples/convection-cavity/in.cavity-options"), "-var", "plugin",
            plugin, "-var", "ra", f"{ra:g}", "-var", "n", str(n), "-var", "kernel", kernel,
            "-var", "hdx", str(hdx), "-var", "out", os.path.join(out, "bench.dump"), "-log", log,
            "-screen", "none"]

@@ -27,6 +27,7 @@
 #include "sph_consistent.h"
 #include "sph_dispatch.h"
 #include "sph_hub.h"
+#include "sph_scene_defaults.h"
 #include "sph_support.h"
 #include "update.h"
 
@@ -46,7 +47,7 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     mean(SPHC_HARMONIC), loop_own(0), in_flow_loop(0), temperature(nullptr), mass_of(nullptr),
     volume(nullptr), conductivity(nullptr), eta2(0.0), materials(nullptr), conductivity_varies(0),
     conductance(nullptr), loop_conductance(nullptr), relax_wanted(0), relax_rate(nullptr),
-    nmax_relax(0), correct(SPHConductionWeights::NONE), sweeps(5), weights(nullptr),
+    nmax_relax(0), correct_request(-1), correct(SPHConductionWeights::NONE), correct_logged(-1), sweeps(5), weights(nullptr),
     interface_types(nullptr), type_conductivity(nullptr), interface(nullptr), nmax_pairs(0),
     pairs_x(nullptr), pairs_rho(nullptr), pairs_valid(0), refresh_pairs(0)
 {
@@ -292,8 +293,9 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
 {
   int iarg = parse_kernel(narg, arg);
   eta_factor = 0.1;
+  eta_given = 0;
   mean = SPHC_HARMONIC;
-  correct = SPHConductionWeights::NONE;
+  correct_request = -1;
   sweeps = 5;
   distance_name.clear();
   loop_own = 0;
@@ -310,6 +312,7 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
                  arg[iarg]);
     if (strcmp(arg[iarg], "eta") == 0) {
       eta_factor = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      eta_given = 1;
       if (eta_factor < 0.0)
         error->all(FLERR, "Illegal pair_style sph/cleary/heat command: eta {} must be >= 0",
                    arg[iarg + 1]);
@@ -328,11 +331,11 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
                        arg[iarg + 1], 100.0 * (1.0 - 1.0 / (1.0 + eta_factor * eta_factor)));
     } else if (strcmp(arg[iarg], "correction") == 0) {
       if (strcmp(arg[iarg + 1], "none") == 0)
-        correct = SPHConductionWeights::NONE;
+        correct_request = SPHConductionWeights::NONE;
       else if (strcmp(arg[iarg + 1], "consistent") == 0)
-        correct = SPHConductionWeights::CONSISTENT;
+        correct_request = SPHConductionWeights::CONSISTENT;
       else if (strcmp(arg[iarg + 1], "second") == 0)
-        correct = SPHConductionWeights::SECOND;
+        correct_request = SPHConductionWeights::SECOND;
       else
         error->all(FLERR,
                    "Illegal pair_style sph/cleary/heat command: unknown correction '{}' "
@@ -416,6 +419,15 @@ void PairSPHClearyHeat::init_style()
     error->warning(FLERR,
                    "Pair style sph/cleary/heat: mean interface has no effect: every atom type has "
                    "the same conductivity law in fix sph/materials");
+  // without 'correction' in the command, the scene's default
+  if (correct_request < 0) {
+    const SPHSceneDefaults::Choice choice = SPHSceneDefaults::heat_correction(lmp);
+    correct = choice.value;
+    SPHSceneDefaults::log(lmp, "sph/cleary/heat", "correction",
+                          correct == SPHConductionWeights::CONSISTENT ? "consistent" : "none",
+                          choice, correct_logged);
+  } else
+    correct = correct_request;
   // the Hessian blocks of 'correction second' are the largest reverse
   // communication; Comm sizes its buffers after this (LAMMPS::init)
   comm_reverse = (correct == SPHConductionWeights::SECOND) ? SPHS_MAX * SPHS_MAX
@@ -463,7 +475,7 @@ void PairSPHClearyHeat::write_restart_settings(FILE *fp)
   fwrite(&mean, sizeof(int), 1, fp);
   fwrite(&cut_global, sizeof(double), 1, fp);
   fwrite(&eta_factor, sizeof(double), 1, fp);
-  fwrite(&correct, sizeof(int), 1, fp);
+  fwrite(&correct_request, sizeof(int), 1, fp);
   fwrite(&sweeps, sizeof(int), 1, fp);
   fwrite(&loop_own, sizeof(int), 1, fp);
   const int length = (int) distance_name.size();
@@ -480,7 +492,7 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &mean, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &eta_factor, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &correct, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &correct_request, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &sweeps, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &loop_own, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &length, sizeof(int), 1, fp, nullptr, error);
@@ -494,7 +506,7 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
   MPI_Bcast(&mean, 1, MPI_INT, 0, world);
   MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&eta_factor, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&correct, 1, MPI_INT, 0, world);
+  MPI_Bcast(&correct_request, 1, MPI_INT, 0, world);
   MPI_Bcast(&sweeps, 1, MPI_INT, 0, world);
   MPI_Bcast(&loop_own, 1, MPI_INT, 0, world);
 }

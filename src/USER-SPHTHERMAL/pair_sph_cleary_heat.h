@@ -117,8 +117,12 @@ class PairSPHClearyHeat : public PairSPHKernel {
   std::vector<HeatFlow> flows;
 
   // 'correction none', 'consistent' or 'second' (SPHConductionWeights::Kind)
-  // and the Jacobi sweeps of 'consistent'; their weights (nullptr for none)
+  // and the Jacobi sweeps of 'consistent'; their weights (nullptr for none).
+  // The command's request (-1: the scene's default, SPHSceneDefaults), what
+  // init made of it, and the value last logged
+  int correct_request;
   int correct;
+  int correct_logged;
   int sweeps;
   SPHConductionWeights *weights;
   // values per atom of the largest reverse communication but that of

@@ -13,7 +13,7 @@
              and 0 on every other wall atom; the heat estimate is within 5 %
              of 1, positive on both walls (dT = 1 hot, -1 cold), and its
              per-atom values times the spacing add up to the wall mean
-  cavity     the cavity with buoyancy at --ra, --n x --n particles, to
+  cavity     the flagship cavity (in.cavity) at --ra, --n x --n particles, to
              --tend: the mean Nu of both walls (from their heat, averaged
              over the last third of the run) within --tolerance (relative)
              of de Vahl Davis (1983), and the flow upward at the hot wall
@@ -26,6 +26,9 @@
              mean Nusselt number of both walls is 1 within --tolerance, and
              the zero-order walls (Shepard dummies, k = 0 top and bottom) are
              further off than that
+  defaults   the flagship in.cavity (the package's defaults) against
+             in.cavity-options (every setting given), 12 x 12, to t = 0.01:
+             the final dumps agree to 1e-9 and the log names the defaults
 
 Usage: test_walls.py CHECK --lmp LMP --plugin PLUGIN [--tolerance T]
 """
@@ -140,10 +143,13 @@ def check_conserve(a, work):
     return ok
 
 
-def run_cavity(a, work, np_=1, **variables):
-    """examples/convection-cavity/in.cavity with these -var values on np_
-    ranks; its screen output (the check stops if the run fails)."""
-    return run_input(a.lmp, os.path.join(ROOT, "examples/convection-cavity/in.cavity"),
+def run_cavity(a, work, np_=1, lean=False, **variables):
+    """examples/convection-cavity/in.cavity-options (the scene with every
+    setting a variable), or with lean the flagship in.cavity (the package's
+    defaults), with these -var values on np_ ranks; its screen output (the
+    check stops if the run fails)."""
+    name = "in.cavity" if lean else "in.cavity-options"
+    return run_input(a.lmp, os.path.join(ROOT, "examples/convection-cavity", name),
                      dict(plugin=a.plugin, **variables), work, np_, a.mpirun)
 
 
@@ -154,7 +160,7 @@ def cavity_nu(a, work, thermal, n):
 
 
 def check_cavity(a, work):
-    table = longest_thermo_table(run_cavity(a, work, ra=a.ra, n=a.n, tend=a.tend,
+    table = longest_thermo_table(run_cavity(a, work, lean=True, ra=a.ra, n=a.n, tend=a.tend,
                                             out="cavity.dump"))
     late = late_rows(table)
     hot, cold = table["c_nu_hot[1]"][late].mean(), table["c_nu_cold[1]"][late].mean()
@@ -202,9 +208,32 @@ def check_conduction(a, work):
     return ok and worse
 
 
+def check_defaults(a, work):
+    """The flagship in.cavity (the package's defaults for a buoyancy-driven
+    flow) and in.cavity-options (every setting given, at its validated
+    value) are the same run: their final dumps agree to round-off, and the
+    pairs' logs name the defaults taken."""
+    lean_out = run_cavity(a, work, lean=True, ra="1e4", n=12, tend=0.01)
+    lean = read_dump(os.path.join(work, "cavity.dump"))
+    run_cavity(a, work, ra="1e4", n=12, tend=0.01, out="options.dump")
+    given = read_dump(os.path.join(work, "options.dump"))
+    named = ("correction gradient (the default with buoyancy" in lean_out
+             and "correction consistent (the default with buoyancy" in lean_out)
+    same_atoms = np.array_equal(lean["id"], given["id"])
+    worst = max(np.abs(lean[k] - given[k]).max() / np.abs(given[k]).max()
+                for k in ("x", "y", "vx", "vy", "c_T")) if same_atoms else np.inf
+    moving = np.abs(given["vy"]).max() > 1.0
+    ok = named and same_atoms and worst < 1e-9 and moving
+    print(f"{'ok' if ok else 'FAIL'}: in.cavity (defaults) against in.cavity-options (settings given): "
+          f"largest difference {worst:.2e} of the largest value (limit 1e-9), largest vy "
+          f"{np.abs(given['vy']).max():.3f} (must exceed 1); the log names the defaults: {named}")
+    return ok
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    p.add_argument("check", choices=["linear", "conserve", "nusselt", "conduction", "cavity", "ranks"])
+    p.add_argument("check", choices=["linear", "conserve", "nusselt", "conduction", "cavity", "ranks",
+                                      "defaults"])
     lammps_arguments(p)
     p.set_defaults(np=2)  # 'ranks' compares 1 rank against --np, 2 unless given
     p.add_argument("--n", type=int, default=20)
@@ -216,7 +245,7 @@ def main():
     a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
     with tempfile.TemporaryDirectory() as work:
         ok = {"linear": check_linear, "conserve": check_conserve, "nusselt": check_nusselt,
-              "cavity": check_cavity, "ranks": check_ranks,
+              "cavity": check_cavity, "ranks": check_ranks, "defaults": check_defaults,
               "conduction": check_conduction}[a.check](a, work)
     return 0 if ok else 1
 

@@ -91,6 +91,11 @@ sphthermal_state_test(convection.mirror.skin same ${cavity_small}
 # fix sph/boussinesq T0 'mean': the buoyancy sums to zero while the fluid warms
 sphthermal_python_test(convection.boussinesq.mean convection/test_boussinesq_mean.py LAMMPS LABELS unit)
 sphthermal_python_test(convection.boussinesq.layers convection/test_boussinesq_layers.py LAMMPS LABELS unit)
+# the flagship input (the package's defaults) against the same scene with every setting given
+sphthermal_python_test(convection.cavity_defaults convection/test_walls.py LAMMPS ARGS defaults
+  LABELS unit)
+# the corrections' defaults from the scene (buoyancy or not, pressure form, restart)
+sphthermal_python_test(convection.scene_defaults convection/test_scene_defaults.py LAMMPS LABELS unit)
 # fix sph/hold/volume: the layer's volume held to round-off, and across a restart
 sphthermal_python_test(convection.hold_volume convection/test_hold_volume.py LAMMPS LABELS unit)
 sphthermal_python_test(convection.mpi.hold_volume_np2 convection/test_hold_volume.py LAMMPS

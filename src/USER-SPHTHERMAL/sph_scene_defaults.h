@@ -1,0 +1,48 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SPH_SCENE_DEFAULTS_H
+#define LMP_SPH_SCENE_DEFAULTS_H
+
+#include <string>
+
+namespace LAMMPS_NS {
+
+class LAMMPS;
+
+// The package's defaults that depend on the kind of scene, in one place:
+// the rule, and the sentence the log gives for the value taken. A setting
+// given in a command is never changed; a style asks at its init and says
+// what it took (SPHSceneDefaults::Choice::log), so that a run's log names
+// every numerical setting it did not get from the input.
+namespace SPHSceneDefaults {
+
+  struct Choice {
+    int value;          // the setting, in the asking style's own code
+    std::string why;    // the scene's reason, for the log
+  };
+
+  // the id of the run's fix sph/boussinesq, empty without one: a
+  // buoyancy-driven flow (natural convection, buoyant mixing)
+  std::string buoyancy_fix(LAMMPS *lmp);
+
+  // 'correction' of pair sph/harmonic/visc: gradient (1) in a
+  // buoyancy-driven flow with the averaged pressure form, none (0) otherwise
+  Choice flow_correction(LAMMPS *lmp, int averaged_pressure);
+
+  // 'correction' of pair sph/cleary/heat: consistent in a buoyancy-driven
+  // flow, none otherwise (SPHConductionWeights::Kind)
+  Choice heat_correction(LAMMPS *lmp);
+
+  // log "<style>: <setting> <value> (<why>)" on rank 0 when 'choice'
+  // differs from 'last' (the value last logged, -1 before the first)
+  void log(LAMMPS *lmp, const char *style, const char *setting, const char *value,
+           const Choice &choice, int &last);
+
+}    // namespace SPHSceneDefaults
+
+}    // namespace LAMMPS_NS
+
+#endif
