@@ -293,7 +293,6 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
 {
   int iarg = parse_kernel(narg, arg);
   eta_factor = 0.1;
-  eta_given = 0;
   mean = SPHC_HARMONIC;
   correct_request = -1;
   sweeps = 5;
@@ -312,7 +311,6 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
                  arg[iarg]);
     if (strcmp(arg[iarg], "eta") == 0) {
       eta_factor = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      eta_given = 1;
       if (eta_factor < 0.0)
         error->all(FLERR, "Illegal pair_style sph/cleary/heat command: eta {} must be >= 0",
                    arg[iarg + 1]);

@@ -49,7 +49,7 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     PairSPHKernel(lmp, "sph/harmonic/visc",
                   "viscosities and equations of state come from fix sph/materials"),
     pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI), xi(SPHF_XI_CLEARY), delta(0.1),
-    heating(0.0), mean_pressure_held(0), mean_pressure(0.0), gradient_request(-1), gradient_correction(0), gradient_logged(-1),
+    heating(0.0), mean_pressure_held(0), mean_pressure(0.0), gradient_correction(0),
     gradient_inverse(nullptr), nmax_gradient(0), diffusion_form(DIFFUSION_BODY_FORCE),
     hydrostatic(0), body_force(nullptr), buoyancy(nullptr), eta2(0.0), materials(nullptr),
     viscosity_varies(0), wall_groupbit(0), pressure(nullptr), viscosity(nullptr), mass_of(nullptr),

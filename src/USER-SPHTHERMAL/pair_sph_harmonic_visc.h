@@ -60,12 +60,8 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // normalised per particle (B = M^-1, sph_consistent.h), so that the
   // discrete pressure gradient has no first-order (moment) error; per atom
   // (owned and ghost) B in sph_consistent.h's storage,
-  // I where the support is incomplete and for wall particles. The command's
-  // request (-1: the scene's default, SPHSceneDefaults) and what init made
-  // of it; the value last logged
-  int gradient_request;
+  // I where the support is incomplete and for wall particles
   int gradient_correction;
-  int gradient_logged;
   double **gradient_inverse;
   int nmax_gradient;
   // the density diffusion: Fourtakas's (Reece et al. 2024, eq 39) with the

@@ -30,7 +30,7 @@ using namespace LAMMPS_NS;
 
 PairSPHKernel::PairSPHKernel(LAMMPS *lmp, const char *style, const char *from_materials) :
     Pair(lmp), style(style), from_materials(from_materials), kernel_kind(-1), cut_global(0.0),
-    eta_factor(0.1), eta_given(0), kernel_same(0)
+    eta_factor(0.1), kernel_same(0)
 {
   restartinfo = 1;
   single_enable = 0;
@@ -80,7 +80,7 @@ int PairSPHKernel::parse_kernel(int narg, char **arg)
   return 2;
 }
 
-/* the kernel, cutoff and (unless given) eta of every pair given 'same' from the pair of the
+/* the kernel and cutoff of every pair given 'same' from the pair of the
    other kind (conduction or flow), for all the package's pairs at the
    first of their inits, so that each sees the others' resolved */
 
@@ -105,8 +105,6 @@ void PairSPHKernel::resolve_same_kernels()
                  pair->style, other->style);
     pair->kernel_kind = other->kernel_kind;
     pair->cut_global = other->cut_global;
-    // one eta for the pairs of one neighbourhood unless the input gives two
-    if (!pair->eta_given) pair->eta_factor = other->eta_factor;
   }
 }
 

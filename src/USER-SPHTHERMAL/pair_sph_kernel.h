@@ -51,9 +51,8 @@ class PairSPHKernel : public Pair, protected SPHExchange {
   int kernel_kind;               // SPHK_* of sph_kernels.h
   double cut_global;             // kernel support radius
   double eta_factor;             // eta = eta_factor * h
-  int eta_given;                 // 1: eta in the command ('same' shares the other pair's)
   // 'same' in place of kernel and cutoff: those of the other pair (flow or
-  // conduction), and its eta unless given, resolved at init
+  // conduction), resolved at init
   int kernel_same;
   sphk_kernel kernel;
   // SPHExchange: the stage's values sent now (comm_forward and comm_reverse,

@@ -28,12 +28,9 @@ namespace SPHSceneDefaults {
   // buoyancy-driven flow (natural convection, buoyant mixing)
   std::string buoyancy_fix(LAMMPS *lmp);
 
-  // 'correction' of pair sph/harmonic/visc: gradient (1) in a
-  // buoyancy-driven flow with the averaged pressure form, none (0) otherwise
-  Choice flow_correction(LAMMPS *lmp, int averaged_pressure);
-
   // 'correction' of pair sph/cleary/heat: consistent in a buoyancy-driven
-  // flow, none otherwise (SPHConductionWeights::Kind)
+  // flow of shifted particles (fix sph/shift), none otherwise
+  // (SPHConductionWeights::Kind)
   Choice heat_correction(LAMMPS *lmp);
 
   // log "<style>: <setting> <value> (<why>)" on rank 0 when 'choice'

@@ -66,14 +66,10 @@ foreach(np 2 4)
     ARGS ${shared_loop_varying_k} NP ${np} RTOL 1e-12)
 endforeach()
 # kernel 'same' (either pair, whichever comes first in the hybrid) gives
-# what the kernel and the other pair's eta given twice give (the flow pair's
-# default eta 0.01, the heat pair's 0.1), and the shared loop is still taken
-set(kernel_same_eta_heat "heat_keywords=eta 0.01")
-set(kernel_same_eta_flow "flow_keywords=eta 0.1")
+# what the kernel given twice gives, and the shared loop is still taken
 foreach(which heat flow)
   sphthermal_state_test(flow.kernel_same.${which} same ${thermal_flow_input}
-    ARGS --var same=${which} --var laws=varying --var2 same=none
-         --var2 "${kernel_same_eta_${which}}" RTOL 1e-14)
+    ARGS --var same=${which} --var laws=varying --var2 same=none RTOL 1e-14)
   sphthermal_lammps_test(flow.kernel_same.${which}_shared_loop_taken ${thermal_flow_input}
     IN_BUILD_DIR VARS steps 0 same ${which} LABELS regression
     PASS "evaluated in the pair loop of sph/harmonic/visc")
