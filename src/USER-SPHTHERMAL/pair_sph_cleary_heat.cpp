@@ -47,9 +47,10 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     mean(SPHC_HARMONIC), loop_own(0), in_flow_loop(0), temperature(nullptr), mass_of(nullptr),
     volume(nullptr), conductivity(nullptr), eta2(0.0), materials(nullptr), conductivity_varies(0),
     conductance(nullptr), loop_conductance(nullptr), relax_wanted(0), relax_rate(nullptr),
-    nmax_relax(0), correct_request(-1), correct(SPHConductionWeights::NONE), correct_logged(-1), sweeps(5), weights(nullptr),
-    interface_types(nullptr), type_conductivity(nullptr), interface(nullptr), nmax_pairs(0),
-    pairs_x(nullptr), pairs_rho(nullptr), pairs_valid(0), refresh_pairs(0)
+    nmax_relax(0), correct_request(-1), correct(SPHConductionWeights::NONE), correct_logged(-1),
+    sweeps(5), weights(nullptr), interface_types(nullptr), type_conductivity(nullptr),
+    interface(nullptr), nmax_pairs(0), pairs_x(nullptr), pairs_rho(nullptr), pairs_valid(0),
+    refresh_pairs(0)
 {
   // S and the state of the correction; the interface's estimate; nu of 'correction second'
   comm_forward = SPHS_MAX;

@@ -24,11 +24,15 @@ using namespace LAMMPS_NS;
 
 /* ---------------------------------------------------------------------- */
 
-std::string SPHSceneDefaults::buoyancy_fix(LAMMPS *lmp)
+namespace {
+// the id of the run's fix sph/boussinesq, empty without one: a
+// buoyancy-driven flow (natural convection, buoyant mixing)
+std::string buoyancy_fix(LAMMPS *lmp)
 {
   const std::vector<FixSPHBoussinesq *> all = SPHHub(lmp).fixes<FixSPHBoussinesq>();
   return all.empty() ? std::string() : std::string(all.front()->id);
 }
+}    // namespace
 
 SPHSceneDefaults::Choice SPHSceneDefaults::heat_correction(LAMMPS *lmp)
 {

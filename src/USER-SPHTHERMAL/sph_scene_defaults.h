@@ -24,10 +24,6 @@ namespace SPHSceneDefaults {
     std::string why;    // the scene's reason, for the log
   };
 
-  // the id of the run's fix sph/boussinesq, empty without one: a
-  // buoyancy-driven flow (natural convection, buoyant mixing)
-  std::string buoyancy_fix(LAMMPS *lmp);
-
   // 'correction' of pair sph/cleary/heat: consistent in a buoyancy-driven
   // flow of shifted particles (fix sph/shift), none otherwise
   // (SPHConductionWeights::Kind)
