@@ -26,7 +26,9 @@
 #   file out at the end), t0 (T0 of fix sph/boussinesq: 0.5 or layers),
 #   gradient (correction of the flow pair), conduction (keywords of the heat
 #   pair), shift (skillen coefficient, 0: none), continuity (of the shift),
-#   hold (yes: fix sph/hold/volume keeps the fluid's volume).
+#   hold (yes: fix sph/hold/volume keeps the fluid's volume), jitter
+#   (random initial displacement of the fluid particles / dx; 0, the
+#   default: none), seed (its random seed).
 # settings = onset (the defaults below) or convection: above onset, to a
 #   steady state (t = 0.8), with the flagship cavity's settings (without
 #   the background pressure particles entered the plates at 10 and 16 per H
@@ -77,6 +79,8 @@ variable conduction index "mean harmonic"
 variable shift   index 0
 variable continuity index no
 variable hold    index no
+variable jitter  index 0.0
+variable seed    index 12345
 
 variable has_plugin equal is_file(${plugin})
 if "${has_plugin}" then "plugin load ${plugin}" &
@@ -117,6 +121,10 @@ region          below block INF INF INF 0 INF INF
 region          above block INF INF ${n} INF INF INF
 group           hot region below
 group           cold region above
+# optional random displacement of the fluid particles (a fraction of dx)
+# off the lattice (a stability check)
+if "${jitter} > 0.0" then &
+  "displace_atoms fluid random $(v_jitter*v_dx) $(v_jitter*v_dx) 0.0 ${seed} units box"
 
 fix             materials all sph/materials type * conductivity constant 1.0 cv 1.0 &
                 viscosity constant ${pr} expansion 1.0 &

@@ -45,6 +45,13 @@ if(LAMMPS_RELEASE STREQUAL "4Feb2025")
     LABELS validation)
 endif()
 
+# the stress suite's CI subset (bench/stress): a jittered cavity and a
+# jittered Poiseuille flow, short, each stable with finite results
+sphthermal_python_test(bench.stress_quick ${SPHTHERMAL_ROOT}/bench/stress/stress.py LAMMPS
+  ARGS --quick --out ${CMAKE_CURRENT_BINARY_DIR}/stress_quick
+       --results ${CMAKE_CURRENT_BINARY_DIR}/stress_quick/results.md
+  LABELS regression)
+
 # every doc page parses as reStructuredText without a warning (where
 # docutils is installed: Debian's python3-docutils)
 execute_process(COMMAND ${PYTHON_NUMPY} -c "import docutils" RESULT_VARIABLE no_docutils
