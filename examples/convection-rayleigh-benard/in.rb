@@ -25,7 +25,8 @@
 #   rho0 everywhere), every (thermo), dump (yes: write the fluid to the
 #   file out at the end), t0 (T0 of fix sph/boussinesq: 0.5 or layers),
 #   gradient (correction of the flow pair), conduction (keywords of the heat
-#   pair), shift (skillen coefficient, 0: none), continuity (of the shift),
+#   pair; none: the package's default, the plain operator at the onset,
+#   unshifted, and 'correction consistent' with shifting), shift (skillen coefficient, 0: none), continuity (of the shift),
 #   hold (yes: fix sph/hold/volume keeps the fluid's volume), jitter
 #   (random initial displacement of the fluid particles / dx; 0, the
 #   default: none), seed (its random seed).
@@ -49,7 +50,7 @@ variable settings index onset
 if "${settings} == convection" then &
   "variable tend index 0.8" "variable kemax index 1e30" "variable delta index 0.1" &
   "variable init index uniform" "variable t0 index layers" "variable gradient index gradient" &
-  "variable conduction index 'correction consistent'" "variable shift index 2" &
+  "variable shift index 2" &
   "variable continuity index yes" "variable every index 200" "variable bg index 0.1" "variable hold index yes" &
 elif "${settings} != onset" then &
   "print 'ERROR: settings ${settings}: onset or convection'" "quit 1"
@@ -75,7 +76,7 @@ variable out     index rb.dump
 variable dump    index no
 variable t0      index 0.5
 variable gradient index none
-variable conduction index "mean harmonic"
+variable conduction index ""
 variable shift   index 0
 variable continuity index no
 variable hold    index no
