@@ -85,16 +85,33 @@ def run_analysis(work, args):
     return done.stdout + done.stderr
 
 
-def analyse_poiseuille(work, text, var):
-    """examples/flow-poiseuille/analyse.py: |u - exact series| in % of u_max."""
-    out = run_analysis(work, [os.path.join(EX, "flow-poiseuille", "analyse.py"),
-                              var["out"], "--png", "poiseuille.png"])
-    m = re.search(r"max error (\S+) % of u_max \(all times\), (\S+) % at t = (\S+) s", out)
+def analyse_shear_flow(example, scale):
+    """examples/<example>/analyse.py: |u - exact series| in % of the
+    velocity scale (u_max of Poiseuille, V0 of Couette)."""
+    def analyse(work, text, var):
+        out = run_analysis(work, [os.path.join(EX, example, "analyse.py"),
+                                  var["out"], "--png", "flow.png"])
+        m = re.search(r"max error (\S+) % of \S+ \(all times\), (\S+) % at t = (\S+) s", out)
+        if not m:
+            return "analysis failed", False
+        worst, steady = number(m.group(1)), number(m.group(2))
+        ok = math.isfinite(worst) and math.isfinite(steady)
+        return (f"u: max {worst:.3f} %, at t = {m.group(3)} s {steady:.3f} % of {scale} "
+                "(exact series)"), ok
+    return analyse
+
+
+def analyse_column(work, text, var):
+    """examples/flow-hydrostatic/analyse.py: the largest speed in % of
+    sqrt(g H) and the pressure's error in % of rho0 g H at the end."""
+    out = run_analysis(work, [os.path.join(EX, "flow-hydrostatic", "analyse.py"), var["out"],
+                              "--png", "column.png", "--label", "stress"])
+    m = re.search(r"largest speed (\S+) % of sqrt\(g H\), pressure error (\S+) %", out)
     if not m:
         return "analysis failed", False
-    worst, steady = number(m.group(1)), number(m.group(2))
-    ok = math.isfinite(worst) and math.isfinite(steady)
-    return f"u: max {worst:.3f} %, at t = {m.group(3)} s {steady:.3f} % of u_max (exact series)", ok
+    speed, pressure = number(m.group(1)), number(m.group(2))
+    return (f"largest speed {speed:.3f} % of sqrt(g H); pressure {pressure:.3f} % of rho0 g H "
+            "(exact)"), math.isfinite(speed) and math.isfinite(pressure)
 
 
 def analyse_channel(work, text, var):
@@ -164,7 +181,22 @@ CASES = {
         base={"n": "20", "ncol": "4", "out": "poiseuille.dump"},
         variants=[("base", {}, None), ("2x resolution", {"n": "40", "ncol": "8"}, None),
                   ("2x Re", {}, "not applicable (Re is fixed in the input)")] + jitters(),
-        analyse=analyse_poiseuille),
+        analyse=analyse_shear_flow("flow-poiseuille", "u_max")),
+    "couette": dict(
+        input="flow-couette/in.couette",
+        what="Couette start-up, Re 65.2, 20 across, 4 columns, to t = 1200 s",
+        base={"n": "20", "ncol": "4", "out": "couette.dump"},
+        variants=[("base", {}, None), ("2x resolution", {"n": "40", "ncol": "8"}, None),
+                  ("2x Re", {}, "not applicable (Re is fixed in the input)")] + jitters(),
+        analyse=analyse_shear_flow("flow-couette", "V0")),
+    "column": dict(
+        input="flow-hydrostatic/in.hydrostatic",
+        what="water column at rest under gravity, 20 x 40, 20000 steps (t = 1.6 s)",
+        base={"nx": "20", "ny": "40", "steps": "20000", "out": "hydrostatic"},
+        variants=[("base", {}, None),
+                  ("2x resolution", {"nx": "40", "ny": "80"}, "not run (cost: 8 times the base)"),
+                  ("2x Re", {}, "not applicable (a fluid at rest)")] + jitters(),
+        analyse=analyse_column),
     "channel": dict(
         input="forced-channel/in.channel",
         what="heated channel, Re 65.2, 10 across, from the developed flow to t = 800 s",
