@@ -167,6 +167,17 @@ def jitters():
     return [(f"jitter seed {s}", {"jitter": JITTER, "seed": str(s)}, None) for s in SEEDS]
 
 
+def shear_flow_case(example, name, what, scale):
+    """The Poiseuille and Couette flows: one input shape, Re fixed."""
+    return dict(
+        input=f"{example}/in.{name}",
+        what=f"{what}, Re 65.2, 20 across, 4 columns, to t = 1200 s",
+        base={"n": "20", "ncol": "4", "out": f"{name}.dump"},
+        variants=[("base", {}, None), ("2x resolution", {"n": "40", "ncol": "8"}, None),
+                  ("2x Re", {}, "not applicable (Re is fixed in the input)")] + jitters(),
+        analyse=analyse_shear_flow(example, scale))
+
+
 CASES = {
     "cavity": dict(
         input="convection-cavity/in.cavity-options",
@@ -175,20 +186,9 @@ CASES = {
         variants=[("base", {}, None), ("2x resolution", {"n": "40"}, None),
                   ("10x Ra", {"ra": "1e5"}, None)] + jitters(),
         analyse=analyse_cavity),
-    "poiseuille": dict(
-        input="flow-poiseuille/in.poiseuille",
-        what="transient Poiseuille flow, Re 65.2, 20 across, 4 columns, to t = 1200 s",
-        base={"n": "20", "ncol": "4", "out": "poiseuille.dump"},
-        variants=[("base", {}, None), ("2x resolution", {"n": "40", "ncol": "8"}, None),
-                  ("2x Re", {}, "not applicable (Re is fixed in the input)")] + jitters(),
-        analyse=analyse_shear_flow("flow-poiseuille", "u_max")),
-    "couette": dict(
-        input="flow-couette/in.couette",
-        what="Couette start-up, Re 65.2, 20 across, 4 columns, to t = 1200 s",
-        base={"n": "20", "ncol": "4", "out": "couette.dump"},
-        variants=[("base", {}, None), ("2x resolution", {"n": "40", "ncol": "8"}, None),
-                  ("2x Re", {}, "not applicable (Re is fixed in the input)")] + jitters(),
-        analyse=analyse_shear_flow("flow-couette", "V0")),
+    "poiseuille": shear_flow_case("flow-poiseuille", "poiseuille", "transient Poiseuille flow",
+                                  "u_max"),
+    "couette": shear_flow_case("flow-couette", "couette", "Couette start-up", "V0"),
     "column": dict(
         input="flow-hydrostatic/in.hydrostatic",
         what="water column at rest under gravity, 20 x 40, 20000 steps (t = 1.6 s)",
