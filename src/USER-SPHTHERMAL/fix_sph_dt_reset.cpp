@@ -18,6 +18,10 @@
    dt is set at the setup of every run and then every N steps at the end
    of the step, the way fix dt/reset does it, so
    that the elapsed time (thermo keyword time) stays the sum of the steps.
+   With 'until T' the last one or two steps are shortened so that the
+   elapsed time lands on T, and the run stops there (as fix halt's
+   'error continue' does), so that a run with an adaptive dt can end at a
+   time.
    Cleary: Cleary 1998; Ng: Ng et al. 2020; Reece: Reece et al. 2024
    (doc/src/Bibliography_sphthermal.rst).
 ------------------------------------------------------------------------- */
@@ -41,6 +45,7 @@
 #include "sph_material_laws.h"
 #include "sph_particle.h"
 #include "sph_timestep.h"
+#include "timer.h"
 #include "update.h"
 
 #include <cmath>
@@ -67,8 +72,8 @@ static constexpr double BIG = 1.0e300;
 /* ---------------------------------------------------------------------- */
 
 FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), dtmin(0.0), dtmax(BIG), h_user(0.0), h(0.0), active(0), respa_flag(0),
-    warned(0), bound_warned(0), materials(nullptr), heat(nullptr),
+    Fix(lmp, narg, arg), dtmin(0.0), dtmax(BIG), h_user(0.0), h(0.0), until(-1.0), active(0),
+    respa_flag(0), warned(0), bound_warned(0), halted(0), materials(nullptr), heat(nullptr),
     body_force(nullptr)
 {
   if (!atom->rho_flag || !atom->esph_flag || !atom->cv_flag)
@@ -79,7 +84,10 @@ FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
   const long n = strtol(arg[3], &end, 10);
   if (end == arg[3] || *end != '\0' || n <= 0 || n > MAXSMALLINT)
     error->all(FLERR, "Illegal {} command: N must be a positive integer, not '{}'", cmd, arg[3]);
-  nevery = (int) n;
+  // the fix acts at every step's end (the end time is checked there) and
+  // chooses dt every N steps
+  reset_every = (int) n;
+  nevery = 1;
 
   // defaults: the acoustic one stable for the package's flows under
   // gravity, Ng et al. 2020, eq 18, for the force and viscous limits, the thermal
@@ -102,6 +110,8 @@ FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
       dtmax = parse_value(iarg, narg, arg, false);
     else if (strcmp(arg[iarg], "h") == 0)
       h_user = parse_value(iarg, narg, arg, false);
+    else if (strcmp(arg[iarg], "until") == 0)
+      until = parse_value(iarg, narg, arg, false);
     else
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
     iarg += 2;
@@ -163,7 +173,7 @@ double FixSPHDtReset::parse_value(int iarg, int narg, char **arg, bool zero_ok)
 
 int FixSPHDtReset::setmask()
 {
-  return PRE_FORCE | END_OF_STEP;
+  return PRE_FORCE | END_OF_STEP | POST_RUN;
 }
 
 // the relaxation rates in the force computations before choose_dt() only
@@ -174,7 +184,7 @@ void FixSPHDtReset::setup_pre_force(int /*vflag*/)
 
 void FixSPHDtReset::pre_force(int /*vflag*/)
 {
-  if (heat) heat->want_relax_rates(update->ntimestep % nevery == 0);
+  if (heat) heat->want_relax_rates(update->ntimestep % reset_every == 0);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -248,11 +258,56 @@ double FixSPHDtReset::smoothing_length()
 void FixSPHDtReset::setup(int /*vflag*/)
 {
   choose_dt();
+  if (until < 0.0) return;
+  if (end_at_until() && update->nsteps > 0 && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix sph/dt/reset {}: the elapsed time {} is already at until {}: the run of {} "
+                   "steps stops before its first step",
+                   id, elapsed_time(), until, update->nsteps);
 }
 
 void FixSPHDtReset::end_of_step()
 {
-  choose_dt();
+  if (update->ntimestep % reset_every == 0) choose_dt();
+  if (until >= 0.0 && end_at_until() && comm->me == 0)
+    utils::logmesg(lmp, "Fix sph/dt/reset {}: the elapsed time reached until {} at step {}: the run stops\n",
+                   id, until, update->ntimestep);
+}
+
+// a run stopped at 'until' must not stop the next one
+void FixSPHDtReset::post_run()
+{
+  if (halted) timer->reset_timeout();
+  halted = 0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixSPHDtReset::elapsed_time() const
+{
+  return update->atime + (double) (update->ntimestep - update->atimestep) * update->dt;
+}
+
+/* ----------------------------------------------------------------------
+   'until': stop the run once the elapsed time has reached it (to
+   round-off), else shorten dt when at most two steps are left: the last
+   step lands on it, two steps share what is left rather than the second
+   being a sliver. Returns 1 when the run stops.
+------------------------------------------------------------------------- */
+
+int FixSPHDtReset::end_at_until()
+{
+  const double left = until - elapsed_time();
+  if (left <= 1.0e-9 * until) {
+    halted = 1;
+    timer->force_timeout();
+    return 1;
+  }
+  if (left <= update->dt)
+    set_dt(left);
+  else if (left < 2.0 * update->dt)
+    set_dt(0.5 * left);
+  return 0;
 }
 
 /* ----------------------------------------------------------------------
@@ -309,6 +364,13 @@ void FixSPHDtReset::choose_dt()
     active = BOUND;
   }
 
+  set_dt(dt);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHDtReset::set_dt(double dt)
+{
   if (dt == update->dt) return;
 
   // as fix dt/reset: account the elapsed time with the old dt first
@@ -397,9 +459,7 @@ double FixSPHDtReset::compute_vector(int n)
 void FixSPHDtReset::write_restart(FILE *fp)
 {
   if (comm->me == 0) {
-    const double elapsed =
-        update->atime + (double) (update->ntimestep - update->atimestep) * update->dt;
-    const double list[2] = {elapsed, update->dt};
+    const double list[2] = {elapsed_time(), update->dt};
     SPHCheck::write_restart_state(fp, RESTART_VERSION, list, 2);
   }
 }

@@ -24,6 +24,7 @@ class FixSPHDtReset : public Fix {
   void init() override;
   void setup(int) override;
   void end_of_step() override;
+  void post_run() override;
   double compute_scalar() override;
   double compute_vector(int) override;
   void write_restart(FILE *) override;
@@ -44,11 +45,14 @@ class FixSPHDtReset : public Fix {
   double dtmin, dtmax;      // dtmax = BIG: no upper bound
   double h_user;            // 'h' keyword, 0 = from the pair style
   double h;                 // smoothing length used
+  double until;             // 'until': stop the run at this elapsed time; < 0: no end
+  int reset_every;          // N: choose dt every N steps
   double limit[NLIMITS];    // global minimum of each limit, coefficient applied
   int active;               // 1..4 a limit, 5 the min/max bound, 0 none computed yet
   int respa_flag;
   int warned;    // the fix-order warning was given
   int bound_warned;    // the warning that 'min' overrides a limit was given (per run)
+  int halted;          // this run was stopped at 'until' (the timer to reset after it)
   class FixSPHMaterials *materials;
   // the conduction pair, whose per-atom relaxation rates set the thermal
   // limit (nullptr without conduction or that limit); the rates are wanted
@@ -60,6 +64,9 @@ class FixSPHDtReset : public Fix {
   double parse_value(int, int, char **, bool);
   double smoothing_length();
   void choose_dt();
+  void set_dt(double);
+  double elapsed_time() const;
+  int end_at_until();
   void setup_pre_force(int) override;
   void pre_force(int) override;
   void bad_limit(int);

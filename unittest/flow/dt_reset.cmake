@@ -24,6 +24,10 @@ endforeach()
 # restarts it at 0) and equals one session running twice
 dt_reset_test(restart ARGS ${mpirun} restart LABELS regression)
 
+# 'until T': the run ends at T exactly (N = 1 and 5), the next run is not
+# stopped by it, a run that starts at T stops at once with a warning
+dt_reset_test(until ARGS ${mpirun} until LABELS unit)
+
 # the same dt sequence and active limits on 2 and 4 ranks as on 1
 foreach(np 2 4)
   dt_reset_test(mpi.np${np} ARGS ${mpirun} mpi --np ${np} LABELS mpi PROCESSORS ${np})

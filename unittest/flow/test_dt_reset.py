@@ -15,6 +15,11 @@
               continues from where it was and stays the sum of the dt's; dt
               and time match one session that runs twice
   mpi         the dt sequence and the active limits on 1 and --np ranks
+  until       'until T': the run stops at the step whose end is T (to
+              round-off), every earlier step but the last two takes the
+              chosen dt, with N = 1 and N = 5; a run after it (the fix given
+              again with a later T) goes on to that T; a run that starts at
+              T stops before its first step with a warning
 
 The limits are written out here independently of the C++ code:
   acoustic C_a h / (c_i + |v_i|), force C_f sqrt(h m_i / |f_i|),
@@ -355,6 +360,54 @@ def cmd_restart(a):
     return report()
 
 
+# ---------------------------------------------------------------- until
+
+def check_until(rows, output, until, label, steps):
+    last = rows[-1]
+    check(len(rows) - 1 < steps and abs(last["time"] - until) <= 1e-13 * until,
+          f"{label}: the run stops after {len(rows) - 1} of {steps} steps at time {last['time']:.17g}, "
+          f"until {until:.17g}")
+    check(f"reached until {until:g} at step {last['step']}: the run stops" in output,
+          f"{label}: the log names the step the run stops at ({last['step']})")
+    # the chosen dt is the smallest limit (thermo prints the limits of the
+    # last choice); only the last two steps are shortened
+    chosen = [min(row[f"v{k}"] for k in range(3, 7)) for row in rows]
+    shortened = [k for k, row in enumerate(rows[:-1]) if row["dt"] < chosen[k] * (1 - 1e-14)]
+    check(0 < len(shortened) <= 2 and shortened[-1] == len(rows) - 2,
+          f"{label}: steps shortened to land on until: {len(shortened)}, the last ones "
+          f"(rows {shortened} of {len(rows)})")
+    check_time(rows, label)
+
+
+def cmd_until(a):
+    until, steps = 0.2345, 100
+    with tempfile.TemporaryDirectory() as tmp:
+        for every in (1, 5):
+            output = run_lammps(a, "in.dt_reset", {"n": 12, "dump": 0, "steps": steps, "every": every,
+                                                   "dtargs": f"min 0 until {until}"}, cwd=tmp)
+            rows = thermo_runs(output)[-1]
+            check_until(rows, output, until, f"N = {every}", steps)
+            if every == 5:
+                fixed = [row["dt"] for row in rows[:-3] if row["step"] % 5 != 0]
+                check(len(set(fixed)) < len(rows) // 2, "N = 5: dt chosen every 5 steps")
+        # the timer of the stopped run must not stop the next one
+        output = run_lammps(a, "in.dt_reset", {"n": 12, "dump": 0, "steps": steps, "split": "again",
+                                               "dtargs": f"min 0 until {until}",
+                                               "dtargs2": f"min 0 until {2 * until}"}, cwd=tmp)
+        first, second = thermo_runs(output)
+        check_until(first, output, until, "first run", steps)
+        check_until(second, output, 2 * until, "the fix given again with until 2T: the next run", steps)
+        check(second[0]["time"] == first[-1]["time"], "the next run starts where the first stopped")
+        # a run that starts at until: not one step, and a warning
+        output = run_lammps(a, "in.dt_reset", {"n": 12, "dump": 0, "steps": steps, "split": "twice",
+                                               "dtargs": f"min 0 until {until}"}, cwd=tmp)
+        first, second = thermo_runs(output)
+        check(len(second) == 1 and second[0]["step"] == first[-1]["step"]
+              and "is already at until 0.2345: the run of 100 steps stops before its first step" in output,
+              f"a run that starts at until: {len(second) - 1} steps, and the warning")
+    return report()
+
+
 # ---------------------------------------------------------------- mpi
 
 MPI_CONFIGS = {
@@ -402,13 +455,15 @@ def main():
     s.add_argument("--case", choices=sorted(CASES), required=True)
     s.add_argument("--rtol", type=float, default=1e-12)
     sub.add_parser("restart")
+    sub.add_parser("until")
     s = sub.add_parser("mpi")
     s.add_argument("--np", type=int, required=True)
     s.add_argument("--rtol", type=float, default=1e-12)
     a = p.parse_args()
     a.lmp = os.path.abspath(a.lmp)
     a.plugin = os.path.abspath(a.plugin)
-    return {"conduction": cmd_conduction, "flow": cmd_flow, "restart": cmd_restart, "mpi": cmd_mpi}[a.cmd](a)
+    return {"conduction": cmd_conduction, "flow": cmd_flow, "restart": cmd_restart, "until": cmd_until,
+            "mpi": cmd_mpi}[a.cmd](a)
 
 
 if __name__ == "__main__":
