@@ -42,16 +42,14 @@ def write_tank_data(n, path):
     first ring of wall particles (radius R + dx/2, lids dx/2 beyond the
     surface), and no fluid particle is closer than a spacing to a wall
     particle (eps 0.99, as on a lattice; with Cleary's 0.42 fluid starts
-    where the kernel's gradient is weak). The fluid lies in concentric rings
-    that fill the cylinder (a square lattice leaves gaps along the curved
-    wall, 14 % of the volume at 16 across, and the fluid expands into them
-    by 3 %); the lids are a square lattice. n layers of
+    where the kernel's gradient is weak). The lids are the fluid's lattice,
+    so that every column of fluid ends under a lid particle. n layers of
     fluid, the components split at mid-height; three wall layers fill the
     Wendland support (4 dx) of the outermost fluid."""
     import sph_boundary
     dx = H / n
     tank = sph_boundary.cylinder(R + dx / 2, H + dx, dx, eps=0.99, layers=3, offset=(0.5, 0.5, 0.0),
-                                 z_split=(H + dx) / 2, lids="lattice", interior="rings")
+                                 z_split=(H + dx) / 2, lids="lattice")
     tank.write_data(path, rho=RHO0, cv=1006.0, T=T_COLD)
     return dx
 

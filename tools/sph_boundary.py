@@ -65,11 +65,7 @@ in r < R, 0 < z < H, the same rules on its surfaces:
 * rings of alternate planes turned by half their spacing (--no-stagger: not);
 * interior: the simple cubic lattice ((i, j, k) + offset) dx from the axis and
   z = 0 (offset 0.5, 0.5, 0.5), without the points closer than eps dx to the
-  curved wall (r > R - eps dx) or to a lid (z < eps dx or z > H - eps dx);
-  with --interior rings, each of its planes concentric rings r = R - i dx
-  instead, which fill the disc r < R - dx/2 (a lattice leaves gaps along the
-  curved wall: with eps 0.99 it fills 76 to 94 % of the cylinder at 10 to 39
-  spacings across).
+  curved wall (r > R - eps dx) or to a lid (z < eps dx or z > H - eps dx).
 
 Types of the tank (fixed, whichever are empty; 5 declared, 6 with a split):
 
@@ -501,7 +497,7 @@ def _ring(r, n, phase, z):
 
 
 def cylinder(radius, height, dx, eps=0.42, layers=1, offset=(0.5, 0.5, 0.5), center=(0.0, 0.0),
-             z_split=None, stagger=True, lids="rings", interior="lattice"):
+             z_split=None, stagger=True, lids="rings"):
     """Closed cylindrical tank, axis along z through center = (cx, cy): the
     fluid fills r < radius, 0 < z < height. Cleary's rules in 3-d:
 
@@ -524,14 +520,6 @@ def cylinder(radius, height, dx, eps=0.42, layers=1, offset=(0.5, 0.5, 0.5), cen
       lattice ((i + ox) dx + cx, (j + oy) dx + cy, (k + oz) dx) with the points
       closer than eps dx to the curved wall (r > radius - eps dx) or to a lid
       (z < eps dx or z > height - eps dx) omitted.
-
-    interior="rings": in each plane of that lattice, the interior is instead
-      concentric rings at r = radius - i dx (i = 1, 2, ...; round(2 pi r /
-      dx) particles each, a single particle on the axis where r < dx / 4),
-      turned as the wall's. A ring of spacing dx stands for the annulus
-      r +- dx / 2, so the rings fill the disc of radius radius - dx / 2,
-      the whole of it: a square lattice in a circle leaves gaps along the
-      curved wall (the fluid then expands into them).
 
     lids="lattice": each lid plane is instead the interior's square lattice
       (the same x, y offsets) over the disc r <= radius + (layers - 1) dx, so
@@ -623,22 +611,6 @@ def cylinder(radius, height, dx, eps=0.42, layers=1, offset=(0.5, 0.5, 0.5), cen
     rr = np.hypot(lat[:, 0], lat[:, 1])
     keep = (R - rr >= eps * dx) & (lat[:, 2] >= eps * dx) & (H - lat[:, 2] >= eps * dx)
     lat = lat[keep]
-    if interior == "rings":
-        planes = np.unique(lat[:, 2])
-        rings = []
-        for z in planes:
-            v = int(round(z / hz))
-            r = R - dx
-            while r > -dx / 4:
-                if r < dx / 4:
-                    rings.append(np.array([[0.0, 0.0, z]]))
-                else:
-                    n = max(3, int(round(2.0 * math.pi * r / dx)))
-                    rings.append(_ring(r, n, phase(v, n), z)[1])
-                r -= dx
-        lat = np.vstack(rings)
-    elif interior != "lattice":
-        raise ValueError("cylinder: interior must be 'lattice' or 'rings'")
     lat[:, 0] += cx
     lat[:, 1] += cy
     ltype = np.ones(len(lat), dtype=int)
@@ -709,9 +681,6 @@ def main(argv=None):
                    help="cylinder: do not turn the rings of alternate planes by half a spacing")
     p.add_argument("--lids", choices=["rings", "lattice"], default="rings",
                    help="cylinder: lids of concentric rings (default) or of the interior's square lattice")
-    p.add_argument("--interior", choices=["lattice", "rings"], default="lattice",
-                   help="cylinder: interior on the square lattice (default) or in concentric rings that fill "
-                        "the disc to half a spacing from the first wall ring")
     p.add_argument("--outer-radius", type=float, help="annulus outer radius")
     p.add_argument("--lx", type=float)
     p.add_argument("--ly", type=float)
@@ -740,8 +709,8 @@ def main(argv=None):
     off = tuple(float(t) for t in a.offset.split(","))
     cen = tuple(float(t) for t in a.center.split(","))
     if a.shape != "cylinder" and (a.height is not None or a.split_z is not None or a.no_stagger
-                                  or a.lids != "rings" or a.interior != "lattice"):
-        p.error("--height, --split-z, --no-stagger, --lids and --interior are for the cylinder")
+                                  or a.lids != "rings"):
+        p.error("--height, --split-z, --no-stagger and --lids are for the cylinder")
     if a.shape == "cylinder":
         if a.radius is None or a.height is None:
             p.error("cylinder needs --radius and --height")
@@ -749,7 +718,7 @@ def main(argv=None):
             p.error("cylinder: --naive and --type-per-curve are for the 2-d shapes")
         try:
             s = cylinder(a.radius, a.height, a.dx, a.eps, a.layers, off, cen, a.split_z, not a.no_stagger,
-                         a.lids, a.interior)
+                         a.lids)
         except ValueError as e:
             p.error(str(e))
     elif a.shape == "disc":

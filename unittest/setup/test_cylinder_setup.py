@@ -31,11 +31,6 @@ Checks (each prints ok/FAIL and the value):
   data file  write_data / read_data round trip (positions, types, normals,
              masses rho dx^3, esph, a 3-d box around all particles); the
              command line writes the same particles as the module
-  rings      interior="rings": the same walls; in the lattice's planes rings
-             r = R - i dx of round(2 pi r / dx) equally spaced particles,
-             per plane pi (R - dx/2)^2 / dx^2 particles within 1 %; a spacing
-             from the curved wall; tools/mixing_tank.py's tank (rings) fills
-             the cylinder: count dp^3 / pi R^2 H within 1 % at 10 and 16 across
   LAMMPS     (with --lmp and --plugin) read_data ... fix normals NULL Normals,
              run 0, write_dump: positions, types, masses and d_nx d_ny d_nz
              as written
@@ -285,47 +280,5 @@ that(np.array_equal(tl == 4, first) and np.array_equal(tl == 5, lidl & ~first),
      "lattice lids: type 4 the lid surfaces within r <= R, type 5 the rest")
 that(closest(xl[lidl]) >= dx * (1 - 1e-9) and closest(xl[sl.interior], xl[lidl]) >= eps * dx * (1 - 1e-12),
      "lattice lids: lid particles dx apart, at least eps dx from the interior")
-
-# ---------------------------------------------------------- interior in rings
-# the walls as before; in each lattice plane rings r = R - i dx (a particle on
-# the axis where r < dx/4), which fill the disc r < R - dx/2
-sr = sb.cylinder(R, H, dx, eps=eps, layers=L, z_split=zs, lids="lattice", interior="rings")
-that(np.array_equal(sr.x[sr.wall], xl[sl.wall]) and np.array_equal(sr.type[sr.wall], tl[sl.wall]),
-     "interior rings: the same walls as with the lattice")
-qr = sr.x[sr.interior]
-rr = np.hypot(qr[:, 0], qr[:, 1])
-ring_index = (R - rr) / dx
-planes_r, per_r = np.unique(np.round(qr[:, 2], 12), return_counts=True)
-that(np.array_equal(planes_r, np.unique(np.round(q[:, 2], 12))),
-     "interior rings: in the lattice's planes", f"{len(planes_r)} planes")
-ok = abs(ring_index - np.round(ring_index)).max() < 1e-9 and np.round(ring_index).min() == 1
-for z in planes_r:
-    for i in np.unique(np.round(ring_index[np.abs(qr[:, 2] - z) < TOL])):
-        ring = qr[(np.abs(qr[:, 2] - z) < TOL) & (np.abs(ring_index - i) < 1e-9)]
-        radius = R - i * dx
-        want = 1 if radius < dx / 4 else max(3, int(round(2 * math.pi * radius / dx)))
-        ok &= len(ring) == want and (want == 1 or closest(ring) > 0.999 * 2 * radius * math.sin(math.pi / want))
-that(ok, "interior rings: on r = R - i dx (i >= 1), round(2 pi r / dx) equally spaced particles each")
-disc_r = math.pi * (R - dx / 2) ** 2 / dx ** 2
-that(abs(per_r / disc_r - 1).max() < 0.01,
-     "interior rings: per plane pi (R - dx/2)^2 / dx^2 particles within 1 % (the lattice's: the disc of R - eps dx)",
-     f"{sorted(set(per_r))} against {disc_r:.1f}")
-that(closest(qr, sr.x[sr.curve == 0]) >= 0.99 * dx and closest(qr, sr.x[sr.wall]) >= eps * dx * (1 - 1e-12)
-     and closest(qr) >= 0.6 * dx,
-     "interior rings: a spacing from the curved wall, eps dx from the lids (the lattice's planes), at "
-     "least 0.6 dx apart (the innermost ring's chord)",
-     f"{closest(qr, sr.x[sr.curve == 0]) / dx:.3f} dx, {closest(qr, sr.x[sr.wall]) / dx:.3f} dx, "
-     f"{closest(qr) / dx:.3f} dx")
-that(np.array_equal(sr.type[sr.interior] == 6, qr[:, 2] >= zs), "interior rings: type 6 from z_split up")
-# the 3-D tank's set-up (tools/mixing_tank.py): the fluid's particles fill
-# the cylinder of the wall surface, which the lattice does to 76 % at 10 across
-import mixing_tank
-with tempfile.TemporaryDirectory() as tmp:
-    for n_across in (10, 16):
-        dxt = mixing_tank.write_tank_data(n_across, os.path.join(tmp, "tank.data"))
-        td = sb.read_data(os.path.join(tmp, "tank.data"))
-        fill = np.isin(td["type"], [1, 6]).sum() * dxt ** 3 / (math.pi * mixing_tank.R ** 2 * mixing_tank.H)
-        that(abs(fill - 1) < 0.01, f"mixing_tank.py at {n_across} across: the fluid's particles fill the "
-             "tank (count dp^3 / pi R^2 H within 1 %)", f"{fill:.4f}")
 
 finish()
