@@ -160,6 +160,36 @@ def analyse_tank(work, text, var):
         math.isfinite(t) and math.isfinite(v)
 
 
+def analyse_tank3d(work, text, var):
+    """No reference: the particles inside, the density's range and the
+    temperature's axisymmetry at the end (tools/mixing_tank.py)."""
+    import numpy as np
+    import mixing_tank
+    from sphthermal_tools.dump import read_frames
+    m = re.search(r"^final: t = \S+ s, mean T (\S+) K, (\d+) fluid atoms, (\d+) inside", text, re.M)
+    path = os.path.join(work, var["out"] + ".final")
+    if not m or not os.path.exists(path):
+        return "no reference (no final line or dump)", False
+    frame = read_frames(path)[-1][1]
+    fluid = mixing_tank.fluid_of(frame, 3)
+    rho = frame["c_rho"][fluid] / mixing_tank.RHO0 - 1
+    (t_spread, _), _ = mixing_tank.symmetry_3d({k: v[fluid] for k, v in frame.items()}, float(var["dx"]))
+    finite = all(math.isfinite(x) for x in (number(m.group(1)), rho.min(), rho.max(), t_spread))
+    return (f"no reference ({m.group(3)} of {m.group(2)} fluid particles inside; density "
+            f"{100 * rho.min():+.2f} to {100 * rho.max():+.2f} % of rho0; T axisymmetric to "
+            f"{t_spread:.1e} of theta_H - theta_C)"), finite
+
+
+def tank3d_data(work, var):
+    """The particles of the 3-D tank (tools/mixing_tank.py), n across."""
+    import mixing_tank
+    var = dict(var)
+    data = os.path.join(work, "tank.data")
+    var["dx"] = repr(mixing_tank.write_tank_data(int(var.pop("n")), data))
+    var["data"] = data
+    return var
+
+
 # ---------------------------------------------------------------- the cases
 # variants: (name, changed variables, None or the reason it is not run)
 
@@ -224,6 +254,17 @@ CASES = {
                   ("2x Re / 10x Ra", {}, "not applicable (the fluid's properties are fixed)")]
         + jitters(),
         analyse=analyse_tank),
+    "tank3d": dict(
+        input="mixing-tank-3d/in.tank3d",
+        what="two-component heated cylindrical tank (3-D), 10 across, to t = 1 s",
+        base={"n": "10", "tend": "1.0", "every": "100", "dumpdt": "0.5", "out": "tank.dump",
+              "mixing": "mixing.txt"},
+        prepare=tank3d_data,
+        variants=[("base", {}, None),
+                  ("2x resolution", {"n": "20"}, None),
+                  ("2x Re / 10x Ra", {}, "not applicable (the fluid's properties are fixed)")]
+        + jitters(),
+        analyse=analyse_tank3d),
 }
 
 # the CI subset: short jittered runs (under 90 s in all)
@@ -254,6 +295,8 @@ def run_case(args, case, variant, var, cmdline):
     work = os.path.join(args.out, case, slug(variant))
     os.makedirs(work, exist_ok=True)
     log = os.path.join(work, "log.lammps")
+    if spec.get("prepare"):
+        var = spec["prepare"](work, var)
     cmd = [args.lmp, "-in", os.path.join(EX, spec["input"]), "-var", "plugin", args.plugin]
     for name, value in var.items():
         cmd += ["-var", name, value]
