@@ -10,9 +10,11 @@
 set -euo pipefail
 
 # liblapack-dev: LAMMPS's RHEO package (the bench's peer) needs LAPACK, which
-# Debian's repacked 4Feb2025 source does not bundle (no lib/linalg)
+# Debian's repacked 4Feb2025 source does not bundle (no lib/linalg);
+# python3-docutils: the docs.rst tests (every page parses), left out without it
 packages="build-essential cmake ccache git dpkg-dev pkg-config libopenmpi-dev openmpi-bin
-  libfftw3-dev googletest libyaml-dev liblapack-dev python3-numpy python3-matplotlib python3-scipy"
+  libfftw3-dev googletest libyaml-dev liblapack-dev python3-numpy python3-matplotlib python3-scipy
+  python3-docutils"
 
 missing=""
 for p in $packages; do
