@@ -163,7 +163,6 @@ def analyse_tank(work, text, var):
 def analyse_tank3d(work, text, var):
     """No reference: the particles inside, the density's range and the
     temperature's axisymmetry at the end (tools/mixing_tank.py)."""
-    import numpy as np
     import mixing_tank
     from sphthermal_tools.dump import read_frames
     m = re.search(r"^final: t = \S+ s, mean T (\S+) K, (\d+) fluid atoms, (\d+) inside", text, re.M)
