@@ -205,7 +205,17 @@ void FixSPHBoussinesq::init()
   const int known = gravity_keyword || SPHBodyForce::constant(SPHBodyForce::source(lmp));
   if (known && !gravity_keyword)
     SPHBodyForce::check_finite(lmp, FLERR, "Fix sph/boussinesq", buoyancy.gravity);
+  // an 'auto' speed of sound is found here, before any force: it needs g
+  if (!compression_checked && !known)
+    for (int t = 1; t <= atom->ntypes; t++)
+      if (present[t] && beta[t] != 0.0 && materials->sound_speed_pending(t))
+        error->all(FLERR,
+                   "Fix sph/boussinesq: the speed of sound of atom type {} is 'auto' (fix "
+                   "sph/materials), found from g at the run's init, but the gravity of fix {} "
+                   "is a variable's: give c0, or the 'gravity' keyword",
+                   t, SPHBodyForce::source(lmp)->id);
   if (!compression_checked && known) {
+    derive_sound_speeds(materials);
     check_compression();
     compression_checked = 1;
   }
@@ -227,18 +237,19 @@ void FixSPHBoussinesq::setup(int vflag)
    (a column at the largest |T - T0| there can be; the temperatures stay
    within those at the start without heat sources). The temperatures: all
    atoms' but those of fix sph/wall/dirichlet, whose own are extrapolated,
-   and its wall temperatures. Checked once, at the first run's init (at its
-   set-up when fix gravity's acceleration is a variable's).
+   and its wall temperatures. Found once, at the first run's init (at its
+   set-up when fix gravity's acceleration is a variable's); 0 when g, the
+   extent or the temperature difference is
 ------------------------------------------------------------------------- */
 
-void FixSPHBoussinesq::check_compression()
+int FixSPHBoussinesq::compression_scale(double &gnorm, double &dt_max, double &extent)
 {
   const SPHParticles particles(atom);
   const double *const g = buoyancy.gravity;
   // scaled: |g| of a typo such as 1e300 must not overflow to inf
   const double gmax = fmax(fabs(g[0]), fmax(fabs(g[1]), fabs(g[2])));
-  if (!(gmax > 0.0)) return;
-  const double gnorm = gmax *
+  if (!(gmax > 0.0)) return 0;
+  gnorm = gmax *
       sqrt((g[0] / gmax) * (g[0] / gmax) + (g[1] / gmax) * (g[1] / gmax) +
            (g[2] / gmax) * (g[2] / gmax));
   const double unit[3] = {g[0] / gnorm, g[1] / gnorm, g[2] / gnorm};
@@ -267,9 +278,54 @@ void FixSPHBoussinesq::check_compression()
   }
   double all[3];
   MPI_Allreduce(local, all, 3, MPI_DOUBLE, MPI_MAX, world);
-  const double extent = all[0] + all[1];
-  const double dt_max = all[2];
-  if (!(extent > 0.0) || !(dt_max > 0.0)) return;
+  extent = all[0] + all[1];
+  dt_max = all[2];
+  return (extent > 0.0) && (dt_max > 0.0);
+}
+
+/* ----------------------------------------------------------------------
+   'eos ... auto' of fix sph/materials: the speed of sound of each buoyant
+   type of the group at which the compression bound of check_compression()
+   holds with equality, c0^2 = |g| beta max|T - T0| L / MAX_COMPRESSION
+------------------------------------------------------------------------- */
+
+void FixSPHBoussinesq::derive_sound_speeds(FixSPHMaterials *materials)
+{
+  const std::vector<int> present = SPHCheck::group_types(lmp, groupbit);
+  int pending = 0;
+  for (int t = 1; t <= atom->ntypes; t++)
+    if (present[t] && beta[t] != 0.0 && materials->sound_speed_pending(t)) pending = t;
+  if (!pending) return;
+  double gnorm = 0.0, dt_max = 0.0, extent = 0.0;
+  if (!compression_scale(gnorm, dt_max, extent))
+    error->all(FLERR,
+               "Fix sph/boussinesq: the speed of sound of atom type {} is 'auto' (fix "
+               "sph/materials), found from the buoyancy's compression |g| beta max|T - T0| L, "
+               "but that is 0 at this run's start (|g| = {:.6g}, max|T - T0| = {:.6g}, L = "
+               "{:.6g}): give c0",
+               pending, gnorm, dt_max, extent);
+  for (int t = 1; t <= atom->ntypes; t++) {
+    if (!present[t] || beta[t] == 0.0 || !materials->sound_speed_pending(t)) continue;
+    const double c0 = sqrt(gnorm * fabs(beta[t]) * dt_max * extent / MAX_COMPRESSION);
+    materials->set_sound_speed(
+        t, c0,
+        fmt::format("auto: the buoyancy of fix sph/boussinesq {} compresses it by {}, |g| beta "
+                    "max|T - T0| L / c0^2 with |g| = {:.6g}, beta = {:.6g}, max|T - T0| = {:.6g}, "
+                    "L = {:.6g}",
+                    id, MAX_COMPRESSION, gnorm, beta[t], dt_max, extent));
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the pressure that balances the buoyancy compresses a weakly compressible
+   fluid by at most |g| beta max|T - T0| L / c0^2 (compression_scale):
+   an error above 1, a warning above MAX_COMPRESSION
+------------------------------------------------------------------------- */
+
+void FixSPHBoussinesq::check_compression()
+{
+  double gnorm = 0.0, dt_max = 0.0, extent = 0.0;
+  if (!compression_scale(gnorm, dt_max, extent)) return;
 
   // the type of the group compressed the most
   FixSPHMaterials *materials = FixSPHMaterials::find(lmp, "Fix sph/boussinesq");
@@ -292,7 +348,8 @@ void FixSPHBoussinesq::check_compression()
                "check T0, beta and g",
                worst_type, group->names[igroup], worst, gnorm, beta[worst_type], dt_max, extent,
                worst_c0);
-  if (worst > MAX_COMPRESSION && comm->me == 0)
+  // (an 'auto' c0 meets the bound to round-off)
+  if (worst > MAX_COMPRESSION * (1.0 + 1e-12) && comm->me == 0)
     error->warning(FLERR,
                    "Fix sph/boussinesq: the buoyancy may compress atom type {} of group {} by up "
                    "to {:.3g} (|g| beta max|T - T0| L / c0^2 with |g| = {:.6g}, beta = {:.6g}, "

@@ -50,6 +50,8 @@ class FixSPHBoussinesq : public Fix {
   int force_summed;
   int zero_warned;            // the warning of fix gravity's magnitude 0 given
   int compression_checked;    // check_compression() done (at the first setup)
+  int compression_scale(double &gnorm, double &dt_max, double &extent);
+  void derive_sound_speeds(class FixSPHMaterials *materials);
   void check_compression();
   void update_mean_reference();
   double checked_mean(const double sum[3], const std::string &head);

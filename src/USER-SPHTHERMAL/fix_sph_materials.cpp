@@ -21,6 +21,7 @@
 #include "tokenizer.h"
 #include "update.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -34,7 +35,8 @@ static const char cmd[] = "fix sph/materials";
 
 FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), state(new SPHAtomState(lmp, this)), eos_type(nullptr), eos_set(nullptr),
-    cv_type(nullptr), rho0_type(nullptr), expansion_type(nullptr)
+    cv_type(nullptr), rho0_type(nullptr), expansion_type(nullptr), c0_kind(nullptr),
+    background_relative(nullptr)
 {
   ntypes = atom->ntypes;
   conductivity_laws.resize(ntypes + 1);
@@ -51,8 +53,12 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
   memory->create(cv_type, ntypes + 1, "sph/materials:cv");
   memory->create(rho0_type, ntypes + 1, "sph/materials:rho0");
   memory->create(expansion_type, ntypes + 1, "sph/materials:expansion");
+  memory->create(c0_kind, ntypes + 1, "sph/materials:c0_kind");
+  memory->create(background_relative, ntypes + 1, "sph/materials:background_relative");
   for (int i = 0; i <= ntypes; i++) {
     eos_set[i] = 0;
+    c0_kind[i] = C0_GIVEN;
+    background_relative[i] = NAN;
     cv_type[i] = rho0_type[i] = -1.0;
     expansion_type[i] = 0.0;
   }
@@ -120,7 +126,13 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
                    cmd, i, eos_type[i].t0);
       eos_type[i].beta = expansion_type[i];
     }
+    if (std::isfinite(background_relative[i]))
+      eos_type[i].p_background =
+          background_relative[i] * rho0_type[i] * eos_type[i].c0 * eos_type[i].c0;
   }
+  // the speeds that the scene gives are kept in restart files
+  for (int i = 1; i <= ntypes; i++)
+    if (c0_kind[i] == C0_PENDING) restart_global = 1;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -133,6 +145,8 @@ FixSPHMaterials::~FixSPHMaterials()
   memory->destroy(cv_type);
   memory->destroy(rho0_type);
   memory->destroy(expansion_type);
+  memory->destroy(c0_kind);
+  memory->destroy(background_relative);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -150,6 +164,74 @@ void FixSPHMaterials::init()
 {
   state->init();
   for (int i = 0; i <= ntypes; i++) conductivity_laws[i].warned = viscosity_laws[i].warned = 0;
+}
+
+/* ----------------------------------------------------------------------
+   at the first force evaluation of a run every speed of sound of the
+   run's types is known: an 'auto' one is found at the init of the style
+   that derives it
+------------------------------------------------------------------------- */
+
+void FixSPHMaterials::setup_pre_force(int /*vflag*/)
+{
+  state->stale();
+  int pending = 0;
+  for (int t = 1; t <= ntypes; t++) pending |= (c0_kind[t] == C0_PENDING);
+  if (!pending) return;
+  const std::vector<int> present = SPHCheck::group_types(lmp, 1);    // group all
+  for (int t = 1; t <= ntypes; t++)
+    if (present[t] && c0_kind[t] == C0_PENDING)
+      error->all(FLERR,
+                 "Fix sph/materials: the speed of sound of atom type {} is 'auto', but nothing "
+                 "in this run derives it (fix sph/boussinesq does, for the types of its group "
+                 "with an expansion coefficient): give c0 in its eos",
+                 t);
+}
+
+/* ----------------------------------------------------------------------
+   an 'auto' speed of sound found from the scene; logged once
+------------------------------------------------------------------------- */
+
+void FixSPHMaterials::set_sound_speed(int type, double c0, const std::string &why)
+{
+  if (c0_kind[type] != C0_PENDING) return;
+  eos_type[type].c0 = c0;
+  c0_kind[type] = C0_FOUND;
+  std::string background;
+  if (std::isfinite(background_relative[type])) {
+    eos_type[type].p_background = background_relative[type] * eos_type[type].rho0 * c0 * c0;
+    background = fmt::format(", background pressure {:.6g} ({} rho0 c0^2)",
+                             eos_type[type].p_background, background_relative[type]);
+  }
+  if (comm->me == 0)
+    utils::logmesg(lmp, "Fix sph/materials: speed of sound of atom type {} is {:.6g} ({}){}\n",
+                   type, c0, why, background);
+}
+
+/* ----------------------------------------------------------------------
+   restart state: the speed of sound of each type found from the scene (0
+   for the others); a pending 'auto' type takes it back, so a restarted
+   run goes on at the speed it started with
+------------------------------------------------------------------------- */
+
+static constexpr int RESTART_VERSION = 1;
+
+void FixSPHMaterials::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  std::vector<double> state(ntypes + 1, 0.0);    // the number of types, each one's c0
+  state[0] = ntypes;
+  for (int t = 1; t <= ntypes; t++)
+    if (c0_kind[t] == C0_FOUND) state[t] = eos_type[t].c0;
+  SPHCheck::write_restart_state(fp, RESTART_VERSION, state.data(), ntypes + 1);
+}
+
+void FixSPHMaterials::restart(char *buf)
+{
+  const double *state = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION);
+  const int n = (int) state[0];
+  for (int t = 1; t <= ntypes && t <= n; t++)
+    if (state[t] > 0.0) set_sound_speed(t, state[t], "auto, from the restart file");
 }
 
 /* ----------------------------------------------------------------------
@@ -349,7 +431,8 @@ int FixSPHMaterials::parse_law(std::vector<MaterialLaw> &laws, int ilo, int ihi,
 }
 
 /* ----------------------------------------------------------------------
-   'eos tait <c0> <gamma> [background <P>]' or 'eos linear <c0> [background <P>]'
+   'eos tait <c0> <gamma> [options]' or 'eos linear <c0> [options]', c0 a
+   speed or 'auto'; options: background <P> [relative], thermal <T0>
 ------------------------------------------------------------------------- */
 
 int FixSPHMaterials::parse_eos(int ilo, int ihi, const std::vector<std::string> &words,
@@ -368,10 +451,13 @@ int FixSPHMaterials::parse_eos(int ilo, int ihi, const std::vector<std::string> 
   sphe_eos eos;
   memset(&eos, 0, sizeof(eos));
   eos.kind = kind;
-  eos.c0 = positive(words[iword + 2], "speed of sound", where, false);
+  // 'auto': found from the scene at the first run (set_sound_speed)
+  const int c0_auto = (words[iword + 2] == "auto");
+  eos.c0 = c0_auto ? 0.0 : positive(words[iword + 2], "speed of sound", where, false);
   if (kind == SPHE_TAIT) eos.gamma = positive(words[iword + 3], "gamma", where, false);
   int taken = 2 + ncoeffs;
-  // options, in any order: background P, thermal T0
+  double relative = NAN;
+  // options, in any order: background P [relative], thermal T0
   while (left >= (size_t) taken &&
          (words[iword + taken] == "background" || words[iword + taken] == "thermal")) {
     const std::string &option = words[iword + taken];
@@ -380,6 +466,12 @@ int FixSPHMaterials::parse_eos(int ilo, int ihi, const std::vector<std::string> 
     const double value = utils::numeric(FLERR, words[iword + taken + 1].c_str(), false, lmp);
     if (option == "background") {
       eos.p_background = value;
+      relative = NAN;
+      // a multiple of rho0 c0^2, set once both are known
+      if (left >= (size_t) taken + 2 && words[iword + taken + 2] == "relative") {
+        relative = value;
+        taken++;
+      }
     } else {
       // beta is the type's expansion, checked once every property is known
       eos.thermal = 1;
@@ -390,6 +482,8 @@ int FixSPHMaterials::parse_eos(int ilo, int ihi, const std::vector<std::string> 
   for (int i = ilo; i <= ihi; i++) {
     eos_type[i] = eos;
     eos_set[i] = 1;
+    c0_kind[i] = c0_auto ? C0_PENDING : C0_GIVEN;
+    background_relative[i] = relative;
   }
   return taken;
 }

@@ -54,8 +54,9 @@ class FixSPHMaterials : public Fix {
     return checked(viscosity_laws[type], type, T, who, "viscosity");
   }
   void init() override;
-  // the per-atom state is stale before every force evaluation
-  void setup_pre_force(int) override { state->stale(); }
+  // the per-atom state is stale before every force evaluation; at the
+  // first, every 'auto' speed of sound of the run's types must be known
+  void setup_pre_force(int) override;
   void pre_force(int) override { state->stale(); }
   void min_pre_force(int) override { state->stale(); }
   // the per-atom state the pair styles derive, filled once per force
@@ -78,6 +79,17 @@ class FixSPHMaterials : public Fix {
   double rho0(int type) const { return rho0_type[type]; }
   double expansion(int type) const { return expansion_type[type]; }
 
+  // 'eos ... auto': the speed of sound of a type is found from the scene at
+  // the first run's init (fix sph/boussinesq's compression bound); until
+  // then its eos has c0 = 0
+  int sound_speed_pending(int type) const { return c0_kind[type] == C0_PENDING; }
+  // give a pending type its speed of sound (and a background given
+  // relative to rho0 c0^2); the log says the value and 'why'
+  void set_sound_speed(int type, double c0, const std::string &why);
+  // the speeds found carry across restarts
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+
  protected:
   // a law of one type: the C description and the storage of its table
   struct MaterialLaw {
@@ -92,6 +104,9 @@ class FixSPHMaterials : public Fix {
   sphe_eos *eos_type;
   int *eos_set;
   double *cv_type, *rho0_type, *expansion_type;
+  enum { C0_GIVEN = 0, C0_PENDING, C0_FOUND };
+  int *c0_kind;                   // per type: given, 'auto' pending or found
+  double *background_relative;    // per type: 'background B relative' B, else NaN
 
   static const sphm_law *law_of(const std::vector<MaterialLaw> &laws, int type)
   {

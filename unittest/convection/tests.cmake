@@ -96,6 +96,12 @@ sphthermal_python_test(convection.cavity_defaults convection/test_walls.py LAMMP
   LABELS unit)
 # the corrections' defaults from the scene (buoyancy or not, pressure form, restart)
 sphthermal_python_test(convection.scene_defaults convection/test_scene_defaults.py LAMMPS LABELS unit)
+# 'eos ... auto': the speed of sound from fix sph/boussinesq's compression
+# bound, a background relative to rho0 c0^2, tait, restart; 2 ranks alike
+sphthermal_python_test(convection.sound_speed_auto convection/test_sound_speed_auto.py LAMMPS
+  LABELS unit)
+sphthermal_python_test(convection.mpi.sound_speed_auto_np2 convection/test_sound_speed_auto.py
+  LAMMPS ARGS --np 2 --mpirun ${MPIRUN} LABELS mpi PROCESSORS 2)
 # fix sph/hold/volume: the layer's volume held to round-off, and across a restart
 sphthermal_python_test(convection.hold_volume convection/test_hold_volume.py LAMMPS LABELS unit)
 sphthermal_python_test(convection.mpi.hold_volume_np2 convection/test_hold_volume.py LAMMPS
