@@ -286,7 +286,8 @@ int FixSPHBoussinesq::compression_scale(double &gnorm, double &dt_max, double &e
 /* ----------------------------------------------------------------------
    'eos ... auto' of fix sph/materials: the speed of sound of each buoyant
    type of the group at which the compression bound of check_compression()
-   holds with equality, c0^2 = |g| beta max|T - T0| L / MAX_COMPRESSION
+   holds with equality, c0^2 = |g| beta max|T - T0| L / MAX_COMPRESSION;
+   the other types with 'auto' take the largest of these
 ------------------------------------------------------------------------- */
 
 void FixSPHBoussinesq::derive_sound_speeds(FixSPHMaterials *materials)
@@ -304,9 +305,11 @@ void FixSPHBoussinesq::derive_sound_speeds(FixSPHMaterials *materials)
                "but that is 0 at this run's start (|g| = {:.6g}, max|T - T0| = {:.6g}, L = "
                "{:.6g}): give c0",
                pending, gnorm, dt_max, extent);
+  double fastest = 0.0;
   for (int t = 1; t <= atom->ntypes; t++) {
     if (!present[t] || beta[t] == 0.0 || !materials->sound_speed_pending(t)) continue;
     const double c0 = sqrt(gnorm * fabs(beta[t]) * dt_max * extent / MAX_COMPRESSION);
+    fastest = fmax(fastest, c0);
     materials->set_sound_speed(
         t, c0,
         fmt::format("auto: the buoyancy of fix sph/boussinesq {} compresses it by {}, |g| beta "
@@ -314,6 +317,15 @@ void FixSPHBoussinesq::derive_sound_speeds(FixSPHMaterials *materials)
                     "L = {:.6g}",
                     id, MAX_COMPRESSION, gnorm, beta[t], dt_max, extent));
   }
+  // the other 'auto' types that have atoms (the walls of fix sph/wall/adami,
+  // which take the pressure of the fluid they bound): the fastest found
+  const std::vector<int> anywhere = SPHCheck::group_types(lmp, 1);    // group all
+  for (int t = 1; t <= atom->ntypes; t++)
+    if (anywhere[t] && materials->sound_speed_pending(t))
+      materials->set_sound_speed(
+          t, fastest,
+          fmt::format("auto: without buoyancy in fix sph/boussinesq {}, the fastest of its types",
+                      id));
 }
 
 /* ----------------------------------------------------------------------

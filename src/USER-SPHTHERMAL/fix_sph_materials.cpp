@@ -183,8 +183,8 @@ void FixSPHMaterials::setup_pre_force(int /*vflag*/)
     if (present[t] && c0_kind[t] == C0_PENDING)
       error->all(FLERR,
                  "Fix sph/materials: the speed of sound of atom type {} is 'auto', but nothing "
-                 "in this run derives it (fix sph/boussinesq does, for the types of its group "
-                 "with an expansion coefficient): give c0 in its eos",
+                 "in this run derives it (fix sph/boussinesq does, from its group's types with "
+                 "an expansion coefficient): give c0 in its eos",
                  t);
 }
 
