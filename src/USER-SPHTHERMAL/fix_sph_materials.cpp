@@ -126,9 +126,7 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
                    cmd, i, eos_type[i].t0);
       eos_type[i].beta = expansion_type[i];
     }
-    if (std::isfinite(background_relative[i]))
-      eos_type[i].p_background =
-          background_relative[i] * rho0_type[i] * eos_type[i].c0 * eos_type[i].c0;
+    apply_relative_background(i);
   }
   // the speeds that the scene gives are kept in restart files
   for (int i = 1; i <= ntypes; i++)
@@ -198,14 +196,25 @@ void FixSPHMaterials::set_sound_speed(int type, double c0, const std::string &wh
   eos_type[type].c0 = c0;
   c0_kind[type] = C0_FOUND;
   std::string background;
-  if (std::isfinite(background_relative[type])) {
-    eos_type[type].p_background = background_relative[type] * eos_type[type].rho0 * c0 * c0;
+  if (apply_relative_background(type))
     background = fmt::format(", background pressure {:.6g} ({} rho0 c0^2)",
                              eos_type[type].p_background, background_relative[type]);
-  }
   if (comm->me == 0)
     utils::logmesg(lmp, "Fix sph/materials: speed of sound of atom type {} is {:.6g} ({}){}\n",
                    type, c0, why, background);
+}
+
+/* ----------------------------------------------------------------------
+   'background B relative': the pressure B rho0 c0^2 of a type, once its c0
+   is given or found; 1 when the type has such a background
+------------------------------------------------------------------------- */
+
+int FixSPHMaterials::apply_relative_background(int type)
+{
+  if (!std::isfinite(background_relative[type])) return 0;
+  const sphe_eos &eos = eos_type[type];
+  eos_type[type].p_background = background_relative[type] * eos.rho0 * eos.c0 * eos.c0;
+  return 1;
 }
 
 /* ----------------------------------------------------------------------

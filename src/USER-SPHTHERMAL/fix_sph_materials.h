@@ -133,6 +133,7 @@ class FixSPHMaterials : public Fix {
   static std::string input_script_dir();
   void read_file(const std::string &file, const std::vector<std::string> &names,
                  const std::vector<int> &types);
+  int apply_relative_background(int type);
   double positive(const std::string &word, const std::string &what, const std::string &where,
                   bool zero_ok);
 };
