@@ -36,6 +36,7 @@
 #include "group.h"
 #include "integrate.h"
 #include "modify.h"
+#include "output.h"
 #include "pair_sph_cleary_heat.h"
 #include "sph_body_force.h"
 #include "sph_checks.h"
@@ -259,7 +260,7 @@ void FixSPHDtReset::setup(int /*vflag*/)
 {
   choose_dt();
   if (until < 0.0) return;
-  if (end_at_until() && update->nsteps > 0 && comm->me == 0)
+  if (end_at_until(true) && update->nsteps > 0 && comm->me == 0)
     error->warning(FLERR,
                    "Fix sph/dt/reset {}: the elapsed time {} is already at until {}: the run of {} "
                    "steps stops before its first step",
@@ -269,7 +270,7 @@ void FixSPHDtReset::setup(int /*vflag*/)
 void FixSPHDtReset::end_of_step()
 {
   if (update->ntimestep % reset_every == 0) choose_dt();
-  if (until >= 0.0 && end_at_until() && comm->me == 0)
+  if (until >= 0.0 && end_at_until(false) && comm->me == 0)
     utils::logmesg(lmp, "Fix sph/dt/reset {}: the elapsed time reached until {} at step {}: the run stops\n",
                    id, until, update->ntimestep);
 }
@@ -292,10 +293,14 @@ double FixSPHDtReset::elapsed_time() const
    'until': stop the run once the elapsed time has reached it (to
    round-off), else shorten dt when at most two steps are left: the last
    step lands on it, two steps share what is left rather than the second
-   being a sliver. Returns 1 when the run stops.
+   being a sliver. Returns 1 when the run stops. The last step gets a
+   thermo row of its own, as the last step of a run of fixed length does:
+   it is scheduled at the step before, since computes that tally energy
+   must know before their step begins; at setup, where Output::setup comes
+   after and would undo it, one step left becomes two.
 ------------------------------------------------------------------------- */
 
-int FixSPHDtReset::end_at_until()
+int FixSPHDtReset::end_at_until(bool at_setup)
 {
   const double left = until - elapsed_time();
   if (left <= 1.0e-9 * until) {
@@ -303,9 +308,15 @@ int FixSPHDtReset::end_at_until()
     timer->force_timeout();
     return 1;
   }
-  if (left <= update->dt)
+  if (left <= update->dt && !at_setup) {
     set_dt(left);
-  else if (left < 2.0 * update->dt)
+    const bigint last = update->ntimestep + 1;
+    if (output->next_thermo > last) {
+      output->next_thermo = last;
+      output->next = MIN(output->next, last);
+    }
+    modify->addstep_compute(last);
+  } else if (left < 2.0 * update->dt)
     set_dt(0.5 * left);
   return 0;
 }

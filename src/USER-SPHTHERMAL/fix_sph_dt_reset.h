@@ -66,7 +66,7 @@ class FixSPHDtReset : public Fix {
   void choose_dt();
   void set_dt(double);
   double elapsed_time() const;
-  int end_at_until();
+  int end_at_until(bool at_setup);
   void setup_pre_force(int) override;
   void pre_force(int) override;
   void bad_limit(int);

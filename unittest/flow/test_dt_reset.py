@@ -19,7 +19,9 @@
               round-off), every earlier step but the last two takes the
               chosen dt, with N = 1 and N = 5; a run after it (the fix given
               again with a later T) goes on to that T; a run that starts at
-              T stops before its first step with a warning
+              T stops before its first step with a warning, one that starts
+              1e-8 before T takes two equal steps; with thermo every 7
+              steps the stop step has its thermo row
 
 The limits are written out here independently of the C++ code:
   acoustic C_a h / (c_i + |v_i|), force C_f sqrt(h m_i / |f_i|),
@@ -398,6 +400,25 @@ def cmd_until(a):
         check_until(first, output, until, "first run", steps)
         check_until(second, output, 2 * until, "the fix given again with until 2T: the next run", steps)
         check(second[0]["time"] == first[-1]["time"], "the next run starts where the first stopped")
+        # thermo every 7 steps: the step the run stops at has its row
+        output = run_lammps(a, "in.dt_reset", {"n": 12, "dump": 0, "steps": steps, "thermo": 7,
+                                               "dtargs": f"min 0 until {until}"}, cwd=tmp)
+        rows = thermo_runs(output)[-1]
+        check(abs(rows[-1]["time"] - until) <= 1e-13 * until and rows[-1]["step"] % 7 != 0
+              and f"at step {rows[-1]['step']}: the run stops" in output,
+              f"thermo every 7 steps: the last row is the stop's, step {rows[-1]['step']} at time "
+              f"{rows[-1]['time']:.17g}")
+        # a run that starts less than a step before until: two steps share what is left
+        later = until + 1e-8
+        output = run_lammps(a, "in.dt_reset", {"n": 12, "dump": 0, "steps": steps, "split": "again",
+                                               "dtargs": f"min 0 until {until}",
+                                               "dtargs2": f"min 0 until {later!r}"}, cwd=tmp)
+        second = thermo_runs(output)[1]
+        steps_taken = [b["time"] - a_["time"] for a_, b in zip(second, second[1:])]
+        check(len(steps_taken) == 2 and abs(second[-1]["time"] - later) <= 1e-13 * later
+              and abs(steps_taken[0] - steps_taken[1]) <= 1e-3 * steps_taken[0],
+              f"a run that starts 1e-8 before until: {len(steps_taken)} steps of "
+              f"{steps_taken}, ends at {second[-1]['time']:.17g}")
         # a run that starts at until: not one step, and a warning
         output = run_lammps(a, "in.dt_reset", {"n": 12, "dump": 0, "steps": steps, "split": "twice",
                                                "dtargs": f"min 0 until {until}"}, cwd=tmp)

@@ -21,3 +21,14 @@ foreach(np 1 2)
 endforeach()
 # the 3-d boundary set-up: the closed cylindrical tank of tools/sph_boundary.py, read by LAMMPS
 sphthermal_python_test(setup.cylinder setup/test_cylinder_setup.py LAMMPS LABELS unit)
+# sph/faces: the groups of a walled block (2-d) and around a cylinder (3-d), 1 and 2 ranks
+foreach(dim 2 3)
+  foreach(np 1 2)
+    set(labels unit)
+    if(np GREATER 1)
+      set(labels unit mpi)
+    endif()
+    sphthermal_python_test(setup.faces.${dim}d.np${np} setup/test_faces.py LAMMPS
+      ARGS --dim ${dim} --np ${np} --mpirun ${MPIRUN} LABELS ${labels})
+  endforeach()
+endforeach()
