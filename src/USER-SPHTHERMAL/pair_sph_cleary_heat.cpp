@@ -47,10 +47,10 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     mean(SPHC_HARMONIC), loop_own(0), in_flow_loop(0), temperature(nullptr), mass_of(nullptr),
     volume(nullptr), conductivity(nullptr), eta2(0.0), materials(nullptr), conductivity_varies(0),
     conductance(nullptr), loop_conductance(nullptr), relax_wanted(0), relax_rate(nullptr),
-    nmax_relax(0), correct_request(-1), correct(SPHConductionWeights::NONE), correct_logged(-1),
-    sweeps(5), weights(nullptr), interface_types(nullptr), type_conductivity(nullptr),
-    interface(nullptr), nmax_pairs(0), pairs_x(nullptr), pairs_rho(nullptr), pairs_valid(0),
-    refresh_pairs(0)
+    nmax_relax(0), eta_request(-1.0), eta_logged(-1), correct_request(-1),
+    correct(SPHConductionWeights::NONE), correct_logged(-1), sweeps(5), weights(nullptr),
+    interface_types(nullptr), type_conductivity(nullptr), interface(nullptr), nmax_pairs(0),
+    pairs_x(nullptr), pairs_rho(nullptr), pairs_valid(0), refresh_pairs(0)
 {
   // S and the state of the correction; the interface's estimate; nu of 'correction second'
   comm_forward = SPHS_MAX;
@@ -294,6 +294,7 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
 {
   int iarg = parse_kernel(narg, arg);
   eta_factor = 0.1;
+  eta_request = -1.0;
   mean = SPHC_HARMONIC;
   correct_request = -1;
   sweeps = 5;
@@ -311,7 +312,7 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
       error->all(FLERR, "Illegal pair_style sph/cleary/heat command: missing value after '{}'",
                  arg[iarg]);
     if (strcmp(arg[iarg], "eta") == 0) {
-      eta_factor = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      eta_request = eta_factor = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (eta_factor < 0.0)
         error->all(FLERR, "Illegal pair_style sph/cleary/heat command: eta {} must be >= 0",
                    arg[iarg + 1]);
@@ -427,6 +428,13 @@ void PairSPHClearyHeat::init_style()
                           choice, correct_logged);
   } else
     correct = correct_request;
+  if (eta_request < 0.0) {
+    const SPHSceneDefaults::Choice choice = SPHSceneDefaults::heat_eta(lmp);
+    eta_factor = choice.number;
+    SPHSceneDefaults::log(lmp, "sph/cleary/heat", "eta", fmt::format("{:g}", eta_factor).c_str(),
+                          choice, eta_logged);
+  } else
+    eta_factor = eta_request;
   // the Hessian blocks of 'correction second' are the largest reverse
   // communication; Comm sizes its buffers after this (LAMMPS::init)
   comm_reverse = (correct == SPHConductionWeights::SECOND) ? SPHS_MAX * SPHS_MAX
@@ -473,7 +481,7 @@ void PairSPHClearyHeat::write_restart_settings(FILE *fp)
   fwrite(&kernel_kind, sizeof(int), 1, fp);
   fwrite(&mean, sizeof(int), 1, fp);
   fwrite(&cut_global, sizeof(double), 1, fp);
-  fwrite(&eta_factor, sizeof(double), 1, fp);
+  fwrite(&eta_request, sizeof(double), 1, fp);
   fwrite(&correct_request, sizeof(int), 1, fp);
   fwrite(&sweeps, sizeof(int), 1, fp);
   fwrite(&loop_own, sizeof(int), 1, fp);
@@ -490,7 +498,7 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &kernel_kind, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &mean, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &eta_factor, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &eta_request, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &correct_request, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &sweeps, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &loop_own, sizeof(int), 1, fp, nullptr, error);
@@ -504,7 +512,8 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
   MPI_Bcast(&kernel_kind, 1, MPI_INT, 0, world);
   MPI_Bcast(&mean, 1, MPI_INT, 0, world);
   MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&eta_factor, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&eta_request, 1, MPI_DOUBLE, 0, world);
+  eta_factor = (eta_request < 0.0) ? 0.1 : eta_request;    // the scene's default at init
   MPI_Bcast(&correct_request, 1, MPI_INT, 0, world);
   MPI_Bcast(&sweeps, 1, MPI_INT, 0, world);
   MPI_Bcast(&loop_own, 1, MPI_INT, 0, world);

@@ -120,6 +120,8 @@ class PairSPHClearyHeat : public PairSPHKernel {
   // and the Jacobi sweeps of 'consistent'; their weights (nullptr for none).
   // The command's request (-1: the scene's default, SPHSceneDefaults), what
   // init made of it, and the value last logged
+  double eta_request;    // eta given in the command, -1: the scene's default
+  int eta_logged;
   int correct_request;
   int correct;
   int correct_logged;

@@ -7,7 +7,9 @@
    cavity (de Vahl Davis 1983) the consistent conduction gives back the
    1.4-2 % of the wall heat that the plain operator loses on shifted
    particles; on unshifted ones (the onset of Rayleigh-Benard convection)
-   and on lattices the plain operator is the closer one.
+   and on lattices the plain operator is the closer one. eta: 0.01 in the
+   cavity, the tanks and the Rayleigh-Benard layer (shifted, buoyant),
+   Cleary's 0.1 in conduction, the channels and around bodies.
 ------------------------------------------------------------------------- */
 
 #include "sph_scene_defaults.h"
@@ -34,17 +36,33 @@ std::string buoyancy_fix(LAMMPS *lmp)
 }
 }    // namespace
 
-SPHSceneDefaults::Choice SPHSceneDefaults::heat_correction(LAMMPS *lmp)
+namespace {
+// in a buoyancy-driven flow of shifted particles, the scene's reason for
+// the log; empty otherwise
+std::string buoyant_shifted_flow(LAMMPS *lmp)
 {
   const std::string buoyancy = buoyancy_fix(lmp);
   const std::vector<FixSPHShift *> shifts = SPHHub(lmp).fixes<FixSPHShift>();
-  if (buoyancy.empty() || shifts.empty() || !SPHHub(lmp).flow())
-    return {SPHConductionWeights::NONE,
-            "the default without a buoyancy-driven flow of shifted particles"};
-  return {SPHConductionWeights::CONSISTENT,
-          fmt::format("the default with buoyancy and shifting, fix sph/boussinesq {} and fix "
-                      "sph/shift {}",
-                      buoyancy, shifts.front()->id)};
+  if (buoyancy.empty() || shifts.empty() || !SPHHub(lmp).flow()) return std::string();
+  return fmt::format("the default with buoyancy and shifting, fix sph/boussinesq {} and fix "
+                     "sph/shift {}",
+                     buoyancy, shifts.front()->id);
+}
+const char without[] = "the default without a buoyancy-driven flow of shifted particles";
+}    // namespace
+
+SPHSceneDefaults::Choice SPHSceneDefaults::heat_correction(LAMMPS *lmp)
+{
+  const std::string why = buoyant_shifted_flow(lmp);
+  if (why.empty()) return {SPHConductionWeights::NONE, without};
+  return {SPHConductionWeights::CONSISTENT, why};
+}
+
+SPHSceneDefaults::Choice SPHSceneDefaults::heat_eta(LAMMPS *lmp)
+{
+  const std::string why = buoyant_shifted_flow(lmp);
+  if (why.empty()) return {0, without, 0.1};
+  return {1, why, 0.01};
 }
 
 void SPHSceneDefaults::log(LAMMPS *lmp, const char *style, const char *setting, const char *value,

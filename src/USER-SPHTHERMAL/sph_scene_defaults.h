@@ -20,14 +20,19 @@ class LAMMPS;
 namespace SPHSceneDefaults {
 
   struct Choice {
-    int value;          // the setting, in the asking style's own code
-    std::string why;    // the scene's reason, for the log
+    int value;            // the setting, in the asking style's own code
+    std::string why;      // the scene's reason, for the log
+    double number = 0;    // the setting's value, for a number (value: which rule)
   };
 
   // 'correction' of pair sph/cleary/heat: consistent in a buoyancy-driven
   // flow of shifted particles (fix sph/shift), none otherwise
   // (SPHConductionWeights::Kind)
   Choice heat_correction(LAMMPS *lmp);
+
+  // 'eta' of pair sph/cleary/heat (number): 0.01 in a buoyancy-driven flow
+  // of shifted particles, as the flow pair's, 0.1 (Cleary's) otherwise
+  Choice heat_eta(LAMMPS *lmp);
 
   // log "<style>: <setting> <value> (<why>)" on rank 0 when 'choice'
   // differs from 'last' (the value last logged, -1 before the first)

@@ -5,7 +5,9 @@ applies it (the setup's count of corrected atoms); with buoyancy but no
 shifting, or without buoyancy, it takes none; a correction given in the
 command is kept and not called a default; after a restart without fix
 sph/boussinesq the default is taken again (none); the flow pair keeps its
-plain gradient (no scene default).
+plain gradient (no scene default). The same for 'eta': 0.01 with buoyancy
+and shifting, 0.1 otherwise, and applied: the fluid's energy after the step
+equals that of a run with 'eta 0.01' given, and differs from 'eta 0.1'.
 usage: test_scene_defaults.py --lmp LMP --plugin PLUGIN"""
 
 import argparse
@@ -20,6 +22,11 @@ from lammps_checks import lammps_arguments, run_input
 HEAT_DEFAULT = r"Pair style sph/cleary/heat: correction (\w+) \(the default ([^)]*)\)"
 FLOW_APPLIED = r"Pair style sph/harmonic/visc: correction gradient on \d+ fluid atoms"
 HEAT_APPLIED = r"Pair style sph/cleary/heat: correction consistent on \d+ of"
+ETA_DEFAULT = r"Pair style sph/cleary/heat: eta (\S+) \(the default ([^)]*)\)"
+
+
+def energy(out):
+    return float(re.search(r"^FLUID ENERGY (\S+)", out, re.M).group(1))
 
 
 def run(args, workdir, **variables):
@@ -42,14 +49,28 @@ def main():
          "with buoyancy and shifting the heat pair takes and applies correction consistent",
          str(taken(HEAT_DEFAULT, out)))
     that(re.search(FLOW_APPLIED, out) is None, "the flow pair keeps the plain gradient")
+    e_default = energy(out)
+    e_small = energy(run(args, workdir, buoyant="yes", heat="eta 0.01"))
+    e_cleary = energy(run(args, workdir, buoyant="yes", heat="eta 0.1"))
+    that(taken(ETA_DEFAULT, out) == ["0.01"] and e_default == e_small and e_default != e_cleary,
+         "with buoyancy and shifting the heat pair takes and applies eta 0.01",
+         f"{taken(ETA_DEFAULT, out)}: energy {e_default!r}, with eta 0.01 {e_small!r}, "
+         f"with eta 0.1 {e_cleary!r}")
 
     out = run(args, workdir, buoyant="yes", shift="no")
     that(taken(HEAT_DEFAULT, out) == ["none"] and re.search(HEAT_APPLIED, out) is None,
          "with buoyancy but no shifting the heat pair takes none", str(taken(HEAT_DEFAULT, out)))
+    that(taken(ETA_DEFAULT, out) == ["0.1"], "with buoyancy but no shifting eta 0.1",
+         str(taken(ETA_DEFAULT, out)))
 
     out = run(args, workdir, buoyant="no")
     that(taken(HEAT_DEFAULT, out) == ["none"] and re.search(HEAT_APPLIED, out) is None,
          "without buoyancy the heat pair takes none", str(taken(HEAT_DEFAULT, out)))
+    e_default = energy(out)
+    e_cleary = energy(run(args, workdir, buoyant="no", heat="eta 0.1"))
+    that(taken(ETA_DEFAULT, out) == ["0.1"] and e_default == e_cleary,
+         "without buoyancy the heat pair takes and applies eta 0.1",
+         f"{taken(ETA_DEFAULT, out)}: energy {e_default!r}, with eta 0.1 {e_cleary!r}")
 
     out = run(args, workdir, buoyant="yes", heat="correction none")
     that(not taken(HEAT_DEFAULT, out) and re.search(HEAT_APPLIED, out) is None,
@@ -60,6 +81,10 @@ def main():
     that(len(after) == 2 and taken(HEAT_DEFAULT, after[0]) == ["consistent"]
          and taken(HEAT_DEFAULT, after[1]) == ["none"],
          "the restart keeps 'default', taken again without buoyancy", str(taken(HEAT_DEFAULT, after[-1])))
+    that(len(after) == 2 and taken(ETA_DEFAULT, after[0]) == ["0.01"]
+         and taken(ETA_DEFAULT, after[1]) == ["0.1"],
+         "the restart keeps eta's 'default', taken again without buoyancy (0.1)",
+         str(taken(ETA_DEFAULT, after[-1])))
     finish()
 
 
