@@ -54,8 +54,8 @@ const char without[] = "the default without a buoyancy-driven flow of shifted pa
 SPHSceneDefaults::Choice SPHSceneDefaults::heat_correction(LAMMPS *lmp)
 {
   const std::string why = buoyant_shifted_flow(lmp);
-  if (why.empty()) return {SPHConductionWeights::NONE, without};
-  return {SPHConductionWeights::CONSISTENT, why};
+  if (why.empty()) return {SPHConductionWeights::NONE, without, 0.0};
+  return {SPHConductionWeights::CONSISTENT, why, 0.0};
 }
 
 SPHSceneDefaults::Choice SPHSceneDefaults::heat_eta(LAMMPS *lmp)

@@ -22,7 +22,7 @@ namespace SPHSceneDefaults {
   struct Choice {
     int value;            // the setting, in the asking style's own code
     std::string why;      // the scene's reason, for the log
-    double number = 0;    // the setting's value, for a number (value: which rule)
+    double number;        // the setting's value, for a number (value: which rule)
   };
 
   // 'correction' of pair sph/cleary/heat: consistent in a buoyancy-driven
