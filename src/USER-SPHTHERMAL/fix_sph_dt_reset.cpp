@@ -270,15 +270,21 @@ void FixSPHDtReset::setup(int /*vflag*/)
 void FixSPHDtReset::end_of_step()
 {
   if (update->ntimestep % reset_every == 0) choose_dt();
-  if (until >= 0.0 && end_at_until(false) && comm->me == 0)
-    utils::logmesg(lmp, "Fix sph/dt/reset {}: the elapsed time reached until {} at step {}: the run stops\n",
-                   id, until, update->ntimestep);
+  if (until >= 0.0) end_at_until(false);
 }
 
-// a run stopped at 'until' must not stop the next one
+// said after the run, below the last step's thermo row (a log parser reads
+// the table through to it); a run stopped at 'until' must not stop the next
 void FixSPHDtReset::post_run()
 {
-  if (halted) timer->reset_timeout();
+  if (halted) {
+    if (comm->me == 0)
+      utils::logmesg(lmp,
+                     "Fix sph/dt/reset {}: the elapsed time reached until {} at step {}: the run "
+                     "stopped\n",
+                     id, until, update->ntimestep);
+    timer->reset_timeout();
+  }
   halted = 0;
 }
 

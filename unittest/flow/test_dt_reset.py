@@ -369,7 +369,7 @@ def check_until(rows, output, until, label, steps):
     check(len(rows) - 1 < steps and abs(last["time"] - until) <= 1e-13 * until,
           f"{label}: the run stops after {len(rows) - 1} of {steps} steps at time {last['time']:.17g}, "
           f"until {until:.17g}")
-    check(f"reached until {until:g} at step {last['step']}: the run stops" in output,
+    check(f"reached until {until:g} at step {last['step']}: the run stopped" in output,
           f"{label}: the log names the step the run stops at ({last['step']})")
     # the chosen dt is the smallest limit (thermo prints the limits of the
     # last choice); only the last two steps are shortened
@@ -405,7 +405,7 @@ def cmd_until(a):
                                                "dtargs": f"min 0 until {until}"}, cwd=tmp)
         rows = thermo_runs(output)[-1]
         check(abs(rows[-1]["time"] - until) <= 1e-13 * until and rows[-1]["step"] % 7 != 0
-              and f"at step {rows[-1]['step']}: the run stops" in output,
+              and f"at step {rows[-1]['step']}: the run stopped" in output,
               f"thermo every 7 steps: the last row is the stop's, step {rows[-1]['step']} at time "
               f"{rows[-1]['time']:.17g}")
         # a run that starts less than a step before until: two steps share what is left

@@ -57,6 +57,13 @@ group top_bottom subtract wall hot_or_cold
 group upper region upper
 group toprow region toprow
 """
+CAVITY_GROUPS_FACES = """
+sph/faces all cavity inside fluid outside wall xlo hot xhi cold others top_bottom
+set group wall type 2
+group hot_or_cold union hot cold
+group upper region upper
+group toprow region toprow
+"""
 CAVITY_REGIONS = """
 region cavity block 0 12 0 12 INF INF
 region left block INF 0 INF INF INF INF
@@ -198,6 +205,8 @@ PROBES = {
     "compute_sph_nusselt": ("cavity", "compute nu hot sph/nusselt hot 1.0 1.0 1.0", "c_nu[*]", {}),
     "compute_sph_thermal": ("cavity", "compute th fluid sph/thermal", "c_th[*]", {}),
     "command_sph_set": ("cavity", "", "ke", {}),
+    # the cavity's groups from sph/faces instead of a region per side
+    "command_sph_faces": ("cavity", "", "ke", {"groups": CAVITY_GROUPS_FACES}),
 }
 
 STEPS = 10
@@ -216,7 +225,7 @@ def script(probe, plugin, restart_file, continue_from=None):
         text = f"plugin load {plugin}\n" + ("package omp 2\n" if omp else "")
         text += f"read_restart {continue_from}\n" + LATTICE + regions
     else:
-        text += LATTICE + atoms + regions + groups
+        text += LATTICE + atoms + regions + options.get("groups", groups)
     # each atom's lattice site: atom IDs depend on the number of ranks
     text += "fix origin all property/atom i_site\n"
     if not continue_from:
