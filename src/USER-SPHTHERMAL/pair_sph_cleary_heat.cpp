@@ -513,7 +513,6 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
   MPI_Bcast(&mean, 1, MPI_INT, 0, world);
   MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&eta_request, 1, MPI_DOUBLE, 0, world);
-  eta_factor = (eta_request < 0.0) ? 0.1 : eta_request;    // the scene's default at init
   MPI_Bcast(&correct_request, 1, MPI_INT, 0, world);
   MPI_Bcast(&sweeps, 1, MPI_INT, 0, world);
   MPI_Bcast(&loop_own, 1, MPI_INT, 0, world);

@@ -18,12 +18,11 @@ those computed here from its position:
 import argparse
 import os
 import re
-import sys
 import tempfile
 
 import numpy as np
 
-from sphtest import lammps_arguments
+from sphtest import Checks, finish, lammps_arguments
 from lammps_checks import read_dump, run_input
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -54,7 +53,7 @@ def main():
     lammps_arguments(p)
     p.add_argument("--dim", type=int, choices=[2, 3], required=True)
     a = p.parse_args()
-    failures = []
+    check = Checks()
     with tempfile.TemporaryDirectory() as work:
         out = run_input(a.lmp, os.path.join(HERE, "in.faces"),
                         {"plugin": a.plugin, "dim": a.dim, "out": "faces.dump"}, work, a.np, a.mpirun)
@@ -63,30 +62,20 @@ def main():
     for name, mask in want.items():
         got = d[f"v_{name}"] > 0.5
         wrong = int(np.sum(got != mask))
-        ok = wrong == 0 and mask.sum() > 0
-        print(f"{'ok' if ok else 'FAIL'}: group {name}: {int(got.sum())} atoms, {int(mask.sum())} "
-              f"expected from the positions, {wrong} misplaced ({a.np} ranks)")
-        if not ok:
-            failures.append(name)
+        check(wrong == 0 and mask.sum() > 0,
+              f"group {name}: {int(got.sum())} atoms, {int(mask.sum())} expected from the "
+              f"positions, {wrong} misplaced ({a.np} ranks)")
     for name in want:
         if name == "hot":
             continue  # the log counts the atoms added (atom 1 was there before)
         logged = re.search(rf"^sph/faces: (\d+) atoms of group all .* added to group {name}$", out, re.M)
-        ok = logged is not None and int(logged.group(1)) == int(want[name].sum())
-        print(f"{'ok' if ok else 'FAIL'}: the log gives group {name}'s count: "
-              f"{logged.group(1) if logged else 'no line'}")
-        if not ok:
-            failures.append(f"log {name}")
+        check(logged is not None and int(logged.group(1)) == int(want[name].sum()),
+              f"the log gives group {name}'s count: {logged.group(1) if logged else 'no line'}")
     if a.dim == 2:
         corner = (d["x"] < 0) & (d["y"] < 0)
-        ok = bool(np.all(d["v_bottom"][corner] > 0.5)) and corner.sum() == 9
-        print(f"{'ok' if ok else 'FAIL'}: the {int(corner.sum())} bottom-left corner atoms are in "
-              "bottom (listed before hot)")
-        if not ok:
-            failures.append("corner")
-    if failures:
-        sys.exit("FAIL: " + ", ".join(failures))
-    print("ok")
+        check(bool(np.all(d["v_bottom"][corner] > 0.5)) and corner.sum() == 9,
+              f"the {int(corner.sum())} bottom-left corner atoms are in bottom (listed before hot)")
+    finish(check.failures)
 
 
 if __name__ == "__main__":
