@@ -26,7 +26,8 @@ h / c0, and a run with the default fix sph/dt/reset 1):
   * a water column at rest in a tank (examples/flow-hydrostatic, 10 x 20,
     c0 = 10 sqrt(g H), Fourtakas's density diffusion), to t = 1.5 s;
   * two fluids layered in a column periodic in x (heavy below, density ratio
-    1, 10, 1000, same c0 and kinematic viscosity), to t = 1.5 s;
+    1, 10, 1000, same kinematic viscosity; the same c0, or the light fluid's
+    c0 giving it the heavy fluid's rho0 c0^2, *matched*), to t = 1.5 s;
     columns: unstable if the largest fluid speed exceeds 10 % of sqrt(g H),
     or on a LAMMPS error;
   * two fluids in layered Couette flow (examples/flow-two-fluid-couette,
@@ -85,10 +86,13 @@ POISEUILLE = dict(W=20.0, length=4.0, rho0=1.0, umax=0.80848, cfac=10.0, pb=0.01
 POISEUILLE_CASES = [(0.652, 20), (6.52, 20), (65.2, 20), (652.0, 20), (65.2, 40)]
 
 # columns under gravity: H = 1 m, g = 9.81, heavy fluid rho0 = 1000,
-# mu = 1e-3; c0 = 10 sqrt(g H) for both fluids; Fourtakas's diffusion
+# mu = 1e-3; c0 = 10 sqrt(g H) for the heavy fluid, and for the light one
+# unless matched; Fourtakas's diffusion
 COLUMN = dict(H=1.0, g=9.81, rho_heavy=1000.0, mu_heavy=1.0e-3, cfac=10.0, delta=0.1, eta=0.01,
               t_end=1.5, speed_limit=0.10)
-# name: (columns nx, rows ny, side walls?, rho_heavy / rho_light, delta)
+# name: (columns nx, rows ny, side walls?, rho_heavy / rho_light, delta[, matched]);
+# matched: the light fluid's c0 is sqrt(ratio) times the heavy's, the same
+# rho0 c0^2 (what pair sph/harmonic/visc asks for under a body force)
 COLUMN_CASES = {
     "tank, one fluid": (10, 20, True, 1.0, 0.1),
     "layers, ratio 1": (10, 20, False, 1.0, 0.1),
@@ -96,6 +100,9 @@ COLUMN_CASES = {
     "layers, ratio 10": (10, 20, False, 10.0, 0.1),
     "layers, ratio 1000": (10, 20, False, 1000.0, 0.1),
     "layers, ratio 10, delta 0": (10, 20, False, 10.0, 0.0),
+    "layers, ratio 2, matched": (10, 20, False, 2.0, 0.1, True),
+    "layers, ratio 10, matched": (10, 20, False, 10.0, 0.1, True),
+    "layers, ratio 1000, matched": (10, 20, False, 1000.0, 0.1, True),
 }
 
 # two fluids in layered Couette flow (examples/flow-two-fluid-couette, no
@@ -511,7 +518,7 @@ group           fluid type 1 2
 group           wall type 3
 fix             materials all sph/materials &
                 type 1 viscosity constant {mu_h} eos linear {c0} rho0 {rho_h} &
-                type 2 viscosity constant {mu_l} eos linear {c0} rho0 {rho_l} &
+                type 2 viscosity constant {mu_l} eos linear {c_l} rho0 {rho_l} &
                 type 3 viscosity constant {mu_h} eos linear {c0} rho0 {rho_h}
 pair_style      sph/harmonic/visc quintic {cut} delta {delta} eta {eta} fourtakas 0.0 -{g} 0.0
 pair_coeff      * *
@@ -538,14 +545,16 @@ run             {steps}
 
 
 def column_params(case):
-    nx, ny, side, ratio, delta = COLUMN_CASES[case]
+    nx, ny, side, ratio, delta = COLUMN_CASES[case][:5]
+    matched = len(COLUMN_CASES[case]) > 5 and COLUMN_CASES[case][5]
     p = dict(COLUMN, nx=nx, ny=ny, side=side, ratio=ratio, delta=delta)
     p["dx"] = p["H"] / ny
     p["h"] = p["dx"]
     p["rho_light"] = p["rho_heavy"] / ratio
     p["mu_light"] = p["mu_heavy"] / ratio         # the same kinematic viscosity
     p["c0"] = p["cfac"] * math.sqrt(p["g"] * p["H"])
-    p["acoustic"] = p["h"] / p["c0"]
+    p["c_light"] = p["c0"] * math.sqrt(ratio) if matched else p["c0"]
+    p["acoustic"] = p["h"] / p["c_light"]    # of the fastest sound
     p["force"] = math.sqrt(p["h"] / p["g"])
     return p
 
@@ -556,21 +565,21 @@ def column_data(p):
     below and, in a tank, three columns on each side; every row moved so that
     each particle's volume m / rho is its share of the compressed column (as
     examples/flow-hydrostatic does for one fluid)."""
-    dx, H, g, c0 = p["dx"], p["H"], p["g"], p["c0"]
+    dx, H, g = p["dx"], p["H"], p["g"]
     Hi = 0.5 * H
     rh, rl = p["rho_heavy"], p["rho_light"]
-    c2 = c0 * c0
+    ch2, cl2 = p["c0"] ** 2, p["c_light"] ** 2
 
     def load(y0):            # mass above a lattice height, per unit area
         return rl * (H - y0) if y0 >= Hi else rl * (H - Hi) + rh * (Hi - y0)
 
-    def rho_at(y0, rho0):    # hydrostatic density of the linear EOS (no background)
+    def rho_at(y0, rho0, c2):    # hydrostatic density of the linear EOS (no background)
         return rho0 + g * load(y0) / c2
 
     def height(y0):          # compressed height of lattice height y0 (0 stays at 0)
         if y0 <= Hi:
-            return c2 / g * math.log(rho_at(0.0, rh) / rho_at(y0, rh))
-        return height(Hi) + c2 / g * math.log(rho_at(Hi, rl) / rho_at(y0, rl))
+            return ch2 / g * math.log(rho_at(0.0, rh, ch2) / rho_at(y0, rh, ch2))
+        return height(Hi) + cl2 / g * math.log(rho_at(Hi, rl, cl2) / rho_at(y0, rl, cl2))
 
     layers = 3
     nx, ny = p["nx"], p["ny"]
@@ -582,8 +591,8 @@ def column_data(p):
             x0, y0 = (i + 0.5) * dx, (j + 0.5) * dx
             wall = j < 0 or i < 0 or i >= nx
             t = 3 if wall else (1 if y0 < Hi else 2)
-            rho0 = rl if t == 2 else rh
-            atoms.append((t, rho_at(y0, rho0), x0, height(y0)))
+            rho0, c2 = (rl, cl2) if t == 2 else (rh, ch2)
+            atoms.append((t, rho_at(y0, rho0, c2), x0, height(y0)))
     if p["side"]:
         xlo, xhi = -layers * dx, (nx + layers) * dx
     else:
@@ -606,7 +615,7 @@ def column_run(args, runner, case, mult):
     dt, steps, dtfix, dtcols, what = fixed_or_default(mult, p["acoustic"], t_end)
     text = COLUMN_INPUT.format(
         name=case, what=what, plugin=args.plugin, xb="f" if p["side"] else "p", mu_h=p["mu_heavy"],
-        mu_l=f"{p['mu_light']:.17g}", c0=f"{p['c0']:.17g}", rho_h=p["rho_heavy"], rho_l=f"{p['rho_light']:.17g}",
+        mu_l=f"{p['mu_light']:.17g}", c0=f"{p['c0']:.17g}", c_l=f"{p['c_light']:.17g}", rho_h=p["rho_heavy"], rho_l=f"{p['rho_light']:.17g}",
         cut=f"{3 * p['dx']:.17g}", delta=p["delta"], eta=p["eta"], g=p["g"], skin=f"{0.2 * p['dx']:.17g}",
         dt=f"{dt:.17g}", dtfix=dtfix, vlim=f"{p['speed_limit'] * math.sqrt(p['g'] * p['H']):.17g}",
         t_end=t_end, dtcols=dtcols, steps=steps)
@@ -820,11 +829,12 @@ def write_results(args, maps, elapsed, runner):
         lines += ["## Flow: columns under gravity", "",
                   f"H = {p0['H']:g} m, g = {p0['g']} m/s^2, heavy fluid rho0 = {p0['rho_heavy']:g}, mu = "
                   f"{p0['mu_heavy']:g} Pa s, light fluid rho0 / ratio with the same kinematic viscosity; "
-                  f"c0 = {p0['cfac']:g} sqrt(g H) in both; quintic spline, h = dx, density diffusion of "
+                  f"c0 = {p0['cfac']:g} sqrt(g H) in both (*matched*: in the heavy fluid, and sqrt(ratio) "
+                  "times that in the light one, the same rho0 c0^2); quintic spline, h = dx, density diffusion of "
                   f"Fourtakas et al. (delta as given), eta {p0['eta']} h, Adami walls with the body force; "
                   "started in hydrostatic balance (compressed rows). *tank*: examples/flow-hydrostatic, coarse "
                   "(walls below and at the sides); *layers*: periodic in x, wall below, heavy fluid in the "
-                  f"lower half. Fixed dt = M h / c0 to t = {0.5 if args.quick else p0['t_end']:g} s; unstable "
+                  f"lower half. Fixed dt = M h / c0 (the larger c0) to t = {0.5 if args.quick else p0['t_end']:g} s; unstable "
                   f"if the largest fluid speed exceeds {100 * p0['speed_limit']:g} % of sqrt(g H) or on a "
                   f"LAMMPS error. *force limit*: 0.25 sqrt(h / g), in h/c0. {flow_note}", "",
                   "| case | fluid particles | delta | largest stable dt (h/c0) | force limit (h/c0) | "

@@ -55,7 +55,7 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     viscosity_varies(0), wall_groupbit(0), pressure(nullptr), viscosity(nullptr), mass_of(nullptr),
     volume(nullptr), density(nullptr), diffused_density(nullptr), diffusion_rho(nullptr),
     thermal_expansion(0), nmax(0), heat(nullptr), shift_sums_wanted(0), shift_sum(nullptr),
-    nmax_shift(0), background_warned(0)
+    nmax_shift(0), background_warned(0), soft_fluid_warned(0)
 {
   // the continuity equation and the viscous term need the velocities of
   // ghost atoms: turned on here, as comm_modify vel yes would

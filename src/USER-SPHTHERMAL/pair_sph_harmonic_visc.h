@@ -115,6 +115,8 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   std::vector<const sphe_eos *> eos_of;    // per type (nullptr: none), for the diffusion
   int background_warned;                   // warn_background() warned (once per style)
   void warn_background();
+  int soft_fluid_warned;    // warn_soft_fluid() warned (once per style)
+  void warn_soft_fluid();
 
   // where the pair loops add their rates: the atom's arrays, or one
   // thread's copies of them (the /omp style; thread: its ThrData)

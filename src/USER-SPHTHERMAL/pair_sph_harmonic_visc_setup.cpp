@@ -267,6 +267,7 @@ void PairSPHHarmonicVisc::init_style()
   eos_of.assign(atom->ntypes + 1, nullptr);
   for (int t = 1; t <= atom->ntypes; t++) eos_of[t] = materials->eos(t);
   warn_background();
+  warn_soft_fluid();
   // sph/cleary/heat decides at its init whether this loop evaluates its term
   heat = SPHHub(lmp).heat();
   // fix sph/shift asks again at its init
@@ -346,7 +347,7 @@ void PairSPHHarmonicVisc::warn_background()
   for (int t = 1; t <= atom->ntypes; t++) {
     const sphe_eos *eos = eos_of[t];
     if (!eos || !(eos->rho0 > 0.0) || !(eos->c0 > 0.0)) continue;
-    const double stiffness = eos->rho0 * eos->c0 * eos->c0;
+    const double stiffness = sphe_bulk_modulus(eos);
     if (!(eos->p_background > MAX_BACKGROUND * stiffness)) continue;
     error->warning(FLERR,
                    "Pair style sph/harmonic/visc: the background pressure {} of atom type {} is "
@@ -357,6 +358,53 @@ void PairSPHHarmonicVisc::warn_background()
                    eos->p_background, t, eos->p_background / stiffness, eos->rho0, eos->c0,
                    MAX_BACKGROUND);
     background_warned = 1;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   fluids of different rest densities under a body force: a fluid whose
+   bulk modulus rho0 c0^2 is much below another's is compressed by the
+   other's pressure noise at their interface (bench/stability, two fluids
+   layered in a column under gravity, the default fix sph/dt/reset:
+   stable with spurious speeds below 0.08 % of sqrt(g H) at density ratios
+   2 to 1000 whenever the lighter fluid's rho0 c0^2 is 0.64 to 2.25 times
+   the heavier's; from 0.4 down, unstable or at 3 % at ratios 10 to 1000)
+------------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::warn_soft_fluid()
+{
+  static constexpr double MIN_MODULUS_RATIO = 0.5;    // of the stiffest fluid's rho0 c0^2
+  if (soft_fluid_warned || (!body_force && !buoyancy)) return;
+  // the types that have fluid particles (the walls of fix sph/wall/adami take their pressure)
+  std::vector<int> local(atom->ntypes + 1, 0), fluid(atom->ntypes + 1, 0);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (!(atom->mask[i] & wall_groupbit)) local[atom->type[i]] = 1;
+  MPI_Allreduce(local.data(), fluid.data(), atom->ntypes + 1, MPI_INT, MPI_MAX, world);
+  // (a c0 that fix sph/materials derives ('auto') is not known before the fixes' init)
+  for (int t = 1; t <= atom->ntypes; t++)
+    fluid[t] = fluid[t] && eos_of[t] && eos_of[t]->rho0 > 0.0 && eos_of[t]->c0 > 0.0;
+  int stiffest = 0;
+  for (int t = 1; t <= atom->ntypes; t++)
+    if (fluid[t] &&
+        (!stiffest || sphe_bulk_modulus(eos_of[t]) > sphe_bulk_modulus(eos_of[stiffest])))
+      stiffest = t;
+  if (!stiffest) return;
+  const double modulus = sphe_bulk_modulus(eos_of[stiffest]);
+  for (int t = 1; t <= atom->ntypes && !soft_fluid_warned; t++) {
+    if (!fluid[t]) continue;
+    const double ratio = sphe_bulk_modulus(eos_of[t]) / modulus;
+    if (!(ratio < MIN_MODULUS_RATIO)) continue;
+    soft_fluid_warned = 1;    // on every rank: the next init skips the reduction everywhere
+    if (comm->me == 0)
+      error->warning(
+          FLERR,
+          "Pair style sph/harmonic/visc: the fluid of atom type {} has rho0 c0^2 = {:.4g} "
+          "(rho0 {}, c0 {}), {:.3g} times that of atom type {} ({:.4g}), less than {}: "
+          "under a body force the stiffer fluid's pressure noise compresses it at their "
+          "interface, which can go unstable; give type {} c0 {:.4g} or more in fix "
+          "sph/materials (the same rho0 c0^2)",
+          t, sphe_bulk_modulus(eos_of[t]), eos_of[t]->rho0, eos_of[t]->c0, ratio, stiffest, modulus,
+          MIN_MODULUS_RATIO, t, sqrt(modulus / eos_of[t]->rho0));
   }
 }
 

@@ -66,6 +66,13 @@ static inline double sphe_power(double x, double gamma)
   return pow(x, gamma);
 }
 
+/* the bulk modulus at rho0, rho0 c0^2 (dP/drho = c0^2 at rho0 for both
+   kinds): the pressure a relative compression costs */
+static inline double sphe_bulk_modulus(const sphe_eos *eos)
+{
+  return eos->rho0 * eos->c0 * eos->c0;
+}
+
 /* the reference density at temperature T: rho0 without thermal expansion;
    not positive (or not finite) when 1 + beta (T - T0) <= 0, which callers
    must refuse */

@@ -161,6 +161,9 @@ endforeach()
 # two fluids of density ratio 2, 10 and 1000: no diffusion across the
 # interface, layered Couette flow stable with the defaults
 sphthermal_python_test(flow.two_fluids.stable flow/test_two_fluids.py LAMMPS LABELS unit)
+# the same layered under gravity: stable at the default timestep when the
+# light fluid has the heavy one's rho0 c0^2, and the pair warns when it has not
+sphthermal_python_test(flow.two_fluids.column flow/test_two_fluid_column.py LAMMPS LABELS validation)
 
 # the adaptive timestep (fix sph/dt/reset)
 include(${CMAKE_CURRENT_LIST_DIR}/dt_reset.cmake)
