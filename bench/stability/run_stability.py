@@ -27,7 +27,8 @@ h / c0, and a run with the default fix sph/dt/reset 1):
     c0 = 10 sqrt(g H), Fourtakas's density diffusion), to t = 1.5 s;
   * two fluids layered in a column periodic in x (heavy below, density ratio
     1, 10, 1000, same kinematic viscosity; the same c0, or the light fluid's
-    c0 giving it the heavy fluid's rho0 c0^2, *matched*), to t = 1.5 s;
+    c0 giving it the heavy fluid's rho0 c0^2, *matched*), to t = 1.5 s; and
+    with the default fix at light fluids of several stiffnesses (*stiffness*);
     columns: unstable if the largest fluid speed exceeds 10 % of sqrt(g H),
     or on a LAMMPS error;
   * two fluids in layered Couette flow (examples/flow-two-fluid-couette,
@@ -43,7 +44,7 @@ results; --from-json writes the tables and the plot again without runs).
 Writes results.md and stability_map.png next to this script (or in --out).
 About 5 minutes on one core (--quick: about 1 minute).
 
-  tools/sphpython bench/stability/run_stability.py [--quick] [--only conduction|poiseuille|column|couette]
+  tools/sphpython bench/stability/run_stability.py [--quick] [--only conduction|poiseuille|column|couette|stiffness]
 """
 
 import argparse
@@ -90,9 +91,10 @@ POISEUILLE_CASES = [(0.652, 20), (6.52, 20), (65.2, 20), (652.0, 20), (65.2, 40)
 # unless matched; Fourtakas's diffusion
 COLUMN = dict(H=1.0, g=9.81, rho_heavy=1000.0, mu_heavy=1.0e-3, cfac=10.0, delta=0.1, eta=0.01,
               t_end=1.5, speed_limit=0.10)
-# name: (columns nx, rows ny, side walls?, rho_heavy / rho_light, delta[, matched]);
-# matched: the light fluid's c0 is sqrt(ratio) times the heavy's, the same
-# rho0 c0^2 (what pair sph/harmonic/visc asks for under a body force)
+# name: (columns nx, rows ny, side walls?, rho_heavy / rho_light, delta[, light c0]);
+# light c0: True for sqrt(ratio) times the heavy fluid's c0, the same rho0
+# c0^2 (what pair sph/harmonic/visc asks for under a body force), or the factor
+# itself
 COLUMN_CASES = {
     "tank, one fluid": (10, 20, True, 1.0, 0.1),
     "layers, ratio 1": (10, 20, False, 1.0, 0.1),
@@ -546,14 +548,14 @@ run             {steps}
 
 def column_params(case):
     nx, ny, side, ratio, delta = COLUMN_CASES[case][:5]
-    matched = len(COLUMN_CASES[case]) > 5 and COLUMN_CASES[case][5]
+    light = COLUMN_CASES[case][5] if len(COLUMN_CASES[case]) > 5 else 1.0
     p = dict(COLUMN, nx=nx, ny=ny, side=side, ratio=ratio, delta=delta)
     p["dx"] = p["H"] / ny
     p["h"] = p["dx"]
     p["rho_light"] = p["rho_heavy"] / ratio
     p["mu_light"] = p["mu_heavy"] / ratio         # the same kinematic viscosity
     p["c0"] = p["cfac"] * math.sqrt(p["g"] * p["H"])
-    p["c_light"] = p["c0"] * math.sqrt(ratio) if matched else p["c0"]
+    p["c_light"] = p["c0"] * (math.sqrt(ratio) if light is True else light)
     p["acoustic"] = p["h"] / p["c_light"]    # of the fastest sound
     p["force"] = math.sqrt(p["h"] / p["g"])
     return p
@@ -639,6 +641,30 @@ def column_map(args, runner):
               f"{describe_default(default)}"
               + (f", largest speed {100 * default['vmax'] / math.sqrt(p['g'] * p['H']):.3g} % of sqrt(g H)"
                  if default["stable"] else "") + f" ({r['nruns']} runs, {runner.seconds:.0f} s so far)", flush=True)
+    return results
+
+
+# the layered column with the default fix at light fluids of several
+# stiffnesses: the light fluid's c0 as a factor of the heavy's, per ratio
+# (the bulk modulus ratio, light over heavy, is factor^2 / ratio)
+STIFFNESS_FACTORS = {10.0: [1.0, 1.414, 2.0, 2.8, 3.6, 4.5], 100.0: [2.0, 3.16, 5.0, 8.0, 12.0, 15.0],
+                     1000.0: [3.16, 5.6, 7.0, 10.0, 15.0, 22.4, 31.6]}
+
+
+def stiffness_map(args, runner):
+    results = []
+    for ratio, factors in STIFFNESS_FACTORS.items():
+        for factor in factors[:2] if args.quick else factors:
+            case = f"layers, ratio {ratio:g}, light c0 x {factor:g}"
+            COLUMN_CASES[case] = (10, 20, False, ratio, 0.1, factor)
+            default = column_run(args, runner, case, None)
+            results.append(dict(case=case, ratio=ratio, factor=factor, modulus=factor * factor / ratio,
+                                default=default))
+            p = column_params(case)
+            speed = 100 * default.get("vmax", math.inf) / math.sqrt(p["g"] * p["H"])
+            print(f"[stiffness] {case} (rho0 c0^2 {factor * factor / ratio:.3g} of the heavy's): "
+                  f"{describe_default(default)}, largest speed {speed:.3g} % of sqrt(g H) "
+                  f"({runner.seconds:.0f} s so far)", flush=True)
     return results
 
 
@@ -767,6 +793,7 @@ def default_cells(d, vref=None):
 
 def write_results(args, maps, elapsed, runner):
     cond, pois, cols, cous = maps["conduction"], maps["poiseuille"], maps["column"], maps["couette"]
+    stiff = maps.get("stiffness", [])
     lines = ["# Stability maps: largest stable timestep", "",
              f"Written by `/usr/bin/python3 bench/stability/run_stability.py{' --quick' if args.quick else ''}` "
              f"on {datetime.date.today().isoformat()}: {runner.nruns} LAMMPS runs, {elapsed:.0f} s of run "
@@ -843,6 +870,20 @@ def write_results(args, maps, elapsed, runner):
         for r in cols:
             lines.append(f"| {r['case']} | {r['nx']} x {r['ny']} | {r['delta']:g} | {fmt_bracket(r['lohi'])} | "
                          f"{r['force']:.3g} | " + " | ".join(default_cells(r["default"], vref)) + " |")
+        lines.append("")
+    if stiff:
+        vref = math.sqrt(COLUMN["g"] * COLUMN["H"])
+        lines += ["## Flow: two fluids under gravity, the light fluid's stiffness", "",
+                  "The layered column above (10 x 20, delta 0.1) with the light fluid's c0 a factor times the "
+                  "heavy fluid's, each run with the default fix sph/dt/reset 1 on the fluid to the same time; "
+                  "rho0 c0^2 of the light fluid in units of the heavy fluid's (factor^2 / ratio). pair "
+                  "sph/harmonic/visc warns below 0.5.", "",
+                  "| density ratio | light c0 / heavy c0 | light rho0 c0^2 / heavy's | default: dt (h/c0) | "
+                  "default: active limit | default: result | default: largest speed (% of sqrt(g H)) |",
+                  "|---|---|---|---|---|---|---|"]
+        for r in stiff:
+            lines.append(f"| {r['ratio']:g} | {r['factor']:g} | {r['modulus']:.3g} | "
+                         + " | ".join(default_cells(r["default"], vref)) + " |")
         lines.append("")
     if cous:
         p0 = couette_params("Couette, ratio 1")
@@ -940,7 +981,7 @@ def plot(args, maps):
 
 
 MAPS = {"conduction": conduction_map, "poiseuille": poiseuille_map, "column": column_map,
-        "couette": couette_map}
+        "couette": couette_map, "stiffness": stiffness_map}
 
 
 def main():

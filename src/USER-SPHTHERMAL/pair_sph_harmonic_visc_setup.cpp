@@ -367,8 +367,8 @@ void PairSPHHarmonicVisc::warn_background()
    other's pressure noise at their interface (bench/stability, two fluids
    layered in a column under gravity, the default fix sph/dt/reset:
    stable with spurious speeds below 0.08 % of sqrt(g H) at density ratios
-   2 to 1000 whenever the lighter fluid's rho0 c0^2 is 0.64 to 2.25 times
-   the heavier's; from 0.4 down, unstable or at 3 % at ratios 10 to 1000)
+   10 to 1000 whenever the lighter fluid's rho0 c0^2 is 0.5 to 2.25 times
+   the heavier's; from 0.4 down, some unstable at each ratio)
 ------------------------------------------------------------------------- */
 
 void PairSPHHarmonicVisc::warn_soft_fluid()
