@@ -8,7 +8,7 @@ variables) with 3 seeds. Each run records: stable or not (exit code 0, no
 ERROR, no lost atoms, a finite last thermo row and finite analysis), the
 error against the example's reference where it has one (the example's own
 analysis), and the wall time. Variants too costly for the coarse suite are
-listed as "not run (cost)".
+listed as "not run (cost)"; --costly runs them too.
 
   stress.py [--lmp build/lmp] [--plugin build/sphthermalplugin.so]
             [--cases cavity poiseuille ...] [--variants base jitter1 ...]
@@ -192,6 +192,10 @@ def tank3d_data(work, var):
 # ---------------------------------------------------------------- the cases
 # variants: (name, changed variables, None or the reason it is not run)
 
+# the reason of the variants left out for their cost (--costly runs them)
+COSTLY = "not run (cost"
+
+
 def jitters():
     return [(f"jitter seed {s}", {"jitter": JITTER, "seed": str(s)}, None) for s in SEEDS]
 
@@ -223,7 +227,7 @@ CASES = {
         what="water column at rest under gravity, 20 x 40, 20000 steps (t = 1.6 s)",
         base={"nx": "20", "ny": "40", "steps": "20000", "out": "hydrostatic"},
         variants=[("base", {}, None),
-                  ("2x resolution", {"nx": "40", "ny": "80"}, "not run (cost: 8 times the base)"),
+                  ("2x resolution", {"nx": "40", "ny": "80"}, COSTLY + ": 8 times the base)"),
                   ("2x Re", {}, "not applicable (a fluid at rest)")] + jitters(),
         analyse=analyse_column),
     "channel": dict(
@@ -233,7 +237,7 @@ CASES = {
               "shift": "yes", "start": "developed", "dtfac": "0.15", "every": "800",
               "conduction": "mean harmonic", "out": "channel"},
         variants=[("base", {}, None),
-                  ("2x resolution", {"n": "20"}, "not run (cost: 8 times the base)"),
+                  ("2x resolution", {"n": "20"}, COSTLY + ": 8 times the base)"),
                   ("2x Re", {"re": "130.4"}, None)] + jitters(),
         analyse=analyse_channel),
     "rb": dict(
@@ -241,7 +245,7 @@ CASES = {
         what="Rayleigh-Benard convection, Ra 1e4, 16 per H, W = 2H, to t = 0.6",
         base={"settings": "convection", "ra": "1e4", "n": "16", "tend": "0.6"},
         variants=[("base", {}, None),
-                  ("2x resolution", {"n": "32"}, "not run (cost: 8 times the base)"),
+                  ("2x resolution", {"n": "32"}, COSTLY + ": 8 times the base)"),
                   ("10x Ra", {"ra": "1e5"}, None)] + jitters(),
         analyse=analyse_rb),
     "tank": dict(
@@ -249,7 +253,7 @@ CASES = {
         what="two-component heated tank (2-D), 16 x 16, to t = 40 s",
         base={"n": "16", "tend": "40", "out": "tank.dump"},
         variants=[("base", {}, None),
-                  ("2x resolution", {"n": "32"}, "not run (cost: 8 times the base)"),
+                  ("2x resolution", {"n": "32"}, COSTLY + ": 8 times the base)"),
                   ("2x Re / 10x Ra", {}, "not applicable (the fluid's properties are fixed)")]
         + jitters(),
         analyse=analyse_tank),
@@ -399,6 +403,8 @@ def main():
     p.add_argument("--variants", nargs="+", help="only these variants (names as in the table, "
                    "e.g. base '2x resolution' 'jitter seed 1')")
     p.add_argument("--quick", action="store_true", help="the CI subset; exit 1 unless stable and finite")
+    p.add_argument("--costly", action="store_true",
+                   help="also run the variants the coarse suite leaves out for their cost")
     p.add_argument("--var", action="append", default=[], metavar="NAME=VALUE",
                    help="with --quick: change a variable of every quick run (a check of the check)")
     p.add_argument("--out", default=os.path.join(HERE, "out"), help="work directory")
@@ -438,7 +444,7 @@ def main():
         for variant, change, skip in CASES[case]["variants"]:
             if args.variants and variant not in args.variants:
                 continue
-            if skip:
+            if skip and not (args.costly and skip.startswith(COSTLY)):
                 records[(case, variant)] = skipped_record(args, case, variant, skip, cmdline)
                 continue
             var = dict(CASES[case]["base"])
