@@ -53,6 +53,12 @@ static void check_eos(void)
       const double c = sphe_sound_speed(eos, rho);
       expect(near(c * c, c2, 1e-6), "c^2 = dP/drho", c * c, c2);
     }
+    /* the bulk modulus: the pressure per relative compression at rho0 */
+    const double eps = 1e-6;
+    const double k = (sphe_pressure(eos, eos->rho0 * (1 + eps)) -
+                      sphe_pressure(eos, eos->rho0 * (1 - eps))) / (2 * eps);
+    expect(near(sphe_bulk_modulus(eos), k, 1e-6), "bulk modulus = rho0 dP/drho at rho0",
+           sphe_bulk_modulus(eos), k);
   }
   /* tait: B = rho0 c0^2 / gamma; at 1 % compression P = B (1.01^7 - 1) + P_b */
   const double b = 1000.0 * 400.0 / 7.0;
