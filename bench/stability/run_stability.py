@@ -144,6 +144,11 @@ def conduction_cases(quick):
 
 # ---------------------------------------------------------------- running LAMMPS
 
+def case_dir(args, kind, case):
+    """Where the runs of a flow case work (its input, data and screen.last)."""
+    return os.path.join(args.work, kind, re.sub(r"[^A-Za-z0-9]+", "_", case).strip("_"))
+
+
 class Runner:
     """Writes an input, runs LAMMPS serially, returns (ok, screen output)."""
 
@@ -621,8 +626,7 @@ def column_run(args, runner, case, mult):
         cut=f"{3 * p['dx']:.17g}", delta=p["delta"], eta=p["eta"], g=p["g"], skin=f"{0.2 * p['dx']:.17g}",
         dt=f"{dt:.17g}", dtfix=dtfix, vlim=f"{p['speed_limit'] * math.sqrt(p['g'] * p['H']):.17g}",
         t_end=t_end, dtcols=dtcols, steps=steps)
-    name = re.sub(r"[^A-Za-z0-9]+", "_", case).strip("_")
-    ok, out = runner.run(os.path.join(args.work, "column", name), text, {"column.data": column_data(p)})
+    ok, out = runner.run(case_dir(args, "column", case), text, {"column.data": column_data(p)})
     return flow_result(ok, out, mult, p["acoustic"])
 
 
@@ -744,8 +748,7 @@ def couette_run(args, runner, case, mult):
         delta=p["delta"], eta=p["eta"], skin=0.2 * p["dx"], V0=p["V0"], dt=f"{dt:.17g}", dtfix=dtfix,
         vlim=p["vmax_factor"] * p["V0"], vylim=p["vy_factor"] * p["V0"], t_end=t_end, dtcols=dtcols,
         steps=steps)
-    name = re.sub(r"[^A-Za-z0-9]+", "_", case).strip("_")
-    ok, out = runner.run(os.path.join(args.work, "couette", name), text)
+    ok, out = runner.run(case_dir(args, "couette", case), text)
     return flow_result(ok, out, mult, p["acoustic"])
 
 

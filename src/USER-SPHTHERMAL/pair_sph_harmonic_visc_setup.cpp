@@ -381,13 +381,13 @@ void PairSPHHarmonicVisc::warn_soft_fluid()
     if (!(atom->mask[i] & wall_groupbit)) local[atom->type[i]] = 1;
   MPI_Allreduce(local.data(), fluid.data(), atom->ntypes + 1, MPI_INT, MPI_MAX, world);
   // (a c0 that fix sph/materials derives ('auto') is not known before the fixes' init)
-  for (int t = 1; t <= atom->ntypes; t++)
-    fluid[t] = fluid[t] && eos_of[t] && eos_of[t]->rho0 > 0.0 && eos_of[t]->c0 > 0.0;
   int stiffest = 0;
-  for (int t = 1; t <= atom->ntypes; t++)
+  for (int t = 1; t <= atom->ntypes; t++) {
+    fluid[t] = fluid[t] && eos_of[t] && eos_of[t]->rho0 > 0.0 && eos_of[t]->c0 > 0.0;
     if (fluid[t] &&
         (!stiffest || sphe_bulk_modulus(eos_of[t]) > sphe_bulk_modulus(eos_of[stiffest])))
       stiffest = t;
+  }
   if (!stiffest) return;
   const double modulus = sphe_bulk_modulus(eos_of[stiffest]);
   for (int t = 1; t <= atom->ntypes && !soft_fluid_warned; t++) {
