@@ -27,7 +27,9 @@
 #   gradient (correction of the flow pair), conduction (keywords of the heat
 #   pair; none: the package's default, the plain operator at the onset,
 #   unshifted, and 'correction consistent' with shifting), shift (skillen coefficient, 0: none), continuity (of the shift),
-#   hold (yes: fix sph/hold/volume keeps the fluid's volume), jitter
+#   hold (of fix sph/boussinesq: yes, the package's default in a closed
+#   cell, holds the fluid's volume sum m / rho; no: the continuity
+#   equation's, which lets the mean density rise), jitter
 #   (random initial displacement of the fluid particles / dx; 0, the
 #   default: none), seed (its random seed).
 # settings = onset (the defaults below) or convection: above onset, to a
@@ -51,7 +53,7 @@ if "${settings} == convection" then &
   "variable tend index 0.8" "variable kemax index 1e30" "variable delta index 0.1" &
   "variable init index uniform" "variable t0 index layers" "variable gradient index gradient" &
   "variable shift index 2" &
-  "variable continuity index yes" "variable every index 200" "variable bg index 0.1" "variable hold index yes" &
+  "variable continuity index yes" "variable every index 200" "variable bg index 0.1" &
 elif "${settings} != onset" then &
   "print 'ERROR: settings ${settings}: onset or convection'" "quit 1"
 variable ra      index 3000
@@ -79,7 +81,7 @@ variable gradient index none
 variable conduction index ""
 variable shift   index 0
 variable continuity index no
-variable hold    index no
+variable hold    index yes
 variable jitter  index 0.0
 variable seed    index 12345
 
@@ -151,10 +153,9 @@ neigh_modify    delay 0 every 1 check yes exclude type 2 2
 fix             flow_walls wall sph/wall/adami
 fix             hot hot sph/wall/dirichlet 1.0 surface layer
 fix             cold cold sph/wall/dirichlet 0.0 surface layer
-fix             buoyancy fluid sph/boussinesq ${t0} gravity 0.0 -${g} 0.0
+fix             buoyancy fluid sph/boussinesq ${t0} gravity 0.0 -${g} 0.0 hold ${hold}
 fix             integrate fluid sph
 if "${shift} > 0" then "fix shift fluid sph/shift skillen ${shift} continuity ${continuity}"
-if "${hold} == yes" then "fix hold fluid sph/hold/volume"
 fix             dt fluid sph/dt/reset 1 acoustic ${cac}
 
 # Nu of the plates from the heat they give (hot) and take up (cold): 1 in
@@ -172,7 +173,7 @@ compute         rho fluid sph/rho/atom
 compute         rhomin fluid reduce min c_rho
 compute         rhomax fluid reduce max c_rho
 compute         rhoave fluid reduce ave c_rho
-# the fluid's volume, sum m / rho (fix sph/hold/volume holds it)
+# the fluid's volume, sum m / rho (fix sph/boussinesq holds it)
 variable        volume atom mass/c_rho
 compute         volume fluid reduce sum v_volume
 thermo_style    custom step time dt c_ke v_vymax c_nu_hot[1] c_nu_cold[1] c_rhomin c_rhomax c_rhoave &

@@ -25,6 +25,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_sph_hold_volume.h"
 #include "fix_sph_materials.h"
 #include "fix_sph_wall_dirichlet.h"
 #include "group.h"
@@ -36,6 +37,7 @@
 #include "sph_eos.h"
 #include "sph_hub.h"
 #include "sph_particle.h"
+#include "sph_scene_defaults.h"
 
 #include <algorithm>
 #include <cmath>
@@ -58,7 +60,8 @@ static constexpr double MAX_COMPRESSION = 0.05;
 
 FixSPHBoussinesq::FixSPHBoussinesq(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), gravity_keyword(0), reference_kind(REFERENCE_GIVEN), layer_given(0.0),
-    spacing(0.0), beta(nullptr), force_summed(0), zero_warned(0), compression_checked(0)
+    spacing(0.0), beta(nullptr), force_summed(0), zero_warned(0), compression_checked(0),
+    hold_request(-1), hold_logged(-1)
 {
   if (!atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Fix sph/boussinesq requires atom style sph (esph, cv)");
@@ -90,6 +93,15 @@ FixSPHBoussinesq::FixSPHBoussinesq(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "Illegal {} command: 'layer {}': the thickness must be > 0", cmd,
                    arg[iarg + 1]);
       iarg += 2;
+    } else if (strcmp(arg[iarg], "hold") == 0) {
+      if (iarg + 1 >= narg) error->all(FLERR, "Illegal {} command: 'hold' needs yes or no", cmd);
+      if (strcmp(arg[iarg + 1], "yes") == 0)
+        hold_request = 1;
+      else if (strcmp(arg[iarg + 1], "no") == 0)
+        hold_request = 0;
+      else
+        error->all(FLERR, "Illegal {} command: 'hold {}': give yes or no", cmd, arg[iarg + 1]);
+      iarg += 2;
     } else
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
   }
@@ -119,7 +131,22 @@ FixSPHBoussinesq::FixSPHBoussinesq(LAMMPS *lmp, int narg, char **arg) :
 
 FixSPHBoussinesq::~FixSPHBoussinesq()
 {
+  if (!id_hold.empty() && modify->nfix && modify->find_fix(id_hold) >= 0)
+    modify->delete_fix(id_hold);
   memory->destroy(beta);
+}
+
+/* ----------------------------------------------------------------------
+   the volume of the group is held by a fix sph/hold/volume of its own
+   (which migrates nothing, keeps the volume across restarts and reports
+   it), switched on or off at each init by choose_hold()
+------------------------------------------------------------------------- */
+
+void FixSPHBoussinesq::post_constructor()
+{
+  if (hold_request == 0) return;
+  id_hold = std::string(id) + "_hold";
+  modify->add_fix(fmt::format("{} {} sph/hold/volume", id_hold, group->names[igroup]));
 }
 
 int FixSPHBoussinesq::setmask()
@@ -219,6 +246,29 @@ void FixSPHBoussinesq::init()
     check_compression();
     compression_checked = 1;
   }
+  choose_hold();
+}
+
+/* ----------------------------------------------------------------------
+   'hold': the fix's own fix sph/hold/volume on or off, by the keyword or
+   the scene's default (SPHSceneDefaults::volume_hold), logged when it
+   changes
+------------------------------------------------------------------------- */
+
+void FixSPHBoussinesq::choose_hold()
+{
+  if (id_hold.empty()) return;
+  const int ifix = modify->find_fix(id_hold);
+  if (ifix < 0) error->all(FLERR, "Fix sph/boussinesq {}: its fix {} was deleted", id, id_hold);
+  auto *hold = dynamic_cast<FixSPHHoldVolume *>(modify->fix[ifix]);
+  if (!hold)
+    error->all(FLERR, "Fix sph/boussinesq {}: fix {} is not its fix sph/hold/volume", id, id_hold);
+  SPHSceneDefaults::Choice choice = {1, "the keyword", 0.0};
+  if (hold_request < 0) choice = SPHSceneDefaults::volume_hold(lmp, this, hold);
+  hold->set_active(choice.value);
+  const std::string who = fmt::format("Fix sph/boussinesq {}", id);
+  const std::string what = choice.value ? fmt::format("yes, by fix {}", id_hold) : "no";
+  SPHSceneDefaults::log(lmp, who.c_str(), "hold", what.c_str(), choice, hold_logged);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -26,6 +26,7 @@ class FixSPHBoussinesq : public Fix {
  public:
   FixSPHBoussinesq(class LAMMPS *, int, char **);
   ~FixSPHBoussinesq() override;
+  void post_constructor() override;
   int setmask() override;
   void init() override;
   void setup(int) override;
@@ -50,6 +51,10 @@ class FixSPHBoussinesq : public Fix {
   int force_summed;
   int zero_warned;            // the warning of fix gravity's magnitude 0 given
   int compression_checked;    // check_compression() done (at the first setup)
+  int hold_request;           // 'hold': 1 yes, 0 no, -1 the scene's default
+  int hold_logged;            // the hold last logged (-1 before the first)
+  std::string id_hold;        // its fix sph/hold/volume, empty with 'hold no'
+  void choose_hold();
   int compression_scale(double &gnorm, double &dt_max, double &extent);
   void derive_sound_speeds(class FixSPHMaterials *materials);
   void check_compression();

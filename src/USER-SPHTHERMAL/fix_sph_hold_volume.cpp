@@ -37,7 +37,7 @@ static const char cmd[] = "fix sph/hold/volume";
 /* ---------------------------------------------------------------------- */
 
 FixSPHHoldVolume::FixSPHHoldVolume(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), held(0.0), volume_before(0.0)
+    Fix(lmp, narg, arg), active(1), held(0.0), volume_before(0.0)
 {
   if (narg != 3)
     error->all(FLERR, "Illegal {} command: expected 'fix ID <group> {}'", cmd, cmd + 4);
@@ -57,6 +57,7 @@ int FixSPHHoldVolume::setmask()
 
 void FixSPHHoldVolume::init()
 {
+  if (!active) return;
   if (SPHCheck::group_count(lmp, groupbit) == 0)
     error->all(FLERR, "Fix sph/hold/volume: group {} has no atoms", group->names[igroup]);
   // a fluid whose equation of state expands with T changes its volume for a reason
@@ -75,7 +76,7 @@ void FixSPHHoldVolume::init()
 
 void FixSPHHoldVolume::setup(int /*vflag*/)
 {
-  if (held > 0.0) return;
+  if (!active || held > 0.0) return;
   held = group_volume();
   if (comm->me == 0)
     utils::logmesg(lmp, "Fix sph/hold/volume: the volume of group {} is held at {:.10g}\n",
@@ -108,6 +109,7 @@ double FixSPHHoldVolume::group_volume()
 
 void FixSPHHoldVolume::end_of_step()
 {
+  if (!active) return;
   volume_before = group_volume();
   const double scale = volume_before / held;
   double *const rho = atom->rho;

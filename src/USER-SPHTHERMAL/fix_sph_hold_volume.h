@@ -29,8 +29,13 @@ class FixSPHHoldVolume : public Fix {
   double compute_scalar() override;
   void write_restart(FILE *) override;
   void restart(char *) override;
+  // off: the fix does nothing (fix sph/boussinesq's own hold, when the
+  // scene has a free surface or the user holds the volume with another)
+  void set_active(int on) { active = on; }
+  int is_active() const { return active; }
 
  protected:
+  int active;              // 1: hold (the default)
   double held;             // the volume held, 0 until the first setup
   double volume_before;    // the volume before the last correction (the scalar)
 

@@ -423,7 +423,7 @@ void PairSPHClearyHeat::init_style()
   if (correct_request < 0) {
     const SPHSceneDefaults::Choice choice = SPHSceneDefaults::heat_correction(lmp);
     correct = choice.value;
-    SPHSceneDefaults::log(lmp, "sph/cleary/heat", "correction",
+    SPHSceneDefaults::log(lmp, "Pair style sph/cleary/heat", "correction",
                           correct == SPHConductionWeights::CONSISTENT ? "consistent" : "none",
                           choice, correct_logged);
   } else
@@ -431,8 +431,8 @@ void PairSPHClearyHeat::init_style()
   if (eta_request < 0.0) {
     const SPHSceneDefaults::Choice choice = SPHSceneDefaults::heat_eta(lmp);
     eta_factor = choice.number;
-    SPHSceneDefaults::log(lmp, "sph/cleary/heat", "eta", fmt::format("{:g}", eta_factor).c_str(),
-                          choice, eta_logged);
+    SPHSceneDefaults::log(lmp, "Pair style sph/cleary/heat", "eta",
+                          fmt::format("{:g}", eta_factor).c_str(), choice, eta_logged);
   } else
     eta_factor = eta_request;
   // the Hessian blocks of 'correction second' are the largest reverse

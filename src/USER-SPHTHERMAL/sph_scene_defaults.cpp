@@ -9,15 +9,23 @@
    particles; on unshifted ones (the onset of Rayleigh-Benard convection)
    and on lattices the plain operator is the closer one. eta: 0.01 in the
    cavity, the tanks and the Rayleigh-Benard layer (shifted, buoyant),
-   Cleary's 0.1 in conduction, the channels and around bodies.
+   Cleary's 0.1 in conduction, the channels and around bodies. The volume
+   of a closed convection cell held: the continuity equation lets its mean
+   density rise where the flow meets walls (0.6 % per diffusion time in
+   the Rayleigh-Benard layer), and the viscosity, diffusivity and Rayleigh
+   number the fluid sees drift with it.
 ------------------------------------------------------------------------- */
 
 #include "sph_scene_defaults.h"
 
 #include "comm.h"
 #include "fix_sph_boussinesq.h"
+#include "fix_sph_hold_volume.h"
+#include "fix_sph_materials.h"
 #include "fix_sph_shift.h"
 #include "lammps.h"
+#include "sph_body_force.h"
+#include "sph_checks.h"
 #include "sph_conduction_weights.h"
 #include "sph_hub.h"
 #include "utils.h"
@@ -65,11 +73,36 @@ SPHSceneDefaults::Choice SPHSceneDefaults::heat_eta(LAMMPS *lmp)
   return {1, why, 0.01};
 }
 
-void SPHSceneDefaults::log(LAMMPS *lmp, const char *style, const char *setting, const char *value,
+SPHSceneDefaults::Choice SPHSceneDefaults::volume_hold(LAMMPS *lmp, const Fix *buoyancy,
+                                                       const Fix *own)
+{
+  const Fix *weight = SPHBodyForce::source(lmp);
+  if (weight)
+    return {0,
+            fmt::format("the default with fix {} (style {}): the fluid has weight and may have a "
+                        "free surface",
+                        weight->id, weight->style),
+            0.0};
+  FixSPHMaterials *materials = FixSPHMaterials::find(lmp, "Fix sph/boussinesq");
+  const std::vector<int> present = SPHCheck::group_types(lmp, buoyancy->groupbit);
+  for (int t = 1; t < (int) present.size(); t++)
+    if (present[t] && !materials->eos(t))
+      return {0,
+              fmt::format("the default when the group has atom type {}, which has no equation of "
+                          "state (a solid)",
+                          t),
+              0.0};
+  for (FixSPHHoldVolume *hold : SPHHub(lmp).fixes<FixSPHHoldVolume>())
+    if (hold != own && hold->groupbit == buoyancy->groupbit)
+      return {0, fmt::format("fix sph/hold/volume {} holds it already", hold->id), 0.0};
+  return {1, "the default in a closed domain: buoyancy without fix gravity, so no free surface",
+          0.0};
+}
+
+void SPHSceneDefaults::log(LAMMPS *lmp, const char *who, const char *setting, const char *value,
                            const Choice &choice, int &last)
 {
   if (choice.value == last) return;
   last = choice.value;
-  if (lmp->comm->me == 0)
-    utils::logmesg(lmp, "Pair style {}: {} {} ({})\n", style, setting, value, choice.why);
+  if (lmp->comm->me == 0) utils::logmesg(lmp, "{}: {} {} ({})\n", who, setting, value, choice.why);
 }

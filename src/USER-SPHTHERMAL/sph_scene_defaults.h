@@ -11,6 +11,7 @@
 namespace LAMMPS_NS {
 
 class LAMMPS;
+class Fix;
 
 // The package's defaults that depend on the kind of scene, in one place:
 // the rule, and the sentence the log gives for the value taken. A setting
@@ -20,9 +21,9 @@ class LAMMPS;
 namespace SPHSceneDefaults {
 
   struct Choice {
-    int value;            // the setting, in the asking style's own code
-    std::string why;      // the scene's reason, for the log
-    double number;        // the setting's value, for a number (value: which rule)
+    int value;          // the setting, in the asking style's own code
+    std::string why;    // the scene's reason, for the log
+    double number;      // the setting's value, for a number (value: which rule)
   };
 
   // 'correction' of pair sph/cleary/heat: consistent in a buoyancy-driven
@@ -34,9 +35,18 @@ namespace SPHSceneDefaults {
   // of shifted particles, as the flow pair's, 0.1 (Cleary's) otherwise
   Choice heat_eta(LAMMPS *lmp);
 
-  // log "<style>: <setting> <value> (<why>)" on rank 0 when 'choice'
-  // differs from 'last' (the value last logged, -1 before the first)
-  void log(LAMMPS *lmp, const char *style, const char *setting, const char *value,
+  // 'hold' of fix sph/boussinesq 'buoyancy' (1: its group's volume held,
+  // 0: not): held in a closed domain, which the buoyancy alone drives (its
+  // 'gravity' keyword and no fix gravity: without weight only walls and
+  // periodic boundaries keep the fluid together, there is no free surface),
+  // when every type of the group is a fluid and no fix sph/hold/volume but
+  // 'own' (the fix's own) holds that group already
+  Choice volume_hold(LAMMPS *lmp, const Fix *buoyancy, const Fix *own);
+
+  // log "<who>: <setting> <value> (<why>)" on rank 0 when 'choice' differs
+  // from 'last' (the value last logged, -1 before the first); who: e.g.
+  // "Pair style sph/cleary/heat"
+  void log(LAMMPS *lmp, const char *who, const char *setting, const char *value,
            const Choice &choice, int &last);
 
 }    // namespace SPHSceneDefaults

@@ -102,6 +102,11 @@ sphthermal_python_test(convection.sound_speed_auto convection/test_sound_speed_a
   LABELS unit)
 sphthermal_python_test(convection.mpi.sound_speed_auto_np2 convection/test_sound_speed_auto.py
   LAMMPS ARGS --np 2 --mpirun ${MPIRUN} LABELS mpi PROCESSORS 2)
+# fix sph/boussinesq 'hold': held by default in a closed domain, not with
+# fix gravity or a solid type, standing down for the user's own, restarts
+sphthermal_python_test(convection.hold_default convection/test_hold_default.py LAMMPS LABELS unit)
+sphthermal_python_test(convection.mpi.hold_default_np2 convection/test_hold_default.py LAMMPS
+  ARGS --np 2 --mpirun ${MPIRUN} LABELS mpi PROCESSORS 2)
 # fix sph/hold/volume: the layer's volume held to round-off, and across a restart
 sphthermal_python_test(convection.hold_volume convection/test_hold_volume.py LAMMPS LABELS unit)
 sphthermal_python_test(convection.mpi.hold_volume_np2 convection/test_hold_volume.py LAMMPS
