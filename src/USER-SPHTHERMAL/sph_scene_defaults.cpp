@@ -18,11 +18,13 @@
 
 #include "sph_scene_defaults.h"
 
+#include "atom.h"
 #include "comm.h"
 #include "fix_sph_boussinesq.h"
 #include "fix_sph_hold_volume.h"
 #include "fix_sph_materials.h"
 #include "fix_sph_shift.h"
+#include "fix_sph_wall_adami.h"
 #include "lammps.h"
 #include "sph_body_force.h"
 #include "sph_checks.h"
@@ -92,6 +94,18 @@ SPHSceneDefaults::Choice SPHSceneDefaults::volume_hold(LAMMPS *lmp, const Fix *b
                           "state (a solid)",
                           t),
               0.0};
+  // the walls of fix sph/wall/adami take their density from the fluid's
+  for (FixSPHWallAdami *wall : SPHHub(lmp).fixes<FixSPHWallAdami>()) {
+    int local = 0, any = 0;
+    for (int i = 0; i < lmp->atom->nlocal && !local; i++)
+      local = (lmp->atom->mask[i] & buoyancy->groupbit) && (lmp->atom->mask[i] & wall->groupbit);
+    MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_MAX, lmp->world);
+    if (any)
+      return {0,
+              fmt::format("the default when the group has wall atoms of fix sph/wall/adami {}",
+                          wall->id),
+              0.0};
+  }
   for (FixSPHHoldVolume *hold : SPHHub(lmp).fixes<FixSPHHoldVolume>())
     if (hold != own && hold->groupbit == buoyancy->groupbit)
       return {0, fmt::format("fix sph/hold/volume {} holds it already", hold->id), 0.0};

@@ -39,7 +39,8 @@ namespace SPHSceneDefaults {
   // 0: not): held in a closed domain, which the buoyancy alone drives (its
   // 'gravity' keyword and no fix gravity: without weight only walls and
   // periodic boundaries keep the fluid together, there is no free surface),
-  // when every type of the group is a fluid and no fix sph/hold/volume but
+  // when every type of the group is a fluid, none of its atoms a wall of
+  // fix sph/wall/adami, and no fix sph/hold/volume but
   // 'own' (the fix's own) holds that group already
   Choice volume_hold(LAMMPS *lmp, const Fix *buoyancy, const Fix *own);
 

@@ -2,7 +2,8 @@
 a small cavity, 200 steps): with the buoyancy from the 'gravity' keyword and
 no fix gravity the fix says it holds the fluid's volume and does, to
 round-off; with 'hold no', with fix gravity (weight: a free surface may
-exist), or on a group with a type that has no equation of state, it says
+exist), on a group with a type that has no equation of state or with the
+walls of fix sph/wall/adami, it says
 why not (for 'hold no' it says nothing) and the volume drifts; with the
 user's own fix sph/hold/volume on the fluid it stands down and that one
 holds it; across a restart the volume held is that of the file (the
@@ -56,6 +57,11 @@ def main():
     that(len(said) == 1 and said[0][0] == "no" and "atom type 2, which has no equation of state" in said[0][1],
          "a solid type in the group: not held, and why", str(said))
     that(drift > DRIFTS, "a solid type in the group: the volume drifts", f"{drift:.3g}")
+
+    drift, said = run(args, workdir, scene="walls")
+    that(len(said) == 1 and said[0][0] == "no" and "wall atoms of fix sph/wall/adami flow_walls" in said[0][1],
+         "walls in the group: not held, and why", str(said))
+    that(drift > DRIFTS, "walls in the group: the volume drifts", f"{drift:.3g}")
 
     drift, said = run(args, workdir, scene="own")
     that(said == [("no", "fix sph/hold/volume hold holds it already")],

@@ -48,13 +48,15 @@ sphthermal_python_test(convection.validation.cavity_ra1e3_20 convection/test_wal
   ARGS cavity --ra 1e3 --tend 0.6 --n 20 --tolerance 0.015 LABELS validation)
 sphthermal_python_test(convection.validation.cavity_ra1e4_20 convection/test_walls.py LAMMPS
   ARGS cavity --ra 1e4 --tend 0.3 --n 20 --tolerance 0.06 LABELS validation)
-# Rayleigh-Benard onset (width 2H, 20 per H) from three growth rates:
-# measured -1.77 % off linear theory (1707.92); the issue's bound is 10 %
+# Rayleigh-Benard onset (width 2H, 20 per H) from three growth rates, the
+# fluid's volume held (fix sph/boussinesq's default): measured -7.88 % off
+# linear theory (1707.92; -8.51 % after 6 steps, -5.10 % at 30 per H); the
+# issue's bound is 10 %
 file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/rb_onset)
 sphthermal_python_test(convection.validation.rb_onset_20
   ${SPHTHERMAL_ROOT}/examples/convection-rayleigh-benard/analyse.py
   ARGS onset --steps 1 --n 20 --lmp ${SPHTHERMAL_LMP} --plugin ${SPHTHERMAL_PLUGIN}
-       --out ${CMAKE_CURRENT_BINARY_DIR}/rb_onset --max-error 5
+       --out ${CMAKE_CURRENT_BINARY_DIR}/rb_onset --max-error 10
   LABELS validation)
 # Rayleigh-Benard convection above onset (width 2H, 16 per H, Ra 1e4, to
 # t = 0.6, settings convection of in.rb): measured mean Nu +9.04 % off the
