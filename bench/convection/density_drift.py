@@ -55,7 +55,7 @@ def summarise(log, ra, n):
     nu = 0.5 * (table["c_nu_hot[1]"][half].mean() + table["c_nu_cold[1]"][half].mean())
     worst = np.abs(rho - 1.0).max()
     return (f"| {ra:g} | {n} x {n} | {t[-1]:.4g} | {len(t) - 1} | {rho.min():.5f} | {rho.max():.5f} | "
-            f"{rho[-1]:.5f} | {100 * worst:.2f} % | {nu:.4f} |")
+            f"{rho[-1]:.5f} | {100 * worst:.2g} % | {nu:.4f} |")
 
 
 def main():
