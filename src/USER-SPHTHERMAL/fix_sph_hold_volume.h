@@ -32,7 +32,6 @@ class FixSPHHoldVolume : public Fix {
   // off: the fix does nothing (fix sph/boussinesq's own hold, when the
   // scene has a free surface or the user holds the volume with another)
   void set_active(int on) { active = on; }
-  int is_active() const { return active; }
 
  protected:
   int active;              // 1: hold (the default)
