@@ -18,6 +18,7 @@
 #include "sph_checks.h"
 #include "sph_compat.h"
 #include "sph_hub.h"
+#include "sph_scene_defaults.h"
 #include "tokenizer.h"
 #include "update.h"
 
@@ -36,7 +37,7 @@ static const char cmd[] = "fix sph/materials";
 FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), state(new SPHAtomState(lmp, this)), eos_type(nullptr), eos_set(nullptr),
     cv_type(nullptr), rho0_type(nullptr), expansion_type(nullptr), c0_kind(nullptr),
-    background_relative(nullptr)
+    background_relative(nullptr), background_given(nullptr), background_logged(-1)
 {
   ntypes = atom->ntypes;
   conductivity_laws.resize(ntypes + 1);
@@ -55,10 +56,12 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
   memory->create(expansion_type, ntypes + 1, "sph/materials:expansion");
   memory->create(c0_kind, ntypes + 1, "sph/materials:c0_kind");
   memory->create(background_relative, ntypes + 1, "sph/materials:background_relative");
+  memory->create(background_given, ntypes + 1, "sph/materials:background_given");
   for (int i = 0; i <= ntypes; i++) {
     eos_set[i] = 0;
     c0_kind[i] = C0_GIVEN;
     background_relative[i] = NAN;
+    background_given[i] = 0;
     cv_type[i] = rho0_type[i] = -1.0;
     expansion_type[i] = 0.0;
   }
@@ -145,6 +148,7 @@ FixSPHMaterials::~FixSPHMaterials()
   memory->destroy(expansion_type);
   memory->destroy(c0_kind);
   memory->destroy(background_relative);
+  memory->destroy(background_given);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -162,6 +166,30 @@ void FixSPHMaterials::init()
 {
   state->init();
   for (int i = 0; i <= ntypes; i++) conductivity_laws[i].warned = viscosity_laws[i].warned = 0;
+  default_background();
+}
+
+/* ----------------------------------------------------------------------
+   the background pressure of each equation of state that names none: the
+   scene's (SPHSceneDefaults::background), a multiple of rho0 c0^2 applied
+   once c0 is known; logged when it changes
+------------------------------------------------------------------------- */
+
+void FixSPHMaterials::default_background()
+{
+  int any = 0;
+  for (int t = 1; t <= ntypes; t++) any |= (eos_set[t] && !background_given[t]);
+  if (!any) return;
+  const SPHSceneDefaults::Choice choice = SPHSceneDefaults::background(lmp);
+  for (int t = 1; t <= ntypes; t++) {
+    if (!eos_set[t] || background_given[t]) continue;
+    background_relative[t] = choice.value ? choice.number : NAN;
+    eos_type[t].p_background = 0.0;
+    if (c0_kind[t] != C0_PENDING) apply_relative_background(t);
+  }
+  SPHSceneDefaults::log(lmp, "Fix sph/materials", "background",
+                        choice.value ? fmt::format("{:g} rho0 c0^2", choice.number).c_str() : "0",
+                        choice, background_logged);
 }
 
 /* ----------------------------------------------------------------------
@@ -466,6 +494,7 @@ int FixSPHMaterials::parse_eos(int ilo, int ihi, const std::vector<std::string> 
   if (kind == SPHE_TAIT) eos.gamma = positive(words[iword + 3], "gamma", where, false);
   int taken = 2 + ncoeffs;
   double relative = NAN;
+  int background = 0;
   // options, in any order: background P [relative], thermal T0
   while (left >= (size_t) taken &&
          (words[iword + taken] == "background" || words[iword + taken] == "thermal")) {
@@ -475,6 +504,7 @@ int FixSPHMaterials::parse_eos(int ilo, int ihi, const std::vector<std::string> 
     const double value = utils::numeric(FLERR, words[iword + taken + 1].c_str(), false, lmp);
     if (option == "background") {
       eos.p_background = value;
+      background = 1;
       relative = NAN;
       // a multiple of rho0 c0^2, set once both are known
       if (left >= (size_t) taken + 2 && words[iword + taken + 2] == "relative") {
@@ -493,6 +523,7 @@ int FixSPHMaterials::parse_eos(int ilo, int ihi, const std::vector<std::string> 
     eos_set[i] = 1;
     c0_kind[i] = c0_auto ? C0_PENDING : C0_GIVEN;
     background_relative[i] = relative;
+    background_given[i] = background;
   }
   return taken;
 }

@@ -107,6 +107,8 @@ class FixSPHMaterials : public Fix {
   enum { C0_GIVEN = 0, C0_PENDING, C0_FOUND };
   int *c0_kind;                   // per type: given, 'auto' pending or found
   double *background_relative;    // per type: 'background B relative' B, else NaN
+  int *background_given;          // per type: 1 when its eos names a background
+  int background_logged;          // the scene's default last logged (-1: none yet)
 
   static const sphm_law *law_of(const std::vector<MaterialLaw> &laws, int type)
   {
@@ -134,6 +136,7 @@ class FixSPHMaterials : public Fix {
   void read_file(const std::string &file, const std::vector<std::string> &names,
                  const std::vector<int> &types);
   int apply_relative_background(int type);
+  void default_background();
   double positive(const std::string &word, const std::string &what, const std::string &where,
                   bool zero_ok);
 };

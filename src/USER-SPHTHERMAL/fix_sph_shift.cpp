@@ -43,19 +43,19 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_sph_wall_adami.h"
 #include "force.h"
 #include "group.h"
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "pair.h"
-#include "fix_sph_wall_adami.h"
 #include "pair_sph_harmonic_visc.h"
-#include "sph_hub.h"
 #include "sph_checks.h"
 #include "sph_comm_stage.h"
 #include "sph_compat.h"
 #include "sph_gradient.h"
+#include "sph_hub.h"
 #include "sph_kernels.h"
 #include "sph_particle.h"
 #include "sph_shift.h"
@@ -81,27 +81,44 @@ static inline double spacing_of(double volume, int dim)
 
 /* ---------------------------------------------------------------------- */
 
+// the form without one in the command: Reece et al. 2024's D (Table 2; their
+// -2 with the sign of DualSPHysics), validated in the cavities and the tanks
+static constexpr double DEFAULT_SKILLEN = 2.0;
+
 FixSPHShift::FixSPHShift(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), form(SKILLEN), coefficient(0.0), speed(0.0), r_coeff(0.2), r_power(4),
     cap(0.1), correct(0), continuity(0), kernel_kind(0), cutoff(0.0), loop_own(0), from_pair(0),
     flow(nullptr), list(nullptr), energy(0.0), largest(0.0), capped(0), moved(0), warned_cap(0),
     sums_per_atom(3), who(fmt::format("Fix sph/shift {}", id))
 {
-  if (narg < 5) error->all(FLERR, "Illegal {} command: expected <form> <coefficient>", cmd);
-  if (strcmp(arg[3], "skillen") == 0)
-    form = SKILLEN;
-  else if (strcmp(arg[3], "delta-plus") == 0)
-    form = DELTAPLUS;
-  else
-    error->all(FLERR, "Illegal {} command: unknown form '{}' (known: skillen, delta-plus)", cmd,
-               arg[3]);
-  coefficient = utils::numeric(FLERR, arg[4], false, lmp);
-  if (!(coefficient > 0.0) || !std::isfinite(coefficient))
-    error->all(FLERR,
-               "Illegal {} command: coefficient {} must be > 0 (particles move away from where "
-               "they crowd; Reece et al.'s D = -2 is 2 here)",
-               cmd, arg[4]);
-  int iarg = 5;
+  // without a form (nothing, or a keyword next), Reece et al.'s skillen D = 2
+  const bool form_given = (narg > 3) && strcmp(arg[3], "cap") && strcmp(arg[3], "correct") &&
+      strcmp(arg[3], "continuity") && strcmp(arg[3], "loop");
+  int iarg = 3;
+  if (!form_given) {
+    coefficient = DEFAULT_SKILLEN;
+    if (comm->me == 0)
+      utils::logmesg(lmp, "{}: skillen {:g} (the default form: Reece et al. 2024, Table 2)\n", who,
+                     coefficient);
+  } else {
+    if (strcmp(arg[3], "skillen") == 0)
+      form = SKILLEN;
+    else if (strcmp(arg[3], "delta-plus") == 0)
+      form = DELTAPLUS;
+    else
+      error->all(FLERR,
+                 "Illegal {} command: unknown form '{}' (known: skillen, delta-plus; without a "
+                 "form, skillen {:g})",
+                 cmd, arg[3], DEFAULT_SKILLEN);
+    if (narg < 5) error->all(FLERR, "Illegal {} command: {} expects its coefficient", cmd, arg[3]);
+    coefficient = utils::numeric(FLERR, arg[4], false, lmp);
+    if (!(coefficient > 0.0) || !std::isfinite(coefficient))
+      error->all(FLERR,
+                 "Illegal {} command: coefficient {} must be > 0 (particles move away from where "
+                 "they crowd; Reece et al.'s D = -2 is 2 here)",
+                 cmd, arg[4]);
+    iarg = 5;
+  }
   if (form == DELTAPLUS) {
     if (narg < 6)
       error->all(FLERR,
@@ -200,15 +217,14 @@ void FixSPHShift::init()
   warned_cap = 0;
   const int was_from_pair = from_pair;
   // the pair loop makes the skillen sum alone, when it sees every pair of the group
-  from_pair = !loop_own && form == SKILLEN && !correct && !continuity &&
-      flow->provide_shift_sums(groupbit);
+  from_pair =
+      !loop_own && form == SKILLEN && !correct && !continuity && flow->provide_shift_sums(groupbit);
   if (from_pair && !was_from_pair && comm->me == 0)
     utils::logmesg(lmp,
                    "Fix sph/shift: the sums are made in the pair loop of sph/harmonic/visc (loop "
                    "shared)\n");
   if (!from_pair) SPHCompat::request_half_list(neighbor, this, instance_me);
 }
-
 
 /* ----------------------------------------------------------------------
    the group at each run (it can change between definition and run): not
@@ -299,8 +315,7 @@ void FixSPHShift::shift_from_pair_sums()
     if (!(mask[i] & groupbit)) continue;
     moved_local++;
     double dr[3];
-    displacement(i, &sums_of[3 * (size_t) i],
-                 spacing_of(particles.volume(i), dim), h, dim, dr,
+    displacement(i, &sums_of[3 * (size_t) i], spacing_of(particles.volume(i), dim), h, dim, dr,
                  largest_local, capped_local);
     for (int a = 0; a < 3; a++) x[i][a] += dr[a];
   }
@@ -435,9 +450,7 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
     const double volume_other = volume[other];
     if (FORM == DELTAPLUS) {
       const double weight = sphs_deltaplus_weight(w_pair, w_spacing[self], r_coeff, r_power) *
-          (other_in_group
-               ? 2.0 * particles.mass(other) / (rho[self] + rho[other])
-               : volume[self]);
+          (other_in_group ? 2.0 * particles.mass(other) / (rho[self] + rho[other]) : volume[self]);
       for (int a = 0; a < 3; a++) s[a] += weight * grad_w[a];
     } else
       for (int a = 0; a < 3; a++) s[a] += volume_other * grad_w[a];
@@ -643,4 +656,3 @@ void FixSPHShift::restart(char *buf)
                    "ID to start it at 0",
                    who, written, group->names[igroup], energy);
 }
-

@@ -9,7 +9,11 @@
    particles; on unshifted ones (the onset of Rayleigh-Benard convection)
    and on lattices the plain operator is the closer one. eta: 0.01 in the
    cavity, the tanks and the Rayleigh-Benard layer (shifted, buoyant),
-   Cleary's 0.1 in conduction, the channels and around bodies. The volume
+   Cleary's 0.1 in conduction, the channels and around bodies. A
+   background pressure of 0.1 rho0 c0^2 keeps shifted buoyant flows from
+   opening voids (the cavities, the tanks, the Rayleigh-Benard layer above
+   onset); without shifting it would suppress the onset of convection
+   (examples/convection-rayleigh-benard), so none there. The volume
    of a closed convection cell held: the continuity equation lets its mean
    density rise where the flow meets walls (0.6 % per diffusion time in
    the Rayleigh-Benard layer), and the viscosity, diffusivity and Rayleigh
@@ -73,6 +77,13 @@ SPHSceneDefaults::Choice SPHSceneDefaults::heat_eta(LAMMPS *lmp)
   const std::string why = buoyant_shifted_flow(lmp);
   if (why.empty()) return {0, without, 0.1};
   return {1, why, 0.01};
+}
+
+SPHSceneDefaults::Choice SPHSceneDefaults::background(LAMMPS *lmp)
+{
+  const std::string why = buoyant_shifted_flow(lmp);
+  if (why.empty()) return {0, without, 0.0};
+  return {1, why, 0.1};
 }
 
 SPHSceneDefaults::Choice SPHSceneDefaults::volume_hold(LAMMPS *lmp, const Fix *buoyancy,

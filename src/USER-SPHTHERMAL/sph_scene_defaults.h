@@ -35,6 +35,11 @@ namespace SPHSceneDefaults {
   // of shifted particles, as the flow pair's, 0.1 (Cleary's) otherwise
   Choice heat_eta(LAMMPS *lmp);
 
+  // 'background' of an equation of state of fix sph/materials that gives
+  // none (number: the pressure as a multiple of rho0 c0^2): 0.1 in a
+  // buoyancy-driven flow of shifted particles, 0 otherwise
+  Choice background(LAMMPS *lmp);
+
   // 'hold' of fix sph/boussinesq 'buoyancy' (1: its group's volume held,
   // 0: not): held in a closed domain, which the buoyancy alone drives (its
   // 'gravity' keyword and no fix gravity: without weight only walls and

@@ -8,6 +8,11 @@ sph/boussinesq the default is taken again (none); the flow pair keeps its
 plain gradient (no scene default). The same for 'eta': 0.01 with buoyancy
 and shifting, 0.1 otherwise, and applied: the fluid's energy after the step
 equals that of a run with 'eta 0.01' given, and differs from 'eta 0.1'.
+The background pressure of an equation of state that gives none: 0.1 rho0
+c0^2 with buoyancy and shifting (the kinetic energy equals that of the
+background given as 1000 = 0.1 rho0 c0^2, and differs from 0), 0 otherwise.
+fix sph/shift without a form (alone, or with a keyword next) is skillen 2:
+says so, and moves the particles as 'skillen 2' does, not as 'skillen 1'.
 usage: test_scene_defaults.py --lmp LMP --plugin PLUGIN"""
 
 import argparse
@@ -23,10 +28,16 @@ HEAT_DEFAULT = r"Pair style sph/cleary/heat: correction (\w+) \(the default ([^)
 FLOW_APPLIED = r"Pair style sph/harmonic/visc: correction gradient on \d+ fluid atoms"
 HEAT_APPLIED = r"Pair style sph/cleary/heat: correction consistent on \d+ of"
 ETA_DEFAULT = r"Pair style sph/cleary/heat: eta (\S+) \(the default ([^)]*)\)"
+BACKGROUND_DEFAULT = r"Fix sph/materials: background (\S+)(?: rho0 c0\^2)? \(the default ([^)]*)\)"
+SHIFT_DEFAULT = r"Fix sph/shift shift: skillen (\S+) \(the default form"
 
 
 def energy(out):
     return float(re.search(r"^FLUID ENERGY (\S+)", out, re.M).group(1))
+
+
+def kinetic(out):
+    return float(re.search(r"^FLUID KE (\S+)", out, re.M).group(1))
 
 
 def run(args, workdir, **variables):
@@ -75,6 +86,35 @@ def main():
     out = run(args, workdir, buoyant="yes", heat="correction none")
     that(not taken(HEAT_DEFAULT, out) and re.search(HEAT_APPLIED, out) is None,
          "a correction given in the command is kept and not called a default")
+
+    # the background pressure: given (1000 = 0.1 rho0 c0^2 of the input), or the scene's
+    out = run(args, workdir, eos_bg="")
+    ke_default, ke_given = kinetic(out), kinetic(run(args, workdir))
+    ke_none = kinetic(run(args, workdir, eos_bg="background 0.0"))
+    that(taken(BACKGROUND_DEFAULT, out) == ["0.1"] and ke_default == ke_given
+         and ke_default != ke_none,
+         "with buoyancy and shifting the eos takes and applies background 0.1 rho0 c0^2",
+         f"{taken(BACKGROUND_DEFAULT, out)}: kinetic energy {ke_default!r}, given {ke_given!r}, "
+         f"none {ke_none!r}")
+    out = run(args, workdir, eos_bg="", shift="no")
+    ke_default = kinetic(out)
+    ke_none = kinetic(run(args, workdir, eos_bg="background 0.0", shift="no"))
+    that(taken(BACKGROUND_DEFAULT, out) == ["0"] and ke_default == ke_none,
+         "with buoyancy but no shifting the eos takes and applies background 0",
+         f"{taken(BACKGROUND_DEFAULT, out)}: kinetic energy {ke_default!r}, none {ke_none!r}")
+    out = run(args, workdir)
+    that(not taken(BACKGROUND_DEFAULT, out), "a background given in the eos is not called a default")
+
+    # fix sph/shift without a form: skillen 2, alone or with a keyword next
+    given = run(args, workdir)
+    that(not re.search(SHIFT_DEFAULT, given), "a form given is not called a default")
+    ke_two, ke_one = kinetic(given), kinetic(run(args, workdir, shift_args="skillen 1"))
+    for words in ("", "continuity no"):
+        out = run(args, workdir, shift_args=words)
+        that(taken(SHIFT_DEFAULT, out) == ["2"] and kinetic(out) == ke_two and ke_two != ke_one,
+             f"fix sph/shift '{words}' takes and applies skillen 2",
+             f"{taken(SHIFT_DEFAULT, out)}: kinetic energy {kinetic(out)!r}, skillen 2 {ke_two!r}, "
+             f"skillen 1 {ke_one!r}")
 
     out = run(args, workdir, restart="yes")
     after = out.split("resumed without fix sph/boussinesq", 1)
