@@ -52,8 +52,7 @@ variable settings index onset
 if "${settings} == convection" then &
   "variable tend index 0.8" "variable kemax index 1e30" "variable delta index 0.1" &
   "variable init index uniform" "variable t0 index layers" "variable gradient index gradient" &
-  "variable shift index 2" &
-  "variable continuity index yes" "variable every index 200" "variable bg index 0.1" &
+  "variable shift index 2" "variable every index 200" "variable bg index 0.1" &
 elif "${settings} != onset" then &
   "print 'ERROR: settings ${settings}: onset or convection'" "quit 1"
 variable ra      index 3000

@@ -1,5 +1,5 @@
 """fix sph/hold/volume. In the Rayleigh-Benard layer of
-examples/convection-rayleigh-benard (settings convection but the shift's
+examples/convection-rayleigh-benard (settings convection, with the shift's
 'continuity no', 10 per H, Ra 2e4, to t = 0.15) the fluid's volume sum
 m / rho stays at its start, 2 (W = 2H, H = 1), to round-off when held (fix
 sph/boussinesq 'hold yes', its own fix sph/hold/volume), and drifts by more
