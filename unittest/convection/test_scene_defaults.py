@@ -88,8 +88,9 @@ def main():
          "a correction given in the command is kept and not called a default")
 
     # the background pressure: given (1000 = 0.1 rho0 c0^2 of the input), or the scene's
+    given = run(args, workdir)    # the background and the shift's form given
     out = run(args, workdir, eos_bg="")
-    ke_default, ke_given = kinetic(out), kinetic(run(args, workdir))
+    ke_default, ke_given = kinetic(out), kinetic(given)
     ke_none = kinetic(run(args, workdir, eos_bg="background 0.0"))
     that(taken(BACKGROUND_DEFAULT, out) == ["0.1"] and ke_default == ke_given
          and ke_default != ke_none,
@@ -102,11 +103,9 @@ def main():
     that(taken(BACKGROUND_DEFAULT, out) == ["0"] and ke_default == ke_none,
          "with buoyancy but no shifting the eos takes and applies background 0",
          f"{taken(BACKGROUND_DEFAULT, out)}: kinetic energy {ke_default!r}, none {ke_none!r}")
-    out = run(args, workdir)
-    that(not taken(BACKGROUND_DEFAULT, out), "a background given in the eos is not called a default")
+    that(not taken(BACKGROUND_DEFAULT, given), "a background given in the eos is not called a default")
 
     # fix sph/shift without a form: skillen 2, alone or with a keyword next
-    given = run(args, workdir)
     that(not re.search(SHIFT_DEFAULT, given), "a form given is not called a default")
     ke_two, ke_one = kinetic(given), kinetic(run(args, workdir, shift_args="skillen 1"))
     for words in ("", "continuity no"):
