@@ -63,27 +63,32 @@ std::string buoyant_shifted_flow(LAMMPS *lmp)
                      buoyancy, shifts.front()->id);
 }
 const char without[] = "the default without a buoyancy-driven flow of shifted particles";
+
+// a setting (value, number) that is 'on' in a buoyancy-driven flow of
+// shifted particles and 'off' otherwise, with the reason for the log
+SPHSceneDefaults::Choice by_buoyant_shift(LAMMPS *lmp, int off_value, double off_number,
+                                          int on_value, double on_number)
+{
+  const std::string why = buoyant_shifted_flow(lmp);
+  if (why.empty()) return {off_value, without, off_number};
+  return {on_value, why, on_number};
+}
 }    // namespace
 
 SPHSceneDefaults::Choice SPHSceneDefaults::heat_correction(LAMMPS *lmp)
 {
-  const std::string why = buoyant_shifted_flow(lmp);
-  if (why.empty()) return {SPHConductionWeights::NONE, without, 0.0};
-  return {SPHConductionWeights::CONSISTENT, why, 0.0};
+  return by_buoyant_shift(lmp, SPHConductionWeights::NONE, 0.0, SPHConductionWeights::CONSISTENT,
+                          0.0);
 }
 
 SPHSceneDefaults::Choice SPHSceneDefaults::heat_eta(LAMMPS *lmp)
 {
-  const std::string why = buoyant_shifted_flow(lmp);
-  if (why.empty()) return {0, without, 0.1};
-  return {1, why, 0.01};
+  return by_buoyant_shift(lmp, 0, 0.1, 1, 0.01);
 }
 
 SPHSceneDefaults::Choice SPHSceneDefaults::background(LAMMPS *lmp)
 {
-  const std::string why = buoyant_shifted_flow(lmp);
-  if (why.empty()) return {0, without, 0.0};
-  return {1, why, 0.1};
+  return by_buoyant_shift(lmp, 0, 0.0, 1, 0.1);
 }
 
 SPHSceneDefaults::Choice SPHSceneDefaults::volume_hold(LAMMPS *lmp, const Fix *buoyancy,
