@@ -10,7 +10,14 @@
    (g_f: the body acceleration of fluid particle f, with its own buoyancy)
      rho_w from P_w by the wall type's equation of state
      vest_w = 2 v_w - sum_f v_f W_wf / sum_f W_wf   (v_w: the wall's own v)
-   over the fluid neighbours f (particles of no sph/wall/adami fix).
+   over the fluid neighbours f (particles of no sph/wall/adami fix); with
+   'surface', from the fluid's velocity and its gradient interpolated
+   (first-order corrected) at the wall particle's mirror point g across
+   the surface (the ghost points of English et al. 2022):
+     vest_w = v_w - 3 (v(g) - v_w) + (g - x_w) . grad v(g)
+   the quadratic profile across the surface with v = v_w on it (no slip),
+   v(g) and grad v(g), which extends a linear or quadratic profile through
+   the wall exactly.
 ------------------------------------------------------------------------- */
 
 #include "fix_sph_wall_adami.h"
@@ -30,9 +37,11 @@
 #include "sph_comm_stage.h"
 #include "sph_compat.h"
 #include "sph_hub.h"
+#include "sph_interpolation.h"
 #include "sph_kernels.h"
-#include "update.h"
+#include "sph_mirror.h"
 #include "sph_particle.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
@@ -52,7 +61,7 @@ FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
     accel(nullptr), remaining_sampled(0.0), sampled(0), body_force(nullptr), buoyancy(nullptr),
     wall_groupbit(0), kernel_kind(0), cutoff(0.0), materials(nullptr), thermal_expansion(0),
     fluid_near_valid(false), solid_type(nullptr), fluid_weight(nullptr), any_solid(0),
-    solid_state(nullptr), nmax(0)
+    solid_state(nullptr), nmax(0), mirror(nullptr)
 {
   if (!atom->rho_flag || !atom->vest_flag)
     error->all(FLERR, "Fix sph/wall/adami requires atom style sph (rho, vest)");
@@ -77,6 +86,10 @@ FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
       else
         error->all(FLERR, "Illegal {} command: moving {}: yes, no or auto", cmd, arg[iarg + 1]);
       iarg += 2;
+    } else if (strcmp(arg[iarg], "surface") == 0) {
+      delete mirror;
+      mirror = new SPHMirror(lmp, cmd, false, SPHMirror::VELOCITY);
+      iarg += mirror->parse(narg, arg, iarg);
     } else
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
   }
@@ -99,6 +112,7 @@ FixSPHWallAdami::~FixSPHWallAdami()
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(v_sampled);
   memory->destroy(accel);
+  delete mirror;
 }
 
 int FixSPHWallAdami::setmask()
@@ -115,6 +129,7 @@ void FixSPHWallAdami::init()
   const SPHKernelSettings given = hub.require_flow("Fix sph/wall/adami")->kernel_settings();
   kernel_kind = given.kind;
   cutoff = given.cutoff;
+  if (mirror) mirror->init(groupbit, kernel_kind, cutoff, id);
   materials = FixSPHMaterials::find(lmp, "Fix sph/wall/adami");
   // ghost velocities: turned on and checked by the pair, which this fix requires
   SPHCheck::group_of_kind(lmp, this, hub.fixes_of_any<FixSPHWallAdami>(), false, false);
@@ -125,10 +140,11 @@ void FixSPHWallAdami::init()
     if ((atom->mask[i] & groupbit) && solid_type[atom->type[i]]) {
       local_solid = 1;
       if (!(materials->rho0(atom->type[i]) > 0.0))
-        SPHCheck::stop(lmp, FLERR, fmt::format("Fix sph/wall/adami: atom type {} of wall atom {} has no "
-                                        "equation of state, so it is a solid, but no rho0 in fix "
-                                        "sph/materials",
-                                        atom->type[i], atom->tag[i]));
+        SPHCheck::stop(lmp, FLERR,
+                       fmt::format("Fix sph/wall/adami: atom type {} of wall atom {} has no "
+                                   "equation of state, so it is a solid, but no rho0 in fix "
+                                   "sph/materials",
+                                   atom->type[i], atom->tag[i]));
     }
   MPI_Allreduce(&local_solid, &any_solid, 1, MPI_INT, MPI_MAX, world);
   // rho and vest, and with solids their pressure, density and viscosity
@@ -173,6 +189,7 @@ void FixSPHWallAdami::setup_pre_neighbor()
 void FixSPHWallAdami::pre_neighbor()
 {
   fluid_near_valid = false;
+  if (mirror) mirror->neighbours_changed();
 }
 
 /* ----------------------------------------------------------------------
@@ -188,8 +205,14 @@ void FixSPHWallAdami::find_fluid_near()
   const double reach = cutoff + neighbor->skin;
   cells.bin(x, mask, nall, wall_groupbit, reach);
   cells.near_points(
-      x, atom->nlocal, nall, reach, [&](int i) { return (mask[i] & groupbit) ? x[i] : nullptr; },
-      [](int) { return true; }, first_fluid, fluid_near, fluid_atoms);
+      x, atom->nlocal, nall, reach,
+      [&](int i) {
+        return (mask[i] & groupbit) ? x[i] : nullptr;
+      },
+      [](int) {
+        return true;
+      },
+      first_fluid, fluid_near, fluid_atoms);
   fluid_near_valid = true;
 }
 
@@ -270,6 +293,8 @@ void FixSPHWallAdami::pre_force_walls()
   const int ntypes = atom->ntypes;
 
   if (!fluid_near_valid || (int) first_fluid.size() != atom->nlocal + 1) find_fluid_near();
+  // no slip through the surface: the fluid's velocity at the mirror points
+  if (mirror) mirror->interpolate_velocity(ghost_velocity, ghost_how);
   // each fluid particle's pressure and rho times its body acceleration, once
   const int nfluid = fluid_atoms.size();
   fluid_pressure.resize(nfluid);
@@ -289,7 +314,7 @@ void FixSPHWallAdami::pre_force_walls()
     const int is_solid = solid_type[type[i]];
     double weight = 0.0, weighted_p = 0.0, hydrostatic = 0.0;
     double weighted_rho_r[3] = {0.0, 0.0, 0.0};    // moving walls: sum_f rho_f r_wf W_wf
-    double weighted_mu = 0.0;    // solids only; and the weight of each fluid type
+    double weighted_mu = 0.0;                      // solids only; and the weight of each fluid type
     if (is_solid)
       for (int t = 1; t <= ntypes; t++) fluid_weight[t] = 0.0;
     double weighted_v[3] = {0.0, 0.0, 0.0};
@@ -313,7 +338,8 @@ void FixSPHWallAdami::pre_force_walls()
       for (int k = 0; k < 3; k++) weighted_v[k] += w * v[j][k];
       if (is_solid) {
         fluid_weight[type[j]] += w;
-        weighted_mu += w * materials->viscosity_at(type[j], particles.temperature(j), "Fix sph/wall/adami");
+        weighted_mu +=
+            w * materials->viscosity_at(type[j], particles.temperature(j), "Fix sph/wall/adami");
       }
     }
     // the wall's own acceleration: P_w gets -a_w . sum_f rho_f r_wf W_wf
@@ -348,8 +374,26 @@ void FixSPHWallAdami::pre_force_walls()
                               : sphe_density_at(eos, eos->p_background, t_wall);
       if (weight > 0.0 && rho[i] <= 0.0) below_eos++;
     }
-    for (int k = 0; k < 3; k++)
-      vest[i][k] = (weight > 0.0) ? 2.0 * v[i][k] - weighted_v[k] / weight : v[i][k];
+    const int how = mirror ? ghost_how[i] : SPHI_NONE;
+    if (how == SPHI_CORRECTED) {
+      // the quadratic through the wall's v at the surface and the fluid's v
+      // and its gradient at the mirror point g, at the wall particle: the
+      // 1-D profile u(s) = A s + B s^2 (s from the surface, u = v - v_w)
+      // with u(d) and u'(d) given has u(-d) = 2 d u'(d) - 3 u(d)
+      const double *const fluid = &ghost_velocity[12 * (size_t) i];
+      const double *const g = mirror->ghost_point_of(i);
+      const double span[3] = {g[0] - x[i][0], g[1] - x[i][1], g[2] - x[i][2]};
+      for (int k = 0; k < 3; k++) {
+        const double *const grad = &fluid[3 + 3 * k];
+        vest[i][k] = v[i][k] - 3.0 * (fluid[k] - v[i][k]) + grad[0] * span[0] + grad[1] * span[1] +
+            grad[2] * span[2];
+      }
+    } else if (how == SPHI_SHEPARD) {
+      // too thin a neighbourhood for a gradient: the mirror image
+      for (int k = 0; k < 3; k++) vest[i][k] = 2.0 * v[i][k] - ghost_velocity[12 * (size_t) i + k];
+    } else
+      for (int k = 0; k < 3; k++)
+        vest[i][k] = (weight > 0.0) ? 2.0 * v[i][k] - weighted_v[k] / weight : v[i][k];
   }
   // a tension beyond the equation of state leaves no density: stop, collectively
   int below_eos_all = 0;

@@ -27,9 +27,9 @@
 enum sphi_result { SPHI_NONE = 0, SPHI_SHEPARD = 1, SPHI_CORRECTED = 2 };
 
 typedef struct {
-  int dim;             /* 2 or 3 */
-  double a[4][4];      /* the moment matrix, row-major, (dim+1) x (dim+1) */
-  double b[4];         /* the right-hand side */
+  int dim;        /* 2 or 3 */
+  double a[4][4]; /* the moment matrix, row-major, (dim+1) x (dim+1) */
+  double b[4];    /* the right-hand side */
 } sphi_point;
 
 static inline void sphi_begin(sphi_point *p, int dim)
@@ -45,8 +45,8 @@ static inline void sphi_begin(sphi_point *p, int dim)
 /* one neighbour j: d = r_j - r_p, w = W(|d|), g = -(dW/dr) / r (so that
    G_pj = g d; finite at r = 0 for the package's kernels, sphk_df_over_q),
    volume V_j = m_j / rho_j, value f_j */
-static inline void sphi_add_g(sphi_point *p, const double d[3], double w, double g,
-                              double volume, double f)
+static inline void sphi_add_g(sphi_point *p, const double d[3], double w, double g, double volume,
+                              double f)
 {
   const int n = p->dim;
   double row[4], col[4];
@@ -123,6 +123,120 @@ static inline int sphi_solve(const sphi_point *p, double h, double *value, doubl
     *value = u[0];
     if (grad)
       for (k = 1; k < n; k++) grad[k - 1] = u[k] / h;
+  }
+  return SPHI_CORRECTED;
+}
+
+/* Quadratic moving least squares at a point p, for fields whose curvature
+   matters (the no-slip velocity of fix sph/wall/adami 'surface'): with the
+   basis P(d) = [1, d/h, (d d)/h^2] (2-D: 6 terms, 3-D: 10) and the weights
+   V_j W_pj, the coefficients c solve
+     sum_j V_j W_pj P(d_j) P(d_j)^T c = sum_j V_j W_pj P(d_j) f_j
+   so that every quadratic field is reproduced exactly with its value and
+   gradient at p, which the first-order correction above is not: its value
+   carries the kernel's second moment times the curvature. Up to
+   SPHI_QUADRATIC_FIELDS fields share the matrix. */
+#define SPHI_QUADRATIC_TERMS 10
+#define SPHI_QUADRATIC_FIELDS 3
+/* the smallest pivot of the scaled system, relative to its first
+   diagonal element, below which the fit is not trusted (too few or too
+   thin neighbours) */
+#define SPHI_QUADRATIC_MIN_PIVOT 1e-9
+
+typedef struct {
+  int dim, nterms, nfields;
+  double h;
+  double a[SPHI_QUADRATIC_TERMS][SPHI_QUADRATIC_TERMS];
+  double b[SPHI_QUADRATIC_FIELDS][SPHI_QUADRATIC_TERMS];
+} sphi_quadratic;
+
+static inline void sphi_quadratic_begin(sphi_quadratic *q, int dim, int nfields, double h)
+{
+  int r, c;
+  q->dim = dim;
+  q->nterms = (dim == 3) ? 10 : 6;
+  q->nfields = nfields;
+  q->h = h;
+  for (r = 0; r < SPHI_QUADRATIC_TERMS; r++) {
+    for (c = 0; c < SPHI_QUADRATIC_TERMS; c++) q->a[r][c] = 0.0;
+    for (c = 0; c < SPHI_QUADRATIC_FIELDS; c++) q->b[c][r] = 0.0;
+  }
+}
+
+/* the basis at d = r_j - r_p, scaled by h */
+static inline void sphi_quadratic_basis(const sphi_quadratic *q, const double d[3], double *basis)
+{
+  const double x = d[0] / q->h, y = d[1] / q->h, z = d[2] / q->h;
+  basis[0] = 1.0;
+  basis[1] = x;
+  basis[2] = y;
+  if (q->dim == 3) {
+    basis[3] = z;
+    basis[4] = x * x;
+    basis[5] = x * y;
+    basis[6] = x * z;
+    basis[7] = y * y;
+    basis[8] = y * z;
+    basis[9] = z * z;
+  } else {
+    basis[3] = x * x;
+    basis[4] = x * y;
+    basis[5] = y * y;
+  }
+}
+
+/* one neighbour j: d = r_j - r_p, weight = V_j W_pj, f[nfields] its values */
+static inline void sphi_quadratic_add(sphi_quadratic *q, const double d[3], double weight,
+                                      const double *f)
+{
+  double basis[SPHI_QUADRATIC_TERMS];
+  int r, c;
+  sphi_quadratic_basis(q, d, basis);
+  for (r = 0; r < q->nterms; r++) {
+    const double wr = weight * basis[r];
+    for (c = r; c < q->nterms; c++) q->a[r][c] += wr * basis[c];
+    for (c = 0; c < q->nfields; c++) q->b[c][r] += wr * f[c];
+  }
+}
+
+/* value[k] and grad[3 k .. 3 k + 2] of each field k; returns
+   SPHI_CORRECTED, or SPHI_NONE (outputs untouched) when the system is too
+   thin for a quadratic fit */
+static inline int sphi_quadratic_solve(const sphi_quadratic *q, double *value, double *grad)
+{
+  const int n = q->nterms, nf = q->nfields, nd = q->dim;
+  double m[SPHI_QUADRATIC_TERMS][SPHI_QUADRATIC_TERMS + SPHI_QUADRATIC_FIELDS];
+  double u[SPHI_QUADRATIC_TERMS];
+  int r, c, k;
+  if (!(q->a[0][0] > 0.0)) return SPHI_NONE;
+  for (r = 0; r < n; r++) {
+    for (c = 0; c < n; c++) m[r][c] = (c >= r) ? q->a[r][c] : q->a[c][r];
+    for (c = 0; c < nf; c++) m[r][n + c] = q->b[c][r];
+  }
+  for (k = 0; k < n; k++) {
+    int pivot = k;
+    for (r = k + 1; r < n; r++)
+      if (fabs(m[r][k]) > fabs(m[pivot][k])) pivot = r;
+    if (pivot != k)
+      for (c = 0; c < n + nf; c++) {
+        const double t = m[k][c];
+        m[k][c] = m[pivot][c];
+        m[pivot][c] = t;
+      }
+    if (!(fabs(m[k][k]) > SPHI_QUADRATIC_MIN_PIVOT * q->a[0][0])) return SPHI_NONE;
+    for (r = k + 1; r < n; r++) {
+      const double factor = m[r][k] / m[k][k];
+      for (c = k; c < n + nf; c++) m[r][c] -= factor * m[k][c];
+    }
+  }
+  for (k = 0; k < nf; k++) {
+    for (r = n - 1; r >= 0; r--) {
+      double s = m[r][n + k];
+      for (c = r + 1; c < n; c++) s -= m[r][c] * u[c];
+      u[r] = s / m[r][r];
+    }
+    value[k] = u[0];
+    for (c = 0; c < 3; c++) grad[3 * k + c] = (c < nd) ? u[1 + c] / q->h : 0.0;
   }
   return SPHI_CORRECTED;
 }

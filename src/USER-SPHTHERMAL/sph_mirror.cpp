@@ -2,7 +2,8 @@
    USER-SPHTHERMAL: thermal SPH for LAMMPS.
    This software is distributed under the GNU General Public License.
 
-   Mirror points of wall particles and the temperature there (sph_mirror.h).
+   Mirror points of wall particles and the temperature or velocity there
+   (sph_mirror.h).
 ------------------------------------------------------------------------- */
 
 #include "sph_mirror.h"
@@ -13,6 +14,7 @@
 #include "error.h"
 #include "fix.h"
 #include "fix_sph_inlet_temperature.h"
+#include "fix_sph_wall_adami.h"
 #include "fix_sph_wall_adiabatic.h"
 #include "fix_sph_wall_dirichlet.h"
 #include "fix_sph_wall_isothermal.h"
@@ -21,13 +23,13 @@
 #include "region.h"
 #include "sph_checks.h"
 #include "sph_comm_stage.h"
-#include "sph_dispatch.h"
 #include "sph_compat.h"
+#include "sph_dispatch.h"
 #include "sph_hub.h"
 #include "sph_interpolation.h"
 #include "sph_kernels.h"
-#include "update.h"
 #include "sph_particle.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
@@ -36,10 +38,10 @@ using namespace LAMMPS_NS;
 
 /* ---------------------------------------------------------------------- */
 
-SPHMirror::SPHMirror(LAMMPS *lmp, const std::string &cmd, bool returns) :
-    Pointers(lmp), command(cmd), returns_heat(returns), region(nullptr), groupbit(0),
+SPHMirror::SPHMirror(LAMMPS *lmp, const std::string &cmd, bool returns, Field what) :
+    Pointers(lmp), command(cmd), returns_heat(returns), field(what), region(nullptr), groupbit(0),
     medium_exclude(0), held_walls(0), kernel_kind(0), cutoff(0.0), inlet_axis(-1),
-    candidates_valid(false), medium_check_pending(false), medium_tolerance(0.0)
+    candidates_valid(false), medium_check_pending(false), medium_tolerance(0.0), ncomponents(1)
 {
 }
 
@@ -74,19 +76,25 @@ void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
                "{}: surface region {} moves or changes shape; the wall surface must be fixed",
                command, region_name);
 
-  // the interpolation reads the volume and temperature of the medium: pair
-  // sph/cleary/heat, which the mirror walls require, has checked every
-  // atom's rho, cv and esph at its init, which comes before the fixes'
+  // the interpolation reads the volume and temperature (or velocity) of the
+  // medium: pair sph/cleary/heat, which the mirror walls require, has
+  // checked every atom's rho, cv and esph at its init, which comes before
+  // the fixes' (pair sph/harmonic/visc every atom's rho for the flow walls)
 
   SPHHub hub(lmp);
   inlet_axis = -1;
-  for (FixSPHInletTemperature *inlet : hub.fixes<FixSPHInletTemperature>())
-    inlet_axis = inlet->flow_axis();
-
-  // the thermal walls' particles are not part of the medium; those that
-  // hold a temperature are not the medium's either way
-  held_walls = hub.groupbits<FixSPHWallDirichlet>() | hub.groupbits<FixSPHWallIsothermal>();
-  medium_exclude = held_walls | hub.groupbits<FixSPHWallAdiabatic>();
+  held_walls = 0;
+  if (field == VELOCITY) {
+    // the flow's medium: the fluid, the atoms of no flow wall
+    medium_exclude = hub.groupbits<FixSPHWallAdami>();
+  } else {
+    for (FixSPHInletTemperature *inlet : hub.fixes<FixSPHInletTemperature>())
+      inlet_axis = inlet->flow_axis();
+    // the thermal walls' particles are not part of the medium; those that
+    // hold a temperature are not the medium's either way
+    held_walls = hub.groupbits<FixSPHWallDirichlet>() | hub.groupbits<FixSPHWallIsothermal>();
+    medium_exclude = held_walls | hub.groupbits<FixSPHWallAdiabatic>();
+  }
 
   // every wall atom lies outside the region; the farthest one within the
   // kernel's reach sets how far the ghost points lie from their wall atoms
@@ -199,7 +207,9 @@ void SPHMirror::check_medium()
   };
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    cells.within(x, x[i], cutoff, [&](int j) { consider(j, x[i]); });
+    cells.within(x, x[i], cutoff, [&](int j) {
+      consider(j, x[i]);
+    });
     if (!has_ghost[i]) continue;
     const double *const g = &ghost_at[3 * (size_t) i];
     for (int n = first_candidate[i]; n < first_candidate[i + 1]; n++)
@@ -215,10 +225,11 @@ void SPHMirror::check_medium()
              "{}: medium atom {} (type {}) at ({:.8g} {:.8g} {:.8g}), within the kernel's reach "
              "of the wall atoms or their ghost points, lies outside surface region {} (side {}); "
              "the region holds all the medium next to the wall, its boundary is the wall's "
-             "surface: make the region reach the medium's edge (or put the atom in a thermal "
-             "wall fix's group)",
+             "surface: make the region reach the medium's edge (or put the atom in a {} fix's "
+             "group)",
              who(), first, (int) where[0], where[1], where[2], where[3], region_name,
-             region->interior ? "in" : "out");
+             region->interior ? "in" : "out",
+             field == VELOCITY ? "sph/wall/adami" : "thermal wall");
 }
 
 /* ----------------------------------------------------------------------
@@ -237,14 +248,23 @@ void SPHMirror::find_candidates()
   candidates_at = ghost_at;
   cells.near_points(
       x, nlocal, nall, reach,
-      [&](int i) { return has_ghost[i] ? &ghost_at[3 * (size_t) i] : nullptr; },
-      [&](int j) { return !(mask[j] & medium_exclude); }, first_candidate, candidates,
-      medium_atoms);
+      [&](int i) {
+        return has_ghost[i] ? &ghost_at[3 * (size_t) i] : nullptr;
+      },
+      [&](int j) {
+        return !(mask[j] & medium_exclude);
+      },
+      first_candidate, candidates, medium_atoms);
   // the particles of walls that hold a temperature near each wall particle
   cells.near_points(
       x, nlocal, nall, reach,
-      [&](int i) { return (held_walls && (mask[i] & groupbit)) ? x[i] : nullptr; },
-      [&](int j) { return (mask[j] & held_walls) != 0; }, first_held, held_near, held_atoms);
+      [&](int i) {
+        return (held_walls && (mask[i] & groupbit)) ? x[i] : nullptr;
+      },
+      [&](int j) {
+        return (mask[j] & held_walls) != 0;
+      },
+      first_held, held_near, held_atoms);
   candidates_valid = true;
 }
 
@@ -254,24 +274,40 @@ struct SPHMirror::PointsCall {
   SPHMirror *mirror;
   std::vector<double> *ghost;
   std::vector<int> *how;
-  const sphk_kernel *kernel;
   template <int DIM, int KERNEL> void run()
   {
-    mirror->interpolate_points<DIM, KERNEL>(*ghost, *how, *kernel);
+    const sphk_kernel kernel = sphk_make(KERNEL, DIM, mirror->cutoff);
+    mirror->interpolate_points<DIM, KERNEL>(*ghost, *how, kernel);
   }
 };
 
 void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
                             std::vector<double> *depth)
 {
+  prepare(1, ghost, how, depth);
+  PointsCall call = {this, &ghost, &how};
+  const int settings[] = {domain->dimension, kernel_kind};
+  SPHDispatch<SPHDimensions, SPHKernelKinds>::to(call, settings);
+}
+
+void SPHMirror::interpolate_velocity(std::vector<double> &ghost_v, std::vector<int> &how)
+{
+  prepare(3, ghost_v, how, nullptr);
+  ghost_v.assign(12 * (size_t) atom->nlocal, 0.0);
+  PointsCall call = {this, &ghost_v, &how};
+  const int settings[] = {domain->dimension, kernel_kind};
+  SPHDispatch<SPHDimensions, SPHKernelKinds>::to(call, settings);
+}
+
+void SPHMirror::prepare(int components, std::vector<double> &ghost, std::vector<int> &how,
+                        std::vector<double> *depth)
+{
   const SPHParticles particles(atom);
   double *const *const x = atom->x;
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
-  const int dim = domain->dimension;
-  const sphk_kernel kernel = sphk_make(kernel_kind, dim, cutoff);
-
-  ghost.assign(nlocal, 0.0);
+  ncomponents = components;
+  ghost.assign(components * (size_t) nlocal, 0.0);
   how.assign(nlocal, SPHI_NONE);
   if (depth) depth->assign(nlocal, 0.0);
   first_neighbour.assign(nlocal + 1, 0);
@@ -299,15 +335,16 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
   if (medium_check_pending) check_medium();
   const int nmedium = medium_atoms.size();
   medium_volume.resize(nmedium);
-  medium_temperature.resize(nmedium);
+  medium_values.resize(components * (size_t) nmedium);
+  const double *const *const v = atom->v;
   for (int m = 0; m < nmedium; m++) {
     const int j = medium_atoms[m];
     medium_volume[m] = particles.volume(j);
-    medium_temperature[m] = particles.temperature(j);
+    if (components == 1)
+      medium_values[m] = particles.temperature(j);
+    else
+      for (int k = 0; k < 3; k++) medium_values[3 * (size_t) m + k] = v[j][k];
   }
-  PointsCall call = {this, &ghost, &how, &kernel};
-  const int settings[] = {dim, kernel_kind};
-  SPHDispatch<SPHDimensions, SPHKernelKinds>::to(call, settings);
 }
 
 /* ----------------------------------------------------------------------
@@ -359,22 +396,50 @@ void SPHMirror::interpolate_points(std::vector<double> &ghost, std::vector<int> 
       g_in[k] = minus_dwdr_r_scale * sphk_df_over_q(KERNEL, q);
     }
 
-    sphi_point point;
-    sphi_begin(&point, DIM);
-    double shepard = 0.0;
-    const size_t start = neighbours.size();
+    if (ncomponents == 1) {
+      // the temperature: first-order corrected
+      sphi_point point;
+      sphi_begin(&point, DIM);
+      double shepard = 0.0;
+      const size_t start = neighbours.size();
+      for (int k = 0; k < nin; k++) {
+        const int m = m_in[k];
+        const double volume = medium_volume[m];
+        sphi_add_g(&point, &d_in[3 * k], w_in[k], g_in[k], volume, medium_values[m]);
+        if (returns_heat) {
+          neighbours.push_back(medium_atoms[m]);
+          weights.push_back(w_in[k] * volume);
+          shepard += w_in[k] * volume;
+        }
+      }
+      for (size_t n = start; n < weights.size(); n++) weights[n] /= shepard;
+      how[i] = sphi_solve(&point, h, &ghost[i], nullptr);
+      continue;
+    }
+    // the velocity: its curvature matters to the wall's viscous force, so
+    // a quadratic fit (value and gradient of a quadratic field exact), or
+    // where the neighbourhood is too thin for one, the first-order value
+    // alone (how SPHI_SHEPARD)
+    double *const out = &ghost[12 * (size_t) i];
+    sphi_quadratic fit;
+    sphi_quadratic_begin(&fit, DIM, DIM, h);
     for (int k = 0; k < nin; k++) {
       const int m = m_in[k];
-      const double volume = medium_volume[m];
-      sphi_add_g(&point, &d_in[3 * k], w_in[k], g_in[k], volume, medium_temperature[m]);
-      if (returns_heat) {
-        neighbours.push_back(medium_atoms[m]);
-        weights.push_back(w_in[k] * volume);
-        shepard += w_in[k] * volume;
-      }
+      sphi_quadratic_add(&fit, &d_in[3 * k], w_in[k] * medium_volume[m],
+                         &medium_values[3 * (size_t) m]);
     }
-    for (size_t n = start; n < weights.size(); n++) weights[n] /= shepard;
-    how[i] = sphi_solve(&point, h, &ghost[i], nullptr);
+    how[i] = sphi_quadratic_solve(&fit, out, out + 3);
+    if (how[i] == SPHI_CORRECTED) continue;
+    for (int c = 0; c < DIM; c++) {
+      sphi_point point;
+      sphi_begin(&point, DIM);
+      for (int k = 0; k < nin; k++) {
+        const int m = m_in[k];
+        sphi_add_g(&point, &d_in[3 * k], w_in[k], g_in[k], medium_volume[m],
+                   medium_values[3 * (size_t) m + c]);
+      }
+      how[i] = (sphi_solve(&point, h, &out[c], nullptr) == SPHI_NONE) ? SPHI_NONE : SPHI_SHEPARD;
+    }
   }
   first_neighbour[nlocal] = neighbours.size();
 }

@@ -27,11 +27,16 @@ namespace LAMMPS_NS {
 // from it: T_w = T_ghost (adiabatic), T_w = 2 T_surface - T_ghost (Dirichlet).
 // The medium's particles are those in no thermal wall group; with fix
 // sph/inlet/temperature, those on the ghost point's side of its plane.
+// The flow walls of fix sph/wall/adami read the medium's velocity at the
+// ghost points instead (no slip: v_w = 2 v_wall - v_ghost, as English et
+// al. 2022 do); their medium is the fluid, the atoms of no such fix.
 class SPHMirror : protected Pointers {
  public:
+  enum Field { TEMPERATURE, VELOCITY };
   // returns_heat: the owner gives heat back to the medium (return_heat),
   // so the neighbours and weights of each ghost point are kept
-  SPHMirror(class LAMMPS *, const std::string &command, bool returns_heat);
+  SPHMirror(class LAMMPS *, const std::string &command, bool returns_heat,
+            Field field = TEMPERATURE);
   ~SPHMirror() override;
 
   // 'surface <region-ID>' at arg[iarg]: returns the words read
@@ -52,6 +57,11 @@ class SPHMirror : protected Pointers {
   // depth (when given): the distance from the surface to the ghost point
   void interpolate(std::vector<double> &ghost, std::vector<int> &how,
                    std::vector<double> *depth = nullptr);
+  // (field VELOCITY) the medium's velocity there and its gradient: 12
+  // values per owned atom, v then d v_c / d x_k at 3 + 3 c + k
+  void interpolate_velocity(std::vector<double> &ghost_v, std::vector<int> &how);
+  // this step's ghost point of owned atom i (after an interpolation)
+  const double *ghost_point_of(int i) const { return &ghost_at[3 * (size_t) i]; }
 
   // after atoms were exchanged or sorted (the owner's pre_neighbor): the
   // candidates kept from the last neighbour build are stale
@@ -75,6 +85,7 @@ class SPHMirror : protected Pointers {
  protected:
   std::string command, region_name, fix_id;
   bool returns_heat;
+  Field field;
   class Region *region;
   int groupbit, medium_exclude;
   int held_walls;    // walls that hold a temperature (Dirichlet, isothermal)
@@ -104,7 +115,9 @@ class SPHMirror : protected Pointers {
   bool candidates_valid;
   bool medium_check_pending;    // check_medium() at the next interpolate()
   double medium_tolerance;      // how far past the surface a medium atom may be
-  std::vector<double> medium_volume, medium_temperature;
+  // per medium atom: its volume and the field's components (ncomponents)
+  std::vector<double> medium_volume, medium_values;
+  int ncomponents;
   // this step's ghost points: 3 per owned atom, and whether there is one
   std::vector<double> ghost_at;
   std::vector<int> has_ghost;
@@ -117,8 +130,11 @@ class SPHMirror : protected Pointers {
     return fix_id.empty() ? command : "Fix " + fix_id + " " + command.substr(command.find(' ') + 1);
   }
   void find_candidates();
+  // the ghost points, their candidates and the medium's values of this step
+  void prepare(int components, std::vector<double> &ghost, std::vector<int> &how,
+               std::vector<double> *depth);
   SPHSupport support;    // the candidates of one ghost point inside the support
-  struct PointsCall;    // interpolate_points for this run's settings (sph_dispatch.h)
+  struct PointsCall;     // interpolate_points for this run's settings (sph_dispatch.h)
   template <int DIM, int KERNEL>
   void interpolate_points(std::vector<double> &ghost, std::vector<int> &how,
                           const sphk_kernel &kernel);

@@ -165,6 +165,10 @@ sphthermal_python_test(flow.two_fluids.stable flow/test_two_fluids.py LAMMPS LAB
 # light fluid has the heavy one's rho0 c0^2, and the pair warns when it has not
 sphthermal_python_test(flow.two_fluids.column flow/test_two_fluid_column.py LAMMPS LABELS validation)
 
+# fix sph/wall/adami 'surface': the walls extend a linear profile exactly
+# (Couette flow from its steady profile), on 1, 2 and 4 ranks
+sphthermal_python_test(flow.adami_surface flow/test_adami_surface.py LAMMPS LABELS unit)
+
 # the adaptive timestep (fix sph/dt/reset)
 include(${CMAKE_CURRENT_LIST_DIR}/dt_reset.cmake)
 
