@@ -11,8 +11,9 @@
 # rho = cv = k = 1 (thermal diffusivity 1, time in H^2/alpha); viscosity Pr,
 # expansion 1, gravity Ra Pr, so that Ra = g beta dT H^3 / (nu alpha);
 # T0 = 0.5. Walls: layers of wall particles below y = 0 and above y = H,
-# Adami no-slip walls for the flow (fix sph/wall/adami), Dirichlet walls
-# mirrored across the plates for the heat (fix sph/wall/dirichlet ... surface).
+# Adami no-slip walls for the flow, their velocity mirrored across the
+# plates (fix sph/wall/adami ... surface), Dirichlet walls mirrored across
+# them for the heat (fix sph/wall/dirichlet ... surface).
 #
 #   lmp -in in.rb -var plugin /path/to/sphthermalplugin.so -var ra 3000
 # Variables: ra, pr, n (particles per H), width (W / H; W n must be an
@@ -31,7 +32,9 @@
 #   cell, holds the fluid's volume sum m / rho; no: the continuity
 #   equation's, which lets the mean density rise), jitter
 #   (random initial displacement of the fluid particles / dx; 0, the
-#   default: none), seed (its random seed).
+#   default: none), seed (its random seed), noslip (surface: the walls'
+#   velocity from the fluid's across the plates, the default; shepard:
+#   Adami's mean of the fluid near each wall particle, for comparison).
 # settings = onset (the defaults below) or convection: above onset, to a
 #   steady state (t = 0.8), with the flagship cavity's settings (without
 #   the background pressure particles entered the plates at 10 and 16 per H
@@ -83,6 +86,7 @@ variable continuity index no
 variable hold    index yes
 variable jitter  index 0.0
 variable seed    index 12345
+variable noslip  index surface
 
 variable has_plugin equal is_file(${plugin})
 if "${has_plugin}" then "plugin load ${plugin}" &
@@ -149,7 +153,9 @@ pair_coeff      * * sph/cleary/heat
 neighbor        $(0.2*v_dx) bin
 neigh_modify    delay 0 every 1 check yes exclude type 2 2
 
-fix             flow_walls wall sph/wall/adami
+if "${noslip} == surface" then "fix flow_walls wall sph/wall/adami surface layer" &
+   elif "${noslip} == shepard" then "fix flow_walls wall sph/wall/adami" &
+   else "print 'ERROR: noslip ${noslip}: surface or shepard'" "quit 1"
 fix             hot hot sph/wall/dirichlet 1.0 surface layer
 fix             cold cold sph/wall/dirichlet 0.0 surface layer
 fix             buoyancy fluid sph/boussinesq ${t0} gravity 0.0 -${g} 0.0 hold ${hold}
