@@ -56,7 +56,7 @@ if "${settings} == convection" then &
   "variable tend index 0.8" "variable kemax index 1e30" "variable delta index 0.1" &
   "variable init index uniform" "variable t0 index layers" "variable gradient index gradient" &
   "variable shift index 2" "variable every index 200" "variable bg index 0.1" &
-elif "${settings} != onset" then &
+elif "${settings} != onset" &
   "print 'ERROR: settings ${settings}: onset or convection'" "quit 1"
 variable ra      index 3000
 variable pr      index 0.71
@@ -154,7 +154,7 @@ neighbor        $(0.2*v_dx) bin
 neigh_modify    delay 0 every 1 check yes exclude type 2 2
 
 if "${noslip} == surface" then "fix flow_walls wall sph/wall/adami surface layer" &
-   elif "${noslip} == shepard" then "fix flow_walls wall sph/wall/adami" &
+   elif "${noslip} == shepard" "fix flow_walls wall sph/wall/adami" &
    else "print 'ERROR: noslip ${noslip}: surface or shepard'" "quit 1"
 fix             hot hot sph/wall/dirichlet 1.0 surface layer
 fix             cold cold sph/wall/dirichlet 0.0 surface layer
