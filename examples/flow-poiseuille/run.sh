@@ -15,13 +15,12 @@ here=$(cd "$(dirname "$0")" && pwd)
 if [ "${1:-}" = wendland ]; then
   size="-var n 40 -var ncol 8 -var kernel wendland -var hdx 2 -var dtfac 0.15 -var shift 1"
   label="40 across, Wendland h = 2 dx, shifted"
-  # measured (README.md): 0.11 % of u_max (0.42 % with Shepard walls); at dt = 0.2 h / c0
-  # it broke up (23.6 %, Shepard walls)
+  # measured (README.md): 0.42 % of u_max; at dt = 0.2 h / c0 it breaks up (23.6 %)
   limits="--max-error 1.0 --max-vy 0.2"
 elif [ "${1:-}" = quick ]; then
   size="-var n 20 -var ncol 4"
   label="20 across"
-  # measured (README.md): max error 0.20 % of u_max (t = 300 s), max |vy| 0.030 %
+  # measured (README.md): max error 0.44 % of u_max (at t = 1200 s), max |vy| 0.023 %
   limits="--max-error 0.55 --max-vy 0.1"
 else
   size="-var n 40 -var ncol 8"
