@@ -11,9 +11,9 @@
      rho_w from P_w by the wall type's equation of state
      vest_w = 2 v_w - sum_f v_f W_wf / sum_f W_wf   (v_w: the wall's own v)
    over the fluid neighbours f (particles of no sph/wall/adami fix); with
-   'surface', from the fluid's velocity and its gradient interpolated
-   (first-order corrected) at the wall particle's mirror point g across
-   the surface (the ghost points of English et al. 2022):
+   'surface', from the fluid's velocity and its gradient at the wall
+   particle's mirror point g across the surface (the ghost points of
+   English et al. 2022), from a quadratic least-squares fit there:
      vest_w = v_w - 3 (v(g) - v_w) + (g - x_w) . grad v(g)
    the quadratic profile across the surface with v = v_w on it (no slip),
    v(g) and grad v(g), which extends a linear or quadratic profile through
@@ -140,11 +140,10 @@ void FixSPHWallAdami::init()
     if ((atom->mask[i] & groupbit) && solid_type[atom->type[i]]) {
       local_solid = 1;
       if (!(materials->rho0(atom->type[i]) > 0.0))
-        SPHCheck::stop(lmp, FLERR,
-                       fmt::format("Fix sph/wall/adami: atom type {} of wall atom {} has no "
-                                   "equation of state, so it is a solid, but no rho0 in fix "
-                                   "sph/materials",
-                                   atom->type[i], atom->tag[i]));
+        SPHCheck::stop(lmp, FLERR, fmt::format("Fix sph/wall/adami: atom type {} of wall atom {} has no "
+                                        "equation of state, so it is a solid, but no rho0 in fix "
+                                        "sph/materials",
+                                        atom->type[i], atom->tag[i]));
     }
   MPI_Allreduce(&local_solid, &any_solid, 1, MPI_INT, MPI_MAX, world);
   // rho and vest, and with solids their pressure, density and viscosity
@@ -205,14 +204,8 @@ void FixSPHWallAdami::find_fluid_near()
   const double reach = cutoff + neighbor->skin;
   cells.bin(x, mask, nall, wall_groupbit, reach);
   cells.near_points(
-      x, atom->nlocal, nall, reach,
-      [&](int i) {
-        return (mask[i] & groupbit) ? x[i] : nullptr;
-      },
-      [](int) {
-        return true;
-      },
-      first_fluid, fluid_near, fluid_atoms);
+      x, atom->nlocal, nall, reach, [&](int i) { return (mask[i] & groupbit) ? x[i] : nullptr; },
+      [](int) { return true; }, first_fluid, fluid_near, fluid_atoms);
   fluid_near_valid = true;
 }
 
@@ -314,7 +307,7 @@ void FixSPHWallAdami::pre_force_walls()
     const int is_solid = solid_type[type[i]];
     double weight = 0.0, weighted_p = 0.0, hydrostatic = 0.0;
     double weighted_rho_r[3] = {0.0, 0.0, 0.0};    // moving walls: sum_f rho_f r_wf W_wf
-    double weighted_mu = 0.0;                      // solids only; and the weight of each fluid type
+    double weighted_mu = 0.0;    // solids only; and the weight of each fluid type
     if (is_solid)
       for (int t = 1; t <= ntypes; t++) fluid_weight[t] = 0.0;
     double weighted_v[3] = {0.0, 0.0, 0.0};
@@ -338,8 +331,7 @@ void FixSPHWallAdami::pre_force_walls()
       for (int k = 0; k < 3; k++) weighted_v[k] += w * v[j][k];
       if (is_solid) {
         fluid_weight[type[j]] += w;
-        weighted_mu +=
-            w * materials->viscosity_at(type[j], particles.temperature(j), "Fix sph/wall/adami");
+        weighted_mu += w * materials->viscosity_at(type[j], particles.temperature(j), "Fix sph/wall/adami");
       }
     }
     // the wall's own acceleration: P_w gets -a_w . sum_f rho_f r_wf W_wf

@@ -64,8 +64,8 @@ class FixSPHWallAdami : public Fix {
 
  protected:
   class SPHCommStage forward_fields() const;    // what the forward comm carries
-  double body[3];    // body acceleration of the fluid minus that of the wall
-  int body_given;    // 1: 'body' in the command; 0: the run's body force
+  double body[3];            // body acceleration of the fluid minus that of the wall
+  int body_given;            // 1: 'body' in the command; 0: the run's body force
   // moving walls: each particle's acceleration a_w, from its velocity at
   // successive force evaluations (fix rigid and fix move set v at the half
   // step, fix sph/wall/adami samples it in pre_force)
@@ -77,9 +77,9 @@ class FixSPHWallAdami : public Fix {
   int sampled;                 // 1 when v_sampled holds a sample of every wall atom
   void sample_acceleration(double half_dt);
   void pre_force_walls();
-  const double *body_force;    // the run's body force (fix gravity), nullptr when none
+  const double *body_force;  // the run's body force (fix gravity), nullptr when none
   const SPHBodyForce::Buoyancy *buoyancy;    // fix sph/boussinesq, nullptr when none
-  int wall_groupbit;                         // particles of every sph/wall/adami fix
+  int wall_groupbit;      // particles of every sph/wall/adami fix
   int kernel_kind;
   double cutoff;
   class FixSPHMaterials *materials;
@@ -93,14 +93,14 @@ class FixSPHWallAdami : public Fix {
   std::vector<double> fluid_pressure, fluid_rho_accel;
   bool fluid_near_valid;
   void find_fluid_near();
-  int *solid_type;         // per type: 1 when the type has no equation of state
-  double *fluid_weight;    // per type: kernel weight of its fluid around one solid particle
-  int any_solid;           // 1 when some wall particle of this fix is solid
-  double *
-      *solid_state;    // per atom (owned and ghost): P, rho, viscosity, rho0/rho seen by the flow
+  int *solid_type;          // per type: 1 when the type has no equation of state
+  double *fluid_weight;     // per type: kernel weight of its fluid around one solid particle
+  int any_solid;            // 1 when some wall particle of this fix is solid
+  double **solid_state;     // per atom (owned and ghost): P, rho, viscosity, rho0/rho seen by the flow
   int nmax;
-  // with 'surface': the mirror points and the fluid's velocity there (3 per
-  // owned atom) and how it was found (sphi_result)
+  // with 'surface': the mirror points, the fluid's velocity and its
+  // gradient there (12 per owned atom, SPHMirror::interpolate_velocity) and
+  // how they were found (sphi_result)
   class SPHMirror *mirror;
   std::vector<double> ghost_velocity;
   std::vector<int> ghost_how;

@@ -27,9 +27,9 @@
 enum sphi_result { SPHI_NONE = 0, SPHI_SHEPARD = 1, SPHI_CORRECTED = 2 };
 
 typedef struct {
-  int dim;        /* 2 or 3 */
-  double a[4][4]; /* the moment matrix, row-major, (dim+1) x (dim+1) */
-  double b[4];    /* the right-hand side */
+  int dim;             /* 2 or 3 */
+  double a[4][4];      /* the moment matrix, row-major, (dim+1) x (dim+1) */
+  double b[4];         /* the right-hand side */
 } sphi_point;
 
 static inline void sphi_begin(sphi_point *p, int dim)
@@ -45,8 +45,8 @@ static inline void sphi_begin(sphi_point *p, int dim)
 /* one neighbour j: d = r_j - r_p, w = W(|d|), g = -(dW/dr) / r (so that
    G_pj = g d; finite at r = 0 for the package's kernels, sphk_df_over_q),
    volume V_j = m_j / rho_j, value f_j */
-static inline void sphi_add_g(sphi_point *p, const double d[3], double w, double g, double volume,
-                              double f)
+static inline void sphi_add_g(sphi_point *p, const double d[3], double w, double g,
+                              double volume, double f)
 {
   const int n = p->dim;
   double row[4], col[4];

@@ -207,9 +207,7 @@ void SPHMirror::check_medium()
   };
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    cells.within(x, x[i], cutoff, [&](int j) {
-      consider(j, x[i]);
-    });
+    cells.within(x, x[i], cutoff, [&](int j) { consider(j, x[i]); });
     if (!has_ghost[i]) continue;
     const double *const g = &ghost_at[3 * (size_t) i];
     for (int n = first_candidate[i]; n < first_candidate[i + 1]; n++)
@@ -248,23 +246,14 @@ void SPHMirror::find_candidates()
   candidates_at = ghost_at;
   cells.near_points(
       x, nlocal, nall, reach,
-      [&](int i) {
-        return has_ghost[i] ? &ghost_at[3 * (size_t) i] : nullptr;
-      },
-      [&](int j) {
-        return !(mask[j] & medium_exclude);
-      },
-      first_candidate, candidates, medium_atoms);
+      [&](int i) { return has_ghost[i] ? &ghost_at[3 * (size_t) i] : nullptr; },
+      [&](int j) { return !(mask[j] & medium_exclude); }, first_candidate, candidates,
+      medium_atoms);
   // the particles of walls that hold a temperature near each wall particle
   cells.near_points(
       x, nlocal, nall, reach,
-      [&](int i) {
-        return (held_walls && (mask[i] & groupbit)) ? x[i] : nullptr;
-      },
-      [&](int j) {
-        return (mask[j] & held_walls) != 0;
-      },
-      first_held, held_near, held_atoms);
+      [&](int i) { return (held_walls && (mask[i] & groupbit)) ? x[i] : nullptr; },
+      [&](int j) { return (mask[j] & held_walls) != 0; }, first_held, held_near, held_atoms);
   candidates_valid = true;
 }
 
@@ -284,7 +273,8 @@ struct SPHMirror::PointsCall {
 void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
                             std::vector<double> *depth)
 {
-  prepare(1, ghost, how, depth);
+  ghost.assign(atom->nlocal, 0.0);
+  prepare(1, how, depth);
   PointsCall call = {this, &ghost, &how};
   const int settings[] = {domain->dimension, kernel_kind};
   SPHDispatch<SPHDimensions, SPHKernelKinds>::to(call, settings);
@@ -292,22 +282,20 @@ void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
 
 void SPHMirror::interpolate_velocity(std::vector<double> &ghost_v, std::vector<int> &how)
 {
-  prepare(3, ghost_v, how, nullptr);
   ghost_v.assign(12 * (size_t) atom->nlocal, 0.0);
+  prepare(3, how, nullptr);
   PointsCall call = {this, &ghost_v, &how};
   const int settings[] = {domain->dimension, kernel_kind};
   SPHDispatch<SPHDimensions, SPHKernelKinds>::to(call, settings);
 }
 
-void SPHMirror::prepare(int components, std::vector<double> &ghost, std::vector<int> &how,
-                        std::vector<double> *depth)
+void SPHMirror::prepare(int components, std::vector<int> &how, std::vector<double> *depth)
 {
   const SPHParticles particles(atom);
   double *const *const x = atom->x;
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
   ncomponents = components;
-  ghost.assign(components * (size_t) nlocal, 0.0);
   how.assign(nlocal, SPHI_NONE);
   if (depth) depth->assign(nlocal, 0.0);
   first_neighbour.assign(nlocal + 1, 0);

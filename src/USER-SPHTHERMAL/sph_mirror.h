@@ -27,9 +27,10 @@ namespace LAMMPS_NS {
 // from it: T_w = T_ghost (adiabatic), T_w = 2 T_surface - T_ghost (Dirichlet).
 // The medium's particles are those in no thermal wall group; with fix
 // sph/inlet/temperature, those on the ghost point's side of its plane.
-// The flow walls of fix sph/wall/adami read the medium's velocity at the
-// ghost points instead (no slip: v_w = 2 v_wall - v_ghost, as English et
-// al. 2022 do); their medium is the fluid, the atoms of no such fix.
+// The flow walls of fix sph/wall/adami ('surface') read the medium's
+// velocity and its gradient at the ghost points instead, from a quadratic
+// fit (sph_interpolation.h); their medium is the fluid, the atoms of no
+// such fix.
 class SPHMirror : protected Pointers {
  public:
   enum Field { TEMPERATURE, VELOCITY };
@@ -130,11 +131,11 @@ class SPHMirror : protected Pointers {
     return fix_id.empty() ? command : "Fix " + fix_id + " " + command.substr(command.find(' ') + 1);
   }
   void find_candidates();
-  // the ghost points, their candidates and the medium's values of this step
-  void prepare(int components, std::vector<double> &ghost, std::vector<int> &how,
-               std::vector<double> *depth);
+  // the ghost points, their candidates and the medium's values (1: its
+  // temperature, 3: its velocity) of this step
+  void prepare(int components, std::vector<int> &how, std::vector<double> *depth);
   SPHSupport support;    // the candidates of one ghost point inside the support
-  struct PointsCall;     // interpolate_points for this run's settings (sph_dispatch.h)
+  struct PointsCall;    // interpolate_points for this run's settings (sph_dispatch.h)
   template <int DIM, int KERNEL>
   void interpolate_points(std::vector<double> &ghost, std::vector<int> &how,
                           const sphk_kernel &kernel);

@@ -1,8 +1,10 @@
 /* Unit tests of the convection terms, in C99: the Boussinesq acceleration
    (sph_buoyancy.h) and the first-order corrected interpolation at a point
    (sph_interpolation.h) that the mirror walls use at their ghost points,
-   and particle shifting (sph_shift.h).
-   Usage: test_convection_terms buoyancy | linear | thin | shift | deltaplus */
+   and particle shifting (sph_shift.h), and the quadratic fit at a point
+   (sph_interpolation.h) of the flow walls' 'surface'.
+   Usage: test_convection_terms buoyancy | linear | thin | shift | deltaplus |
+   gradient | quadratic */
 
 #include "sph_buoyancy.h"
 #include "sph_gradient.h"
@@ -257,10 +259,94 @@ static void test_gradient(void)
   }
 }
 
+/* the quadratic fit reproduces a quadratic field's value and gradient at a
+   point whatever the neighbourhood (a jittered lattice on one side of a
+   wall, 2-D and 3-D, two fields at once), where the first-order
+   correction misses the value by the kernel's second moment times the
+   curvature; a neighbourhood on one line is refused */
+static double jitter_of(int i, int k)
+{
+  /* a fixed pseudo-random number in [-0.2, 0.2] */
+  const unsigned u = (unsigned) (i * 2654435761u + k * 40503u + 12345u);
+  return 0.4 * ((u % 10007u) / 10006.0) - 0.2;
+}
+
+static void test_quadratic(void)
+{
+  const double h = 1.0;
+  int dim;
+  for (dim = 2; dim <= 3; dim++) {
+    const sphk_kernel kernel = sphk_make(SPHK_WENDLAND, dim, 2.0 * h);
+    const double p[3] = {0.1, 0.35, (dim == 3) ? -0.2 : 0.0};
+    sphi_quadratic fit;
+    sphi_point linear;
+    double value[2], grad[6], first = 0.0;
+    int i, j, k, n = 0;
+    char what[128];
+    sphi_quadratic_begin(&fit, dim, 2, h);
+    sphi_begin(&linear, dim);
+    /* points of a lattice of spacing 0.5 h with y >= 0 (a wall at y = 0),
+       each moved by up to 0.2 spacing */
+    for (i = -4; i <= 4; i++)
+      for (j = 0; j <= 5; j++)
+        for (k = (dim == 3) ? -4 : 0; k <= ((dim == 3) ? 4 : 0); k++) {
+          const double x[3] = {0.5 * (i + jitter_of(n, 0)), 0.5 * (j + 0.5 + jitter_of(n, 1)),
+                               (dim == 3) ? 0.5 * (k + jitter_of(n, 2)) : 0.0};
+          const double d[3] = {x[0] - p[0], x[1] - p[1], x[2] - p[2]};
+          const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+          /* u = 1 + 2x - y + 3x^2 - 2xy + 0.5y^2 + z^2 - xz, and v = 3 y^2 */
+          const double f[2] = {1.0 + 2.0 * x[0] - x[1] + 3.0 * x[0] * x[0] - 2.0 * x[0] * x[1] +
+                                   0.5 * x[1] * x[1] + x[2] * x[2] - x[0] * x[2],
+                               3.0 * x[1] * x[1]};
+          const double w = sphk_w(&kernel, r);
+          n++;
+          if (w <= 0.0) continue;
+          sphi_quadratic_add(&fit, d, 0.25 * w, f);
+          sphi_add(&linear, d, r, w, sphk_dwdr(&kernel, r), 0.25, f[0]);
+        }
+    {
+      const double u = 1.0 + 2.0 * p[0] - p[1] + 3.0 * p[0] * p[0] - 2.0 * p[0] * p[1] +
+          0.5 * p[1] * p[1] + p[2] * p[2] - p[0] * p[2];
+      const double du[3] = {2.0 + 6.0 * p[0] - 2.0 * p[1] - p[2], -1.0 - 2.0 * p[0] + p[1],
+                            2.0 * p[2] - p[0]};
+      const int how = sphi_quadratic_solve(&fit, value, grad);
+      snprintf(what, sizeof what, "%d-D quadratic fit: solved", dim);
+      check(how == SPHI_CORRECTED, what, how, SPHI_CORRECTED);
+      snprintf(what, sizeof what, "%d-D quadratic fit: value of u", dim);
+      check(fabs(value[0] - u) < 1e-11, what, value[0], u);
+      for (k = 0; k < dim; k++) {
+        snprintf(what, sizeof what, "%d-D quadratic fit: d u / d x_%d", dim, k);
+        check(fabs(grad[k] - du[k]) < 1e-10, what, grad[k], du[k]);
+      }
+      snprintf(what, sizeof what, "%d-D quadratic fit: v and d v / d y, the second field", dim);
+      check(fabs(value[1] - 3.0 * p[1] * p[1]) < 1e-11 && fabs(grad[4] - 6.0 * p[1]) < 1e-10, what,
+            value[1], 3.0 * p[1] * p[1]);
+      sphi_solve(&linear, h, &first, NULL);
+      snprintf(what, sizeof what, "%d-D first-order value misses u by the curvature", dim);
+      check(fabs(first - u) > 1e-3, what, first, u);
+    }
+  }
+  {
+    /* points on one line: no quadratic in the other direction */
+    sphi_quadratic fit;
+    double value[1] = {-7.0}, grad[3];
+    int i;
+    sphi_quadratic_begin(&fit, 2, 1, 1.0);
+    for (i = -3; i <= 3; i++) {
+      const double d[3] = {0.5 * i, 0.0, 0.0};
+      const double f[1] = {1.0};
+      sphi_quadratic_add(&fit, d, 1.0, f);
+    }
+    check(sphi_quadratic_solve(&fit, value, grad) == SPHI_NONE && value[0] == -7.0,
+          "quadratic fit on one line: refused, value untouched", value[0], -7.0);
+  }
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 2) {
-    fprintf(stderr, "usage: %s buoyancy|linear|thin|shift|deltaplus|gradient\n", argv[0]);
+    fprintf(stderr, "usage: %s buoyancy|linear|thin|shift|deltaplus|gradient|quadratic\n",
+            argv[0]);
     return 2;
   }
   if (strcmp(argv[1], "buoyancy") == 0)
@@ -275,6 +361,8 @@ int main(int argc, char **argv)
     test_deltaplus();
   else if (strcmp(argv[1], "gradient") == 0)
     test_gradient();
+  else if (strcmp(argv[1], "quadratic") == 0)
+    test_quadratic();
   else {
     fprintf(stderr, "unknown test %s\n", argv[1]);
     return 2;
