@@ -72,14 +72,14 @@ def measure(ra, n, mode, out, text):
         c0 = number(r"speed of sound of atom type 1 is (\S+) \(auto", log, "c0")
     loops = re.findall(r"Loop time of (\S+) on \d+ procs for (\d+) steps", log)
     steps = sum(int(s) for _, s in loops)
-    g = ra * PR
+    v_ref = number(r"largest v on y = 0.5: \S+ \(reference (\S+)\)", text, "v_max")
     return {
         "ra": ra, "n": n, "mode": mode, "c0": c0,
-        "squeeze": g / c0**2,
-        "c0_over_v": c0 / number(r"largest v on y = 0.5: \S+ \(reference (\S+)\)", text, "v_max"),
+        "squeeze": ra * PR / c0**2,
+        "c0_over_v": c0 / v_ref,
         "nu_error": number(r"error of the mean Nu from the heat \(time average\): (\S+) %", text, "Nu"),
         "v": number(r"largest v on y = 0.5: (\S+)", text, "v_max"),
-        "v_ref": number(r"largest v on y = 0.5: \S+ \(reference (\S+)\)", text, "v_max"),
+        "v_ref": v_ref,
         "l2_v": number(r"L2 errors on y = 0.5[^:]*: theta \S+, v (\S+);", text, "L2 of v"),
         "steps": steps,
         "seconds": sum(float(t) for t, _ in loops),

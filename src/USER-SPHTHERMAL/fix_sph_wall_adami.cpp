@@ -380,12 +380,16 @@ void FixSPHWallAdami::pre_force_walls()
         vest[i][k] = v[i][k] - 3.0 * (fluid[k] - v[i][k]) + grad[0] * span[0] + grad[1] * span[1] +
             grad[2] * span[2];
       }
-    } else if (how == SPHI_SHEPARD) {
-      // too thin a neighbourhood for a gradient: the mirror image
-      for (int k = 0; k < 3; k++) vest[i][k] = 2.0 * v[i][k] - ghost_velocity[12 * (size_t) i + k];
-    } else
-      for (int k = 0; k < 3; k++)
-        vest[i][k] = (weight > 0.0) ? 2.0 * v[i][k] - weighted_v[k] / weight : v[i][k];
+    } else {
+      // the image of the fluid's velocity: at the mirror point where the
+      // fluid there is too thin for the fit, else Adami's Shepard mean
+      for (int k = 0; k < 3; k++) {
+        const double fluid = (how == SPHI_SHEPARD) ? ghost_velocity[12 * (size_t) i + k]
+            : (weight > 0.0)                       ? weighted_v[k] / weight
+                                                   : v[i][k];
+        vest[i][k] = 2.0 * v[i][k] - fluid;
+      }
+    }
   }
   // a tension beyond the equation of state leaves no density: stop, collectively
   int below_eos_all = 0;

@@ -41,7 +41,7 @@ using namespace LAMMPS_NS;
 SPHMirror::SPHMirror(LAMMPS *lmp, const std::string &cmd, bool returns, Field what) :
     Pointers(lmp), command(cmd), returns_heat(returns), field(what), region(nullptr), groupbit(0),
     medium_exclude(0), held_walls(0), kernel_kind(0), cutoff(0.0), inlet_axis(-1),
-    candidates_valid(false), medium_check_pending(false), medium_tolerance(0.0), ncomponents(1)
+    candidates_valid(false), medium_check_pending(false), medium_tolerance(0.0)
 {
 }
 
@@ -273,29 +273,30 @@ struct SPHMirror::PointsCall {
 void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
                             std::vector<double> *depth)
 {
-  ghost.assign(atom->nlocal, 0.0);
-  prepare(1, how, depth);
-  PointsCall call = {this, &ghost, &how};
-  const int settings[] = {domain->dimension, kernel_kind};
-  SPHDispatch<SPHDimensions, SPHKernelKinds>::to(call, settings);
+  interpolate_field(ghost, 1, how, depth);
 }
 
 void SPHMirror::interpolate_velocity(std::vector<double> &ghost_v, std::vector<int> &how)
 {
-  ghost_v.assign(12 * (size_t) atom->nlocal, 0.0);
-  prepare(3, how, nullptr);
-  PointsCall call = {this, &ghost_v, &how};
+  interpolate_field(ghost_v, 12, how, nullptr);
+}
+
+void SPHMirror::interpolate_field(std::vector<double> &out, int per_atom, std::vector<int> &how,
+                                  std::vector<double> *depth)
+{
+  out.assign(per_atom * (size_t) atom->nlocal, 0.0);
+  prepare(how, depth);
+  PointsCall call = {this, &out, &how};
   const int settings[] = {domain->dimension, kernel_kind};
   SPHDispatch<SPHDimensions, SPHKernelKinds>::to(call, settings);
 }
 
-void SPHMirror::prepare(int components, std::vector<int> &how, std::vector<double> *depth)
+void SPHMirror::prepare(std::vector<int> &how, std::vector<double> *depth)
 {
   const SPHParticles particles(atom);
   double *const *const x = atom->x;
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
-  ncomponents = components;
   how.assign(nlocal, SPHI_NONE);
   if (depth) depth->assign(nlocal, 0.0);
   first_neighbour.assign(nlocal + 1, 0);
@@ -323,12 +324,13 @@ void SPHMirror::prepare(int components, std::vector<int> &how, std::vector<doubl
   if (medium_check_pending) check_medium();
   const int nmedium = medium_atoms.size();
   medium_volume.resize(nmedium);
+  const int components = (field == VELOCITY) ? 3 : 1;
   medium_values.resize(components * (size_t) nmedium);
   const double *const *const v = atom->v;
   for (int m = 0; m < nmedium; m++) {
     const int j = medium_atoms[m];
     medium_volume[m] = particles.volume(j);
-    if (components == 1)
+    if (field == TEMPERATURE)
       medium_values[m] = particles.temperature(j);
     else
       for (int k = 0; k < 3; k++) medium_values[3 * (size_t) m + k] = v[j][k];
@@ -384,7 +386,7 @@ void SPHMirror::interpolate_points(std::vector<double> &ghost, std::vector<int> 
       g_in[k] = minus_dwdr_r_scale * sphk_df_over_q(KERNEL, q);
     }
 
-    if (ncomponents == 1) {
+    if (field == TEMPERATURE) {
       // the temperature: first-order corrected
       sphi_point point;
       sphi_begin(&point, DIM);

@@ -116,9 +116,8 @@ class SPHMirror : protected Pointers {
   bool candidates_valid;
   bool medium_check_pending;    // check_medium() at the next interpolate()
   double medium_tolerance;      // how far past the surface a medium atom may be
-  // per medium atom: its volume and the field's components (ncomponents)
+  // per medium atom: its volume and the field (T, or the 3 components of v)
   std::vector<double> medium_volume, medium_values;
-  int ncomponents;
   // this step's ghost points: 3 per owned atom, and whether there is one
   std::vector<double> ghost_at;
   std::vector<int> has_ghost;
@@ -131,9 +130,12 @@ class SPHMirror : protected Pointers {
     return fix_id.empty() ? command : "Fix " + fix_id + " " + command.substr(command.find(' ') + 1);
   }
   void find_candidates();
-  // the ghost points, their candidates and the medium's values (1: its
-  // temperature, 3: its velocity) of this step
-  void prepare(int components, std::vector<int> &how, std::vector<double> *depth);
+  // the ghost points, their candidates and the medium's values of the
+  // field (its temperature or velocity) of this step
+  void prepare(std::vector<int> &how, std::vector<double> *depth);
+  // prepare() and the interpolation at every ghost point, per_atom values each
+  void interpolate_field(std::vector<double> &out, int per_atom, std::vector<int> &how,
+                         std::vector<double> *depth);
   SPHSupport support;    // the candidates of one ghost point inside the support
   struct PointsCall;    // interpolate_points for this run's settings (sph_dispatch.h)
   template <int DIM, int KERNEL>
