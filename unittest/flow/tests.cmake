@@ -146,6 +146,11 @@ foreach(case poiseuille:poiseuille_20 couette:couette_20 two-fluid-couette:two_f
   add_example_test(flow.validation.${name} flow-${example} quick ${name})
 endforeach()
 
+# the walls' surface (fix sph/wall/adami surface) from a jittered start stays
+# laminar: the mirror image along the walls' normal, not the quadratic
+add_example_test(flow.validation.poiseuille_surface_jitter_20 flow-poiseuille surface-jitter
+  poiseuille_surface_jitter_20)
+
 # Fourtakas's diffusion vanishes at hydrostatic balance, Molteni's does not:
 # under fix gravity, fix sph/boussinesq's buoyancy (T0 given or 'mean'), both
 sphthermal_python_test(flow.diffusion.hydrostatic flow/test_fourtakas.py
