@@ -15,7 +15,7 @@
 # (background pressure / (rho0 c0^2)), NZ (> 0: quasi-2-D, 3-D with a
 # periodic depth of NZ spacings); CONDUCTION (options of pair
 # sph/cleary/heat), GRADIENT (correction of pair sph/harmonic/visc: gradient
-# or none) and SHIFT (D of fix sph/shift; 0: no shifting), in.cavity's
+# or none), NOSLIP (the walls' no-slip velocity: shepard or surface) and SHIFT (D of fix sph/shift; 0: no shifting), in.cavity's
 # defaults when unset (any of KERNEL to ACOUSTIC runs in.cavity-options, the
 # scene with every setting a variable; without them in.cavity, the flagship); SQUEEZE (the largest compression by the buoyancy,
 # g beta dT L / c0^2: sets the least speed of sound), ACOUSTIC (the acoustic
@@ -39,7 +39,7 @@ case "${1:-}" in
 esac
 RA=${RA:-1e4}
 N=${N:-40}
-if [ "$RA" != 0 ] && [ -z "${KERNEL:-}${HDX:-}${BG:-}${NZ:-}${CONDUCTION:-}${GRADIENT:-}${SHIFT:-}${SQUEEZE:-}${ACOUSTIC:-}" ]; then
+if [ "$RA" != 0 ] && [ -z "${KERNEL:-}${HDX:-}${BG:-}${NZ:-}${CONDUCTION:-}${GRADIENT:-}${NOSLIP:-}${SHIFT:-}${SQUEEZE:-}${ACOUSTIC:-}" ]; then
   # the flagship: every numerical setting the package's default
   $run "$LMP" -in "$here/in.cavity" -var plugin "$PLUGIN" -var ra "$RA" -var n "$N" \
     ${TEND:+-var tend "$TEND"} -log log.cavity | grep -E "default|final"
@@ -48,7 +48,7 @@ else
   $run "$LMP" -in "$here/in.cavity-options" -var plugin "$PLUGIN" -var ra "$RA" -var n "$N" \
     -var tend "${TEND:-0}" -var kernel "${KERNEL:-wendland}" -var hdx "${HDX:-2.0}" \
     -var bg "${BG:-0.1}" -var nz "${NZ:-0}" ${CONDUCTION:+-var conduction "$CONDUCTION"} \
-    ${GRADIENT:+-var gradient "$GRADIENT"} ${SHIFT:+-var shift "$SHIFT"} \
+    ${GRADIENT:+-var gradient "$GRADIENT"} ${NOSLIP:+-var noslip "$NOSLIP"} ${SHIFT:+-var shift "$SHIFT"} \
     ${SQUEEZE:+-var squeeze "$SQUEEZE"} -var acoustic "${ACOUSTIC:-0.1}" \
     -var out cavity.dump -log log.cavity | grep -E "^Ra =|final"
 fi
