@@ -45,7 +45,6 @@
 #include "update.h"
 
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 
 using namespace LAMMPS_NS;
