@@ -50,7 +50,7 @@ name=channel-$WALLS
 rm -f "$name.dump"
 $run "$LMP" -in "$here/in.channel" -var plugin "$PLUGIN" -var n "$N" -var tend "$TEND" \
   -var re "$RE" -var walls "$WALLS" -var ksk "$KSK" -var shift "${SHIFT:-yes}" \
-  ${CONTINUITY:+-var continuity "$CONTINUITY"} \
+  ${CONTINUITY:+-var continuity "$CONTINUITY"} ${NOSLIP:+-var noslip "$NOSLIP"} \
   -var start "${START:-developed}" -var dtfac "${DTFAC:-0.15}" -var every "$TEND" \
   -var conduction "${CONDUCTION:-mean harmonic}" -var out "$name" -log "log.$name" |
   grep -E "^u_max|Loop time|sph/cleary/heat:"
