@@ -30,30 +30,17 @@ import subprocess
 import numpy as np
 
 import mixing_tank
+from sphthermal_tools.log import thermo_tables
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 LARGEST_SPEED = 0.0179    # m/s, at 39 across (examples/mixing-tank-2d/README.md)
 
 
-def thermo_range(log, low, high):
-    """The least of column low and the largest of column high over every thermo block."""
-    least, largest, header = np.inf, -np.inf, None
-    for line in log.splitlines():
-        words = line.split()
-        if words[:1] == ["Step"]:
-            header = words
-            continue
-        if header is None or len(words) != len(header):
-            header = None if words[:1] == ["Loop"] else header
-            continue
-        try:
-            values = [float(w) for w in words]
-        except ValueError:
-            continue
-        least = min(least, values[header.index(low)])
-        largest = max(largest, values[header.index(high)])
-    return least, largest
+def density_range(tables):
+    """The least v_drho_min and the largest v_drho_max over every thermo table."""
+    tables = [t for t in tables if "v_drho_min" in t]
+    return (min(t["v_drho_min"].min() for t in tables), max(t["v_drho_max"].max() for t in tables))
 
 
 def run(args, c0):
@@ -69,11 +56,11 @@ def run(args, c0):
     row = {"c0": float(c0), "steps": sum(int(s) for _, s in loops),
            "loop": sum(float(t) for t, _ in loops)}
     lost = re.search(r"ERROR: Lost atoms: original (\d+) current (\d+)", proc.stdout + log)
+    tables = thermo_tables(log)
     if proc.returncode != 0:
-        t_fail = re.findall(r"^\s+\d+\s+(\S+)", log, re.M)
         row["failed"] = (f"lost {int(lost.group(1)) - int(lost.group(2))} atoms" if lost
-                         else "LAMMPS error") + (f" after t = {float(t_fail[-1]):.1f} s" if t_fail else "")
-    row["drho"] = thermo_range(log, "v_drho_min", "v_drho_max")
+                         else "LAMMPS error") + f" after t = {tables[-1]['Time'][-1]:.1f} s"
+    row["drho"] = density_range(tables)
     if "failed" not in row:
         m = mixing_tank.read_mixing(os.path.join(work, "mixing.txt"))
         row["inside"] = int(m["fluid_inside"].min())

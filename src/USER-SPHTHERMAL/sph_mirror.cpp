@@ -273,18 +273,20 @@ struct SPHMirror::PointsCall {
 void SPHMirror::interpolate(std::vector<double> &ghost, std::vector<int> &how,
                             std::vector<double> *depth)
 {
-  interpolate_field(ghost, 1, how, depth);
+  interpolate_field(ghost, how, depth);
 }
 
 void SPHMirror::interpolate_velocity(std::vector<double> &ghost_v, std::vector<int> &how)
 {
-  interpolate_field(ghost_v, 12, how, nullptr);
+  interpolate_field(ghost_v, how, nullptr);
 }
 
-void SPHMirror::interpolate_field(std::vector<double> &out, int per_atom, std::vector<int> &how,
+void SPHMirror::interpolate_field(std::vector<double> &out, std::vector<int> &how,
                                   std::vector<double> *depth)
 {
-  out.assign(per_atom * (size_t) atom->nlocal, 0.0);
+  // the temperature, or the velocity and its gradient
+  const size_t per_atom = (field == VELOCITY) ? 12 : 1;
+  out.assign(per_atom * atom->nlocal, 0.0);
   prepare(how, depth);
   PointsCall call = {this, &out, &how};
   const int settings[] = {domain->dimension, kernel_kind};

@@ -133,8 +133,9 @@ class SPHMirror : protected Pointers {
   // the ghost points, their candidates and the medium's values of the
   // field (its temperature or velocity) of this step
   void prepare(std::vector<int> &how, std::vector<double> *depth);
-  // prepare() and the interpolation at every ghost point, per_atom values each
-  void interpolate_field(std::vector<double> &out, int per_atom, std::vector<int> &how,
+  // prepare() and the interpolation at every ghost point (1 value per
+  // owned atom for the temperature, 12 for the velocity)
+  void interpolate_field(std::vector<double> &out, std::vector<int> &how,
                          std::vector<double> *depth);
   SPHSupport support;    // the candidates of one ghost point inside the support
   struct PointsCall;    // interpolate_points for this run's settings (sph_dispatch.h)
