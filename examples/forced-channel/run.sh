@@ -13,11 +13,15 @@
 #   ./run.sh exchanger  the parallel-flow and counter-flow heat exchangers
 #                       (in.exchanger, section 4.5), to TEND = 200 s with the
 #                       plate's cp lowered to 2.5 (the steady state does not
-#                       depend on it; PLATECP), about 25 minutes each
+#                       depend on it; PLATECP), about 25 minutes each;
+#                       CONTINUITY, NOSLIP and HOLD as for in.channel (in.exchanger's
+#                       defaults: no, shepard, no)
 # Environment: LMP, PLUGIN, NP, OUT as in the other examples; N (particles
 # across), TEND (s), RE, KSK, SHIFT (yes|no), START (developed|rest),
-# DTFAC (dt = DTFAC h / c0), CONTINUITY (yes|no: hold the fluid's mean
-# density under shifting; unset, in.channel's auto), CONDUCTION (options
+# DTFAC (dt = DTFAC h / c0), HOLD (yes|no: the fluid keeps its volume;
+# in.channel's yes), CONTINUITY (yes|no: the shift's continuity keyword;
+# in.channel's no), NOSLIP (surface|shepard: the walls' no-slip velocity;
+# in.channel's surface), CONDUCTION (options
 # of pair sph/cleary/heat, e.g. "correction consistent mean interface"),
 # MAX_T_ERROR (exit 1 above it, % of T_w - T_in), MAX_VY (exit 1 above it,
 # % of u_max).
@@ -30,7 +34,8 @@ if [ "${1:-}" = exchanger ]; then
     rm -f "exchanger-$arrangement.dump"
     $run "$LMP" -in "$here/in.exchanger" -var plugin "$PLUGIN" -var arrangement "$arrangement" \
       -var tend "${TEND:-200}" -var every "${TEND:-200}" -var platecp "${PLATECP:-2.5}" \
-      -var out "exchanger-$arrangement" -log "log.exchanger-$arrangement" | grep -E "^u_max|Loop time"
+      ${CONTINUITY:+-var continuity "$CONTINUITY"} ${NOSLIP:+-var noslip "$NOSLIP"} \
+      ${HOLD:+-var hold "$HOLD"} -var out "exchanger-$arrangement" -log "log.exchanger-$arrangement" | grep -E "^u_max|Loop time"
   done
   "$PYTHON" "$here/analyse_exchanger.py" exchanger-parallel.dump exchanger-counter.dump \
     --png exchanger.png ${MAX_OUTLET_ERROR:+--max-outlet-error "$MAX_OUTLET_ERROR"}
@@ -51,6 +56,7 @@ rm -f "$name.dump"
 $run "$LMP" -in "$here/in.channel" -var plugin "$PLUGIN" -var n "$N" -var tend "$TEND" \
   -var re "$RE" -var walls "$WALLS" -var ksk "$KSK" -var shift "${SHIFT:-yes}" \
   ${CONTINUITY:+-var continuity "$CONTINUITY"} ${NOSLIP:+-var noslip "$NOSLIP"} \
+  ${HOLD:+-var hold "$HOLD"} \
   -var start "${START:-developed}" -var dtfac "${DTFAC:-0.15}" -var every "$TEND" \
   -var conduction "${CONDUCTION:-mean harmonic}" -var out "$name" -log "log.$name" |
   grep -E "^u_max|Loop time|sph/cleary/heat:"
