@@ -18,8 +18,8 @@
 #                       defaults: no, shepard, no)
 # Environment: LMP, PLUGIN, NP, OUT as in the other examples; N (particles
 # across), TEND (s), RE, KSK, SHIFT (yes|no), START (developed|rest),
-# DTFAC (dt = DTFAC h / c0), HOLD (yes|no: the fluid keeps its volume;
-# in.channel's yes), CONTINUITY (yes|no: the shift's continuity keyword;
+# DTFAC (dt = DTFAC h / c0), PB (background pressure / rho0 c0^2;
+# in.channel's 0), HOLD (yes|no: the fluid keeps its volume; in.channel's yes), CONTINUITY (yes|no: the shift's continuity keyword;
 # in.channel's no), NOSLIP (surface|shepard: the walls' no-slip velocity;
 # in.channel's surface), CONDUCTION (options
 # of pair sph/cleary/heat, e.g. "correction consistent mean interface"),
@@ -56,7 +56,7 @@ rm -f "$name.dump"
 $run "$LMP" -in "$here/in.channel" -var plugin "$PLUGIN" -var n "$N" -var tend "$TEND" \
   -var re "$RE" -var walls "$WALLS" -var ksk "$KSK" -var shift "${SHIFT:-yes}" \
   ${CONTINUITY:+-var continuity "$CONTINUITY"} ${NOSLIP:+-var noslip "$NOSLIP"} \
-  ${HOLD:+-var hold "$HOLD"} \
+  ${HOLD:+-var hold "$HOLD"} ${PB:+-var pb "$PB"} \
   -var start "${START:-developed}" -var dtfac "${DTFAC:-0.15}" -var every "$TEND" \
   -var conduction "${CONDUCTION:-mean harmonic}" -var out "$name" -log "log.$name" |
   grep -E "^u_max|Loop time|sph/cleary/heat:"
