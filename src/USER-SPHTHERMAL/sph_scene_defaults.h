@@ -26,8 +26,8 @@ namespace SPHSceneDefaults {
     double number;      // the setting's value, for a number (value: which rule)
   };
 
-  // 'correction' of pair sph/cleary/heat: consistent in a buoyancy-driven
-  // flow of shifted particles (fix sph/shift), none otherwise
+  // 'correction' of pair sph/cleary/heat: consistent in a flow of shifted
+  // particles (fix sph/shift), buoyant or driven, none otherwise
   // (SPHConductionWeights::Kind)
   Choice heat_correction(LAMMPS *lmp);
 

@@ -1,10 +1,10 @@
 """The defaults that depend on the scene (unittest/convection/in.scene_defaults):
-with fix sph/boussinesq and fix sph/shift and no 'correction' in its
-command, pair sph/cleary/heat takes 'correction consistent', says so and
-applies it (the setup's count of corrected atoms); with buoyancy but no
-shifting, or without buoyancy, it takes none; a correction given in the
-command is kept and not called a default; after a restart without fix
-sph/boussinesq the default is taken again (none); the flow pair keeps its
+with fix sph/shift and no 'correction' in its command, pair
+sph/cleary/heat takes 'correction consistent', says so and applies it (the
+setup's count of corrected atoms), with or without fix sph/boussinesq;
+without shifting it takes none; a correction given in the command is kept
+and not called a default; after a restart without fix sph/boussinesq and
+fix sph/shift the default is taken again (none); the flow pair keeps its
 plain gradient (no scene default). The same for 'eta': 0.01 with buoyancy
 and shifting, 0.1 otherwise, and applied: the fluid's energy after the step
 equals that of a run with 'eta 0.01' given, and differs from 'eta 0.1'.
@@ -74,9 +74,15 @@ def main():
     that(taken(ETA_DEFAULT, out) == ["0.1"], "with buoyancy but no shifting eta 0.1",
          str(taken(ETA_DEFAULT, out)))
 
-    out = run(args, workdir, buoyant="no")
+    out = run(args, workdir, buoyant="no", shift="no")
     that(taken(HEAT_DEFAULT, out) == ["none"] and re.search(HEAT_APPLIED, out) is None,
-         "without buoyancy the heat pair takes none", str(taken(HEAT_DEFAULT, out)))
+         "without buoyancy or shifting the heat pair takes none", str(taken(HEAT_DEFAULT, out)))
+
+    out = run(args, workdir, buoyant="no")
+    that(taken(HEAT_DEFAULT, out) == ["consistent"] and re.search(HEAT_APPLIED, out) is not None
+         and "the default with shifting, fix sph/shift shift" in out,
+         "with shifting and no buoyancy (a driven flow) the heat pair takes and applies "
+         "correction consistent", str(taken(HEAT_DEFAULT, out)))
     e_default = energy(out)
     e_cleary = energy(run(args, workdir, buoyant="no", heat="eta 0.1"))
     that(taken(ETA_DEFAULT, out) == ["0.1"] and e_default == e_cleary,
