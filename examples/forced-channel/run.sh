@@ -14,8 +14,8 @@
 #                       (in.exchanger, section 4.5), to TEND = 200 s with the
 #                       plate's cp lowered to 2.5 (the steady state does not
 #                       depend on it; PLATECP), about 25 minutes each;
-#                       CONTINUITY, NOSLIP and HOLD as for in.channel (in.exchanger's
-#                       defaults: no, shepard, no)
+#                       CONTINUITY, NOSLIP, HOLD and PB as for in.channel (the
+#                       same defaults), CONDUCTION (in.exchanger's "correction none")
 # Environment: LMP, PLUGIN, NP, OUT as in the other examples; N (particles
 # across), TEND (s), RE, KSK, SHIFT (yes|no), START (developed|rest),
 # DTFAC (dt = DTFAC h / c0), PB (background pressure / rho0 c0^2;
@@ -35,7 +35,7 @@ if [ "${1:-}" = exchanger ]; then
     $run "$LMP" -in "$here/in.exchanger" -var plugin "$PLUGIN" -var arrangement "$arrangement" \
       -var tend "${TEND:-200}" -var every "${TEND:-200}" -var platecp "${PLATECP:-2.5}" \
       ${CONTINUITY:+-var continuity "$CONTINUITY"} ${NOSLIP:+-var noslip "$NOSLIP"} \
-      ${HOLD:+-var hold "$HOLD"} -var out "exchanger-$arrangement" -log "log.exchanger-$arrangement" | grep -E "^u_max|Loop time"
+      ${HOLD:+-var hold "$HOLD"} ${PB:+-var pb "$PB"} ${CONDUCTION:+-var conduction "$CONDUCTION"} -var out "exchanger-$arrangement" -log "log.exchanger-$arrangement" | grep -E "^u_max|Loop time"
   done
   "$PYTHON" "$here/analyse_exchanger.py" exchanger-parallel.dump exchanger-counter.dump \
     --png exchanger.png ${MAX_OUTLET_ERROR:+--max-outlet-error "$MAX_OUTLET_ERROR"}

@@ -6,8 +6,9 @@ The parallel exchanger (10 across) runs 0.04 s (41 steps) once, and once to
 0.02 s with a restart file, then from that file to 0.04 s. Resumed, it must
 not set its start state again (temperatures 300/550/800 K, the Poiseuille
 velocities): the last frames agree to 1e-8 m in position, 1e-6 m/s in
-velocity and 0.01 K in temperature. Measured: 3e-10 m, 6e-8 m/s and
-1.4e-3 K, the difference LAMMPS's fix sph makes between one run and two
+velocity and 0.01 K in temperature. Measured with the input's defaults
+(the walls' surface, each stream's volume held): 2e-10 m, 4e-8 m/s and
+1.5e-3 K, the difference LAMMPS's fix sph makes between one run and two
 at an impulsive start; a reset state would be off by up to 250 K.
 """
 
