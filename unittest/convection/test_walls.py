@@ -218,7 +218,7 @@ def check_defaults(a, work):
     lean = read_dump(os.path.join(work, "cavity.dump"))
     run_cavity(a, work, ra="1e4", n=12, tend=0.01, out="options.dump")
     given = read_dump(os.path.join(work, "options.dump"))
-    named = "correction consistent (the default with buoyancy" in lean_out
+    named = "correction consistent (the default with shifting" in lean_out
     same_atoms = np.array_equal(lean["id"], given["id"])
     worst = max(np.abs(lean[k] - given[k]).max() / np.abs(given[k]).max()
                 for k in ("x", "y", "vx", "vy", "c_T")) if same_atoms else np.inf
