@@ -53,16 +53,24 @@ std::string buoyancy_fix(LAMMPS *lmp)
 }    // namespace
 
 namespace {
+// the id of the run's first fix sph/shift in a flow, empty without one
+std::string shifted_flow(LAMMPS *lmp)
+{
+  const std::vector<FixSPHShift *> shifts = SPHHub(lmp).fixes<FixSPHShift>();
+  if (shifts.empty() || !SPHHub(lmp).flow()) return std::string();
+  return std::string(shifts.front()->id);
+}
+
 // in a buoyancy-driven flow of shifted particles, the scene's reason for
 // the log; empty otherwise
 std::string buoyant_shifted_flow(LAMMPS *lmp)
 {
   const std::string buoyancy = buoyancy_fix(lmp);
-  const std::vector<FixSPHShift *> shifts = SPHHub(lmp).fixes<FixSPHShift>();
-  if (buoyancy.empty() || shifts.empty() || !SPHHub(lmp).flow()) return std::string();
+  const std::string shift = shifted_flow(lmp);
+  if (buoyancy.empty() || shift.empty()) return std::string();
   return fmt::format("the default with buoyancy and shifting, fix sph/boussinesq {} and fix "
                      "sph/shift {}",
-                     buoyancy, shifts.front()->id);
+                     buoyancy, shift);
 }
 const char without[] = "the default without a buoyancy-driven flow of shifted particles";
 
@@ -81,11 +89,11 @@ SPHSceneDefaults::Choice SPHSceneDefaults::heat_correction(LAMMPS *lmp)
 {
   // shifted particles, buoyant or driven: the plain operator loses wall heat
   // on them in the cavity and in the heated channels alike
-  const std::vector<FixSPHShift *> shifts = SPHHub(lmp).fixes<FixSPHShift>();
-  if (shifts.empty() || !SPHHub(lmp).flow())
+  const std::string shift = shifted_flow(lmp);
+  if (shift.empty())
     return {SPHConductionWeights::NONE, "the default without shifted particles", 0.0};
   return {SPHConductionWeights::CONSISTENT,
-          fmt::format("the default with shifting, fix sph/shift {}", shifts.front()->id), 0.0};
+          fmt::format("the default with shifting, fix sph/shift {}", shift), 0.0};
 }
 
 SPHSceneDefaults::Choice SPHSceneDefaults::heat_eta(LAMMPS *lmp)
