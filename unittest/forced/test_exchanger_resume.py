@@ -1,6 +1,7 @@
-"""examples/forced-channel/in.exchanger goes on from its own restart file.
+"""examples/forced-channel/in.exchanger (and in.channel) go on from their own
+restart files.
 
-usage: test_exchanger_resume.py --lmp LMP --plugin PLUGIN
+usage: test_exchanger_resume.py --lmp LMP --plugin PLUGIN [--input exchanger|channel]
 
 The parallel exchanger (10 across) runs 0.04 s (41 steps) once, and once to
 0.02 s with a restart file, then from that file to 0.04 s. Resumed, it must
@@ -10,6 +11,11 @@ velocity and 0.01 K in temperature. Measured with the input's defaults
 (the walls' surface, each stream's volume held): 2e-10 m, 4e-8 m/s and
 1.5e-3 K, the difference LAMMPS's fix sph makes between one run and two
 at an impulsive start; a reset state would be off by up to 250 K.
+
+With --input channel: in.channel (Re 65.2, 10 across, 20 long, the walls'
+surface, which needs its region again on a resume) runs 2 s once, and 1 s
+with a restart file and on from it; positions to 1e-6 m (measured 4e-8 m,
+the dump's last digit at 20 m), the other limits the same.
 """
 
 import argparse
@@ -24,11 +30,16 @@ from sphthermal_tools.dump import read_frames
 
 from sphtest import finish, lammps_arguments
 
-INPUT = os.path.join(ROOT, "examples", "forced-channel", "in.exchanger")
+# per input: its variables, the whole run's end (s), the limit on positions (m:
+# the dump's 10 digits at the channel's 20 m; a reset state is off by u t = 0.8 m)
+CASES = {"exchanger": ([], 0.04, 1e-8),
+         "channel": (["-var", "n", "10", "-var", "length", "20", "-var", "re", "65.2"], 2.0, 1e-6)}
 
 
 def run(a, tmp, out, tend, *extra):
-    cmd = [a.lmp, "-in", INPUT, "-var", "plugin", a.plugin, "-var", "every", "0.04",
+    variables, whole, _ = CASES[a.input]
+    cmd = [a.lmp, "-in", os.path.join(ROOT, "examples", "forced-channel", "in." + a.input),
+           "-var", "plugin", a.plugin, "-var", "every", str(whole), *variables,
            "-var", "tend", str(tend), "-var", "out", out, "-log", "none", *extra]
     subprocess.run(cmd, cwd=tmp, check=True, stdout=subprocess.DEVNULL)
     step, columns = read_frames(os.path.join(tmp, out + ".dump"))[-1]
@@ -36,14 +47,18 @@ def run(a, tmp, out, tend, *extra):
 
 
 def main():
-    a = lammps_arguments(argparse.ArgumentParser(description=__doc__), mpi=False).parse_args()
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--input", choices=sorted(CASES), default="exchanger")
+    a = lammps_arguments(parser, mpi=False).parse_args()
     a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
     with tempfile.TemporaryDirectory() as tmp:
-        whole = run(a, tmp, "whole", 0.04)
-        run(a, tmp, "first", 0.02, "-var", "restart", "0.02")
-        resumed = run(a, tmp, "resumed", 0.04, "-var", "resume", "first.restart.1")
+        end = CASES[a.input][1]
+        whole = run(a, tmp, "whole", end)
+        run(a, tmp, "first", end / 2, "-var", "restart", str(end / 2))
+        resumed = run(a, tmp, "resumed", end, "-var", "resume", "first.restart.1")
     failures = []
-    for key, limit, unit in (("x", 1e-8, "m"), ("y", 1e-8, "m"), ("vx", 1e-6, "m/s"),
+    position = CASES[a.input][2]
+    for key, limit, unit in (("x", position, "m"), ("y", position, "m"), ("vx", 1e-6, "m/s"),
                              ("vy", 1e-6, "m/s"), ("c_T", 1e-2, "K")):
         diff = np.abs(np.asarray(resumed[key]) - np.asarray(whole[key])).max()
         print(f"{key}: resumed against one run: largest difference {diff:.2e} {unit} (limit {limit:g})")

@@ -57,6 +57,8 @@ endforeach()
 # in.exchanger goes on from its own restart file without setting its start again
 sphthermal_python_test(forced.examples.exchanger_resume forced/test_exchanger_resume.py LAMMPS
   LABELS regression)
+sphthermal_python_test(forced.examples.channel_resume forced/test_exchanger_resume.py LAMMPS
+  ARGS --input channel LABELS regression)
 foreach(check reservoir reenter balance walls restart mirror)
   sphthermal_python_test(forced.inlet.${check} forced/test_inlet.py LAMMPS ARGS ${check}
     LABELS unit)
