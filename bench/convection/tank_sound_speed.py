@@ -54,9 +54,10 @@ def run(args, c0):
     proc = subprocess.run(cmd, cwd=work, capture_output=True, text=True)
     log = open(os.path.join(work, "log.lammps")).read()
     loops = re.findall(r"Loop time of (\S+) on \d+ procs for (\d+) steps", log)
-    if c0 == "auto":    # the value the package took, from the log
+    auto = c0 == "auto"
+    if auto:    # the value the package took, from the log
         c0 = re.search(r"speed of sound of atom type 1 is (\S+)", log).group(1)
-    row = {"c0": float(c0), "auto": work.endswith(".cauto"), "steps": sum(int(s) for _, s in loops),
+    row = {"c0": float(c0), "auto": auto, "steps": sum(int(s) for _, s in loops),
            "loop": sum(float(t) for t, _ in loops)}
     lost = re.search(r"ERROR: Lost atoms: original (\d+) current (\d+)", proc.stdout + log)
     tables = thermo_tables(log)
