@@ -13,9 +13,9 @@
 #   ./run.sh exchanger  the parallel-flow and counter-flow heat exchangers
 #                       (in.exchanger, section 4.5), to TEND = 200 s with the
 #                       plate's cp lowered to 2.5 (the steady state does not
-#                       depend on it; PLATECP), about 25 minutes each;
+#                       depend on it; PLATECP), about 1.5 hours each;
 #                       CONTINUITY, NOSLIP, HOLD and PB as for in.channel (the
-#                       same defaults), CONDUCTION (in.exchanger's "correction none")
+#                       same defaults), CONDUCTION (as for in.channel)
 # Environment: LMP, PLUGIN, NP, OUT as in the other examples; N (particles
 # across), TEND (s), RE, KSK, SHIFT (yes|no), START (developed|rest),
 # DTFAC (dt = DTFAC h / c0), PB (background pressure / rho0 c0^2;
