@@ -7,14 +7,20 @@ at each Rayleigh number twice, one MPI rank each:
            at which the buoyancy's pressure compresses the fluid by 0.05;
   tenfold  in.cavity-options with c0 = 10 times the benchmark's largest
            speed (de Vahl Davis 1983, v_max on y = 1/2), every other
-           setting as in.cavity (the compression is then 0.15 to 0.25).
+           setting as in.cavity (the compression is then 0.15 to 0.25);
+  potential in.cavity-options with fix sph/boussinesq 'potential 1' (the
+           buoyancy's pressure solved, so it compresses nothing) and the
+           package's c0 for it ('eos linear auto': 10 times a speed
+           estimated from the buoyancy), every other setting as in.cavity.
 It writes, for each run, c0 and the compression g beta dT L / c0^2 of
 the pressure that balances the buoyancy (L the cavity's side; twice fix
 sph/boussinesq's measure, whose bound is 0.05), the mean Nu of the walls' heat against the
 benchmark, the largest v on y = 1/2 against the benchmark, the L2 error of
-v on y = 1/2 against the reference solver, the steps and the loop time.
+v on y = 1/2 against the reference solver, the fluid's density range over
+the run (in.cavity-options' thermo; not logged by in.cavity), the steps and
+the loop time.
 
-  tools/sphpython bench/convection/sound_speed.py                 # Ra 1e3, 1e4, 1e5 at 40 across (about 12 min on 2 cores)
+  tools/sphpython bench/convection/sound_speed.py                 # Ra 1e3, 1e4, 1e5 at 40 across (about 30 min on 2 cores)
   tools/sphpython bench/convection/sound_speed.py --ra 1e4 --n 20  # one case (about 1 min)
 
 Options: --ra RA ..., --n N, --jobs (runs at once, default 2), --out FILE
@@ -29,6 +35,9 @@ import os
 import re
 import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from sphthermal_tools.log import longest_thermo_table  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -54,6 +63,8 @@ def run(ra, n, mode, top, reuse=False):
         # in.cavity-options: c0 = 10 v_max unless the compression bound
         # asks for more; a bound of 10 never does
         env["SQUEEZE"] = "10"
+    elif mode == "potential":
+        env["POTENTIAL"] = "1"
     proc = subprocess.run([os.path.join(ROOT, "examples/convection-cavity/run.sh")], env=env,
                           capture_output=True, text=True)
     text = proc.stdout
@@ -70,6 +81,10 @@ def measure(ra, n, mode, out, text):
         c0 = number(r"c0 = (\S+),", text, "c0")
     else:
         c0 = number(r"speed of sound of atom type 1 is (\S+) \(auto", log, "c0")
+    density = "-"
+    if mode != "auto":
+        table = longest_thermo_table(log)
+        density = f"{min(table['c_rho_min']):.4f}-{max(table['c_rho_max']):.4f}"
     loops = re.findall(r"Loop time of (\S+) on \d+ procs for (\d+) steps", log)
     steps = sum(int(s) for _, s in loops)
     v_ref = number(r"largest v on y = 0.5: \S+ \(reference (\S+)\)", text, "v_max")
@@ -81,6 +96,7 @@ def measure(ra, n, mode, out, text):
         "v": number(r"largest v on y = 0.5: (\S+)", text, "v_max"),
         "v_ref": v_ref,
         "l2_v": number(r"L2 errors on y = 0.5[^:]*: theta \S+, v (\S+);", text, "L2 of v"),
+        "density": density,
         "steps": steps,
         "seconds": sum(float(t) for t, _ in loops),
     }
@@ -95,7 +111,7 @@ def main():
     p.add_argument("--dir", default=os.path.join(HERE, "out", "sound_speed"))
     p.add_argument("--reuse", action="store_true")
     a = p.parse_args()
-    cases = [(ra, a.n, mode) for ra in a.ra for mode in ("auto", "tenfold")]
+    cases = [(ra, a.n, mode) for ra in a.ra for mode in ("auto", "tenfold", "potential")]
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
         results = list(pool.map(lambda c: run(*c, a.dir, a.reuse), cases))
     lines = [
@@ -106,26 +122,30 @@ def main():
         + (f" --n {a.n}" if a.n != 40 else "") + "` (one MPI rank per run, "
         f"{a.jobs} runs at once). *auto*: examples/convection-cavity/in.cavity, c0 from "
         "`eos linear auto` (compression 0.05); *tenfold*: in.cavity-options with "
-        "c0 = 10 times the benchmark's largest speed. Compression: g beta dT L / c0^2 "
-        "(L the side; fix sph/boussinesq's bound is half of it: 0.05). "
+        "c0 = 10 times the benchmark's largest speed; *potential*: in.cavity-options with "
+        "fix sph/boussinesq 'potential 1' and its c0 (`eos linear auto`: 10 times a speed "
+        "estimated from the buoyancy). Compression: g beta dT L / c0^2 "
+        "(L the side; fix sph/boussinesq's bound is half of it: 0.05; with the potential, what "
+        "the buoyancy's pressure would compress without it). "
         "Nu: the mean of the walls' heat against de Vahl Davis (1983); v: the largest v "
         "on y = 1/2 (reference: the benchmark); L2 v: against tools/cavity_fv.py "
-        "(Reece et al. 2024, eq 36).",
+        "(Reece et al. 2024, eq 36); density: the fluid's range over the run (not logged "
+        "by in.cavity).",
         "",
         "| Ra | particles | c0 | c0 / v_max | compression | Nu error | largest v (reference) "
-        "| L2 v | steps | loop (s) |",
-        "|---|---|---|---|---|---|---|---|---|---|",
+        "| L2 v | density | steps | loop (s) |",
+        "|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     failed = 0
     for r in results:
         if "failed" in r:
             failed += 1
-            lines.append(f"| {r['ra']:g} | {r['n']} x {r['n']} | {r['mode']}: failed | | | | | | | |")
+            lines.append(f"| {r['ra']:g} | {r['n']} x {r['n']} | {r['mode']}: failed | | | | | | | | |")
             continue
         lines.append(
             f"| {r['ra']:g} | {r['n']} x {r['n']} | {r['c0']:.4g} ({r['mode']}) | {r['c0_over_v']:.1f} "
             f"| {r['squeeze']:.3f} | {r['nu_error']:+.2f} % | {r['v']:.3f} ({r['v_ref']:.3f}) "
-            f"| {r['l2_v']:.4f} | {r['steps']} | {r['seconds']:.0f} |")
+            f"| {r['l2_v']:.4f} | {r['density']} | {r['steps']} | {r['seconds']:.0f} |")
     text = "\n".join(lines) + "\n"
     print(text)
     with open(a.out, "w") as f:

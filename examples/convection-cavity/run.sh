@@ -16,9 +16,10 @@
 # periodic depth of NZ spacings); CONDUCTION (options of pair
 # sph/cleary/heat), GRADIENT (correction of pair sph/harmonic/visc: gradient
 # or none), NOSLIP (the walls' no-slip velocity: shepard or surface) and SHIFT (D of fix sph/shift; 0: no shifting), in.cavity's
-# defaults when unset (any of KERNEL to ACOUSTIC runs in.cavity-options, the
+# defaults when unset (any of KERNEL to POTENTIAL runs in.cavity-options, the
 # scene with every setting a variable; without them in.cavity, the flagship); SQUEEZE (the largest compression by the buoyancy,
-# g beta dT L / c0^2: sets the least speed of sound), ACOUSTIC (the acoustic
+# g beta dT L / c0^2: sets the least speed of sound), POTENTIAL (sweeps per
+# step of fix sph/boussinesq's potential; 0: off), ACOUSTIC (the acoustic
 # coefficient of fix sph/dt/reset), MAX_NU_ERROR (exit 1 above it, %).
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
@@ -39,7 +40,7 @@ case "${1:-}" in
 esac
 RA=${RA:-1e4}
 N=${N:-40}
-if [ "$RA" != 0 ] && [ -z "${KERNEL:-}${HDX:-}${BG:-}${NZ:-}${CONDUCTION:-}${GRADIENT:-}${NOSLIP:-}${SHIFT:-}${SQUEEZE:-}${ACOUSTIC:-}" ]; then
+if [ "$RA" != 0 ] && [ -z "${KERNEL:-}${HDX:-}${BG:-}${NZ:-}${CONDUCTION:-}${GRADIENT:-}${NOSLIP:-}${SHIFT:-}${SQUEEZE:-}${ACOUSTIC:-}${POTENTIAL:-}" ]; then
   # the flagship: every numerical setting the package's default
   $run "$LMP" -in "$here/in.cavity" -var plugin "$PLUGIN" -var ra "$RA" -var n "$N" \
     ${TEND:+-var tend "$TEND"} -log log.cavity | grep -E "default|final"
@@ -49,7 +50,7 @@ else
     -var tend "${TEND:-0}" -var kernel "${KERNEL:-wendland}" -var hdx "${HDX:-2.0}" \
     -var bg "${BG:-0.1}" -var nz "${NZ:-0}" ${CONDUCTION:+-var conduction "$CONDUCTION"} \
     ${GRADIENT:+-var gradient "$GRADIENT"} ${NOSLIP:+-var noslip "$NOSLIP"} ${SHIFT:+-var shift "$SHIFT"} \
-    ${SQUEEZE:+-var squeeze "$SQUEEZE"} -var acoustic "${ACOUSTIC:-0.1}" \
+    ${SQUEEZE:+-var squeeze "$SQUEEZE"} ${POTENTIAL:+-var potential "$POTENTIAL"} -var acoustic "${ACOUSTIC:-0.1}" \
     -var out cavity.dump -log log.cavity | grep -E "^Ra =|final"
 fi
 if [ "$RA" = 0 ]; then

@@ -12,8 +12,11 @@ FixStyle(sph/boussinesq,FixSPHBoussinesq);
 #ifndef LMP_FIX_SPH_BOUSSINESQ_H
 #define LMP_FIX_SPH_BOUSSINESQ_H
 
+#include "atom.h"
 #include "fix.h"
+#include "neigh_list.h"
 #include "sph_body_force.h"
+#include "sph_kernels.h"
 
 #include <string>
 #include <vector>
@@ -33,6 +36,21 @@ class FixSPHBoussinesq : public Fix {
   void post_force(int) override;
   void end_of_step() override;
   double compute_vector(int) override;
+  // the buoyancy's potential (keyword 'potential'): Jacobi sweeps before the forces
+  void init_list(int, class NeighList *) override;
+  void setup_pre_force(int) override;
+  void pre_force(int) override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
   // the buoyancy it adds: read by the styles that need the body force of
   // each atom (SPHBodyForce::find_buoyancy)
   const SPHBodyForce::Buoyancy &added_buoyancy() const { return buoyancy; }
@@ -62,6 +80,38 @@ class FixSPHBoussinesq : public Fix {
   double checked_mean(const double sum[3], const std::string &head);
   void update_layer_reference();
   void update_reference();
+  // 'potential': phi of the buoyancy's curl-free part (grad phi = f - solenoidal),
+  // per atom, owned and ghost; the flow pair adds rho0 phi to the pressure
+  int potential_sweeps;     // Jacobi sweeps per step, 0: off
+  int potential_solved;     // phi converged (at a set-up, or read from a restart file)
+  int nmax_potential;       // the length of potential
+  double *potential;        // phi per atom
+  double **wall_force;      // the buoyancy extrapolated to the wall atoms
+  enum { COMM_POTENTIAL, COMM_WALL_FORCE };
+  int comm_what;
+  class NeighList *list;
+  int wall_bits;    // the atoms of fix sph/wall/adami
+  sphk_kernel kernel;
+  double cutsq_potential;
+  std::vector<double> accel, diag, source, next;    // per step: f, the Laplacian's diagonal, div f
+  // visit(j, x_i - x_j, r) for each neighbour j of i within the kernel's
+  // support whose mask has one of bits
+  template <class Visit> void visit_neighbours(int i, int bits, Visit visit) const
+  {
+    const double *const *const x = atom->x;
+    const int *const mask = atom->mask;
+    const int *const jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (!(mask[j] & bits)) continue;
+      const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+      if (rsq < cutsq_potential) visit(j, del, sqrt(rsq));
+    }
+  }
+  void prepare_potential();
+  void sweep_potential();
+  double remove_mean_potential();
   double mean_spacing();
 };
 

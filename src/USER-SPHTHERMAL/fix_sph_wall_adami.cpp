@@ -298,6 +298,9 @@ void FixSPHWallAdami::pre_force_walls()
     // with thermal expansion the pair refuses a T without reference density
     fluid_pressure[m] = sphe_pressure_at(materials->eos(type[j]), rho[j],
                                          thermal_expansion ? particles.temperature(j) : 0.0);
+    if (buoyancy)
+      fluid_pressure[m] += materials->eos(type[j])->rho0 *
+          SPHBodyForce::potential_of(buoyancy, mask[j], j);
     double accel[3];
     SPHBodyForce::acceleration(body, buoyancy, mask[j], type[j],
                                buoyancy ? particles.temperature(j) : 0.0, atom->x[j], accel);

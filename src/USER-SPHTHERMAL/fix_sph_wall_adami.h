@@ -30,6 +30,9 @@ class FixSPHWallAdami : public Fix {
   void pre_neighbor() override;
   void setup_pre_force(int) override;
   void pre_force(int) override;
+  // the walls' pressure and velocity extrapolated again (fix sph/boussinesq,
+  // when it has solved its potential after this fix's set-up)
+  void extrapolate_again() { pre_force_walls(); }
   void setup(int) override;
   void post_force(int) override;
   ~FixSPHWallAdami() override;

@@ -75,6 +75,7 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   double gravity[3];           // the uniform acceleration of the hydrostatic diffusion
   const double *body_force;    // the run's body force (fix gravity), nullptr when none
   const SPHBodyForce::Buoyancy *buoyancy;    // fix sph/boussinesq's, nullptr when none
+  const SPHBodyForce::Buoyancy *pressure_buoyancy;    // its potential's pressure, any diffusion
   std::vector<double> body_accel;    // with hydrostatic: per atom (owned, ghost) its acceleration
   void read_body_force();            // gravity and hydrostatic of 'diffusion fourtakas'
   double eta2;                       // eta^2, regularises r -> 0

@@ -245,6 +245,7 @@ void PairSPHHarmonicVisc::init_style()
   body_force = SPHBodyForce::find(lmp, "Pair style sph/harmonic/visc");
   // and the buoyancy of fix sph/boussinesq, which varies from atom to atom
   buoyancy = (diffusion_form == DIFFUSION_MOLTENI) ? nullptr : SPHBodyForce::find_buoyancy(lmp);
+  pressure_buoyancy = SPHBodyForce::find_buoyancy(lmp);
   if (diffusion_form == DIFFUSION_MOLTENI) {
     hydrostatic = 0;
   } else if (diffusion_form == DIFFUSION_BODY_FORCE) {

@@ -201,7 +201,9 @@ void PairSPHHarmonicVisc::update_atom_state()
       pressure[i] = sphe_pressure_ref(eos, rho[i], rho_ref);
       diffused_density[i] = rho[i] - (rho_ref - eos->rho0);
     } else {
-      pressure[i] = sphe_pressure(eos, rho[i]);
+      // with the buoyancy's potential: its pressure rho0 phi, carried without compression
+      pressure[i] = sphe_pressure(eos, rho[i]) +
+          eos->rho0 * SPHBodyForce::potential_of(pressure_buoyancy, mask[i], i);
       if (thermal_expansion) diffused_density[i] = rho[i];
     }
     viscosity[i] = materials->viscosity_at(type[i], viscosity_varies ? temperature[i] : 0.0,
@@ -212,7 +214,12 @@ void PairSPHHarmonicVisc::update_atom_state()
   if (hydrostatic) {
     body_accel.resize(3 * (size_t) nall);
     for (int i = 0; i < nall; i++)
-      SPHBodyForce::acceleration(gravity, buoyancy, mask[i], type[i],
+      // the buoyancy that its potential balances does not stratify the density
+      SPHBodyForce::acceleration(gravity,
+                                 (buoyancy && buoyancy->potential && *buoyancy->potential)
+                                     ? nullptr
+                                     : buoyancy,
+                                 mask[i], type[i],
                                  buoyancy ? temperature[i] : 0.0, atom->x[i],
                                  &body_accel[3 * (size_t) i]);
   }

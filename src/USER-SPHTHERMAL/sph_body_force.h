@@ -34,7 +34,16 @@ namespace SPHBodyForce {
     const double *layer_t0;    // T0 at the centre of each layer
     double unit[3];            // direction of g
     double origin, width;      // layer k spans origin + [k, k + 1) width along unit
+    // the potential phi of the buoyancy's curl-free part per atom (owned and
+    // ghost), whose pressure rho0 phi the flow adds to its equation of
+    // state's; nullptr (or *potential nullptr) when the fix solves none
+    double *const *potential;
   };
+  // phi of atom i, 0 without one
+  inline double potential_of(const Buoyancy *b, int mask, int i)
+  {
+    return (b && b->potential && *b->potential && (mask & b->groupbit)) ? (*b->potential)[i] : 0.0;
+  }
 
   // T0 at position x
   inline double reference(const Buoyancy &b, const double x[3])

@@ -117,3 +117,18 @@ sphthermal_python_test(convection.mpi.hold_default_np2 convection/test_hold_defa
 sphthermal_python_test(convection.hold_volume convection/test_hold_volume.py LAMMPS LABELS unit)
 sphthermal_python_test(convection.mpi.hold_volume_np2 convection/test_hold_volume.py LAMMPS
   ARGS --np 2 --mpirun ${MPIRUN} LABELS mpi PROCESSORS 2)
+# fix sph/boussinesq 'potential': phi against the exact series of a linear
+# temperature at rest (2.2 % of max|phi| at 20 across, 0.82 % at 40), a
+# restart goes on from the file's phi, and 1 against 2 and 4 ranks
+sphthermal_python_test(convection.potential.series convection/test_potential.py LAMMPS
+  ARGS series --n 20 --tolerance 0.025 LABELS validation)
+sphthermal_python_test(convection.potential.restart convection/test_potential.py LAMMPS
+  ARGS restart LABELS regression)
+foreach(np 2 4)
+  sphthermal_python_test(convection.potential.ranks_np${np} convection/test_potential.py LAMMPS
+    ARGS ranks --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
+endforeach()
+# the cavity at c0 = 10 v_max (12 across) with and without the potential:
+# the density's range (0.49 of it) and Nu (within 1 %)
+sphthermal_python_test(convection.potential.cavity convection/test_potential.py LAMMPS
+  ARGS cavity LABELS regression)
