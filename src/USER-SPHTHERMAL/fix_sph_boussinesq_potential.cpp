@@ -56,13 +56,13 @@ void FixSPHBoussinesq::setup_pre_force(int /*vflag*/)
 {
   int solved = potential_solved;
   MPI_Allreduce(&potential_solved, &solved, 1, MPI_INT, MPI_MAX, world);
-  prepare_potential();
   if (solved) {
     // phi of the last step or the restart file, as the run left it
     comm_what = COMM_POTENTIAL;
     SPHCompat::forward_comm(comm, this);
     return;
   }
+  prepare_potential();
   // the change of phi less its mean's (which drifts as far as the discrete
   // div f and f . n do not balance)
   const int nlocal = atom->nlocal;

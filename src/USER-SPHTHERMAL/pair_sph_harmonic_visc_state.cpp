@@ -213,13 +213,11 @@ void PairSPHHarmonicVisc::update_atom_state()
   }
   if (hydrostatic) {
     body_accel.resize(3 * (size_t) nall);
+    // the buoyancy that its potential balances does not stratify the density
+    const SPHBodyForce::Buoyancy *stratifying =
+        SPHBodyForce::has_potential(buoyancy) ? nullptr : buoyancy;
     for (int i = 0; i < nall; i++)
-      // the buoyancy that its potential balances does not stratify the density
-      SPHBodyForce::acceleration(gravity,
-                                 (buoyancy && buoyancy->potential && *buoyancy->potential)
-                                     ? nullptr
-                                     : buoyancy,
-                                 mask[i], type[i],
+      SPHBodyForce::acceleration(gravity, stratifying, mask[i], type[i],
                                  buoyancy ? temperature[i] : 0.0, atom->x[i],
                                  &body_accel[3 * (size_t) i]);
   }

@@ -39,10 +39,15 @@ namespace SPHBodyForce {
     // state's; nullptr (or *potential nullptr) when the fix solves none
     double *const *potential;
   };
+  // the buoyancy solves its potential
+  inline bool has_potential(const Buoyancy *b)
+  {
+    return b && b->potential && *b->potential;
+  }
   // phi of atom i, 0 without one
   inline double potential_of(const Buoyancy *b, int mask, int i)
   {
-    return (b && b->potential && *b->potential && (mask & b->groupbit)) ? (*b->potential)[i] : 0.0;
+    return (has_potential(b) && (mask & b->groupbit)) ? (*b->potential)[i] : 0.0;
   }
 
   // T0 at position x
