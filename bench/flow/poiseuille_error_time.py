@@ -34,7 +34,7 @@ SETTINGS = [
     ("quintic, h = dx", "quintic", 1.0, []),
     ("wendland, h = 2 dx", "wendland", 2.0, []),
     ("wendland, h = 2 dx, dt = 0.15 h / c0, shifted", "wendland", 2.0,
-     ["-var", "dtfac", "0.15", "-var", "shift", "1"]),
+     ["-var", "dtreset", "acoustic 0.15", "-var", "shift", "1"]),
 ]
 
 

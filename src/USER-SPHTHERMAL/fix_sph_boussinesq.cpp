@@ -41,6 +41,7 @@
 #include "sph_hub.h"
 #include "sph_particle.h"
 #include "sph_scene_defaults.h"
+#include "sph_sound_speed.h"
 
 #include <algorithm>
 #include <cmath>
@@ -65,7 +66,7 @@ static constexpr double MAX_COMPRESSION = 0.05;
 // to the side-heated cavity at Ra = 1e3 to 1e5 (the estimate is 1.07, 1.26
 // and 1.14 times the benchmark's largest v on y = 1/2 there:
 // bench/convection/sound_speed.md)
-static constexpr double SPEED_FACTOR = 10.0;
+static constexpr double SPEED_FACTOR = SPHSoundSpeed::SPEED_FACTOR;
 static constexpr double FREE_FALL = 0.42;
 static constexpr double VISCOUS_SPEED = 120.0;
 

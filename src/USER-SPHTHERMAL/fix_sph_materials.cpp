@@ -19,6 +19,7 @@
 #include "sph_compat.h"
 #include "sph_hub.h"
 #include "sph_scene_defaults.h"
+#include "sph_sound_speed.h"
 #include "tokenizer.h"
 #include "update.h"
 
@@ -37,7 +38,8 @@ static const char cmd[] = "fix sph/materials";
 FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), state(new SPHAtomState(lmp, this)), eos_type(nullptr), eos_set(nullptr),
     cv_type(nullptr), rho0_type(nullptr), expansion_type(nullptr), c0_kind(nullptr),
-    background_relative(nullptr), background_given(nullptr), background_logged(-1)
+    background_relative(nullptr), background_given(nullptr), background_logged(-1),
+    speed_type(nullptr)
 {
   ntypes = atom->ntypes;
   conductivity_laws.resize(ntypes + 1);
@@ -57,11 +59,13 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
   memory->create(c0_kind, ntypes + 1, "sph/materials:c0_kind");
   memory->create(background_relative, ntypes + 1, "sph/materials:background_relative");
   memory->create(background_given, ntypes + 1, "sph/materials:background_given");
+  memory->create(speed_type, ntypes + 1, "sph/materials:speed");
   for (int i = 0; i <= ntypes; i++) {
     eos_set[i] = 0;
     c0_kind[i] = C0_GIVEN;
     background_relative[i] = NAN;
     background_given[i] = 0;
+    speed_type[i] = 0.0;
     cv_type[i] = rho0_type[i] = -1.0;
     expansion_type[i] = 0.0;
   }
@@ -149,6 +153,7 @@ FixSPHMaterials::~FixSPHMaterials()
   memory->destroy(c0_kind);
   memory->destroy(background_relative);
   memory->destroy(background_given);
+  memory->destroy(speed_type);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -203,15 +208,8 @@ void FixSPHMaterials::setup_pre_force(int /*vflag*/)
   state->stale();
   int pending = 0;
   for (int t = 1; t <= ntypes; t++) pending |= (c0_kind[t] == C0_PENDING);
-  if (!pending) return;
-  const std::vector<int> present = SPHCheck::group_types(lmp, 1);    // group all
-  for (int t = 1; t <= ntypes; t++)
-    if (present[t] && c0_kind[t] == C0_PENDING)
-      error->all(FLERR,
-                 "Fix sph/materials: the speed of sound of atom type {} is 'auto', but nothing "
-                 "in this run derives it (fix sph/boussinesq does, from its group's types with "
-                 "an expansion coefficient): give c0 in its eos",
-                 t);
+  // fix sph/boussinesq derived its types' at its init; the rest from the flow
+  if (pending) SPHSoundSpeed::derive(lmp, this, "Fix sph/materials");
 }
 
 /* ----------------------------------------------------------------------
@@ -221,6 +219,13 @@ void FixSPHMaterials::setup_pre_force(int /*vflag*/)
 void FixSPHMaterials::set_sound_speed(int type, double c0, const std::string &why)
 {
   if (c0_kind[type] != C0_PENDING) return;
+  std::string reason = why;
+  // the flow's speed given in the eos bounds any estimate from below
+  if (SPHSoundSpeed::SPEED_FACTOR * speed_type[type] > c0) {
+    reason = fmt::format("{} times the speed {} its eos gives, above {:.6g}, {}",
+                         SPHSoundSpeed::SPEED_FACTOR, speed_type[type], c0, why);
+    c0 = SPHSoundSpeed::SPEED_FACTOR * speed_type[type];
+  }
   eos_type[type].c0 = c0;
   c0_kind[type] = C0_FOUND;
   std::string background;
@@ -229,7 +234,7 @@ void FixSPHMaterials::set_sound_speed(int type, double c0, const std::string &wh
                              eos_type[type].p_background, background_relative[type]);
   if (comm->me == 0)
     utils::logmesg(lmp, "Fix sph/materials: speed of sound of atom type {} is {:.6g} ({}){}\n",
-                   type, c0, why, background);
+                   type, c0, reason, background);
 }
 
 /* ----------------------------------------------------------------------
@@ -469,7 +474,8 @@ int FixSPHMaterials::parse_law(std::vector<MaterialLaw> &laws, int ilo, int ihi,
 
 /* ----------------------------------------------------------------------
    'eos tait <c0> <gamma> [options]' or 'eos linear <c0> [options]', c0 a
-   speed or 'auto'; options: background <P> [relative], thermal <T0>
+   speed or 'auto'; options: background <P> [relative], thermal <T0>,
+   speed <U> (with 'auto')
 ------------------------------------------------------------------------- */
 
 int FixSPHMaterials::parse_eos(int ilo, int ihi, const std::vector<std::string> &words,
@@ -493,14 +499,26 @@ int FixSPHMaterials::parse_eos(int ilo, int ihi, const std::vector<std::string> 
   eos.c0 = c0_auto ? 0.0 : positive(words[iword + 2], "speed of sound", where, false);
   if (kind == SPHE_TAIT) eos.gamma = positive(words[iword + 3], "gamma", where, false);
   int taken = 2 + ncoeffs;
-  double relative = NAN;
+  double relative = NAN, speed = 0.0;
   int background = 0;
-  // options, in any order: background P [relative], thermal T0
+  // options, in any order: background P [relative], thermal T0, speed U
   while (left >= (size_t) taken &&
-         (words[iword + taken] == "background" || words[iword + taken] == "thermal")) {
+         (words[iword + taken] == "background" || words[iword + taken] == "thermal" ||
+          words[iword + taken] == "speed")) {
     const std::string &option = words[iword + taken];
     if (left < (size_t) taken + 1)
       error->all(FLERR, "Illegal {}: missing value after '{}'", where, option);
+    if (option == "speed") {
+      // the flow's speed scale, from which 'auto' takes c0
+      if (!c0_auto)
+        error->all(FLERR,
+                   "Illegal {}: 'speed' is the flow's speed from which an 'auto' speed of "
+                   "sound is found, but c0 {} is given",
+                   where, words[iword + 2]);
+      speed = positive(words[iword + taken + 1], "speed", where, false);
+      taken += 2;
+      continue;
+    }
     const double value = utils::numeric(FLERR, words[iword + taken + 1].c_str(), false, lmp);
     if (option == "background") {
       eos.p_background = value;
@@ -524,6 +542,7 @@ int FixSPHMaterials::parse_eos(int ilo, int ihi, const std::vector<std::string> 
     c0_kind[i] = c0_auto ? C0_PENDING : C0_GIVEN;
     background_relative[i] = relative;
     background_given[i] = background;
+    speed_type[i] = speed;
   }
   return taken;
 }

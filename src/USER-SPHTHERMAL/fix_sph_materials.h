@@ -80,9 +80,11 @@ class FixSPHMaterials : public Fix {
   double expansion(int type) const { return expansion_type[type]; }
 
   // 'eos ... auto': the speed of sound of a type is found from the scene at
-  // the first run's init (fix sph/boussinesq's compression bound); until
-  // then its eos has c0 = 0
+  // the first run (fix sph/boussinesq's buoyancy at its init, the flow's
+  // speed scale at the set-up: sph_sound_speed.h); until then c0 = 0
   int sound_speed_pending(int type) const { return c0_kind[type] == C0_PENDING; }
+  // 'speed U' of a type's 'auto' eos: the flow's speed scale (0: none given)
+  double flow_speed(int type) const { return speed_type[type]; }
   // give a pending type its speed of sound (and a background given
   // relative to rho0 c0^2); the log says the value and 'why'
   void set_sound_speed(int type, double c0, const std::string &why);
@@ -109,6 +111,7 @@ class FixSPHMaterials : public Fix {
   double *background_relative;    // per type: 'background B relative' B, else NaN
   int *background_given;          // per type: 1 when its eos names a background
   int background_logged;          // the scene's default last logged (-1: none yet)
+  double *speed_type;             // per type: 'speed U' of an 'auto' eos, else 0
 
   static const sphm_law *law_of(const std::vector<MaterialLaw> &laws, int type)
   {

@@ -21,6 +21,7 @@
 #include "sph_checks.h"
 #include "sph_compat.h"
 #include "sph_eos.h"
+#include "sph_sound_speed.h"
 #include "variable.h"
 
 #include <cmath>
@@ -279,13 +280,8 @@ void SPHSet::set_hydrostatic(double level, bool move)
                "{} hydrostatic: no atom type of group {} has an equation of state in fix "
                "sph/materials: no fluid to set",
                cmd, group_name);
-  for (int t = 1; t <= ntypes; t++)
-    if (present[t] && materials->sound_speed_pending(t))
-      error->all(FLERR,
-                 "{} hydrostatic: the speed of sound of atom type {} is 'auto' (fix "
-                 "sph/materials), found at the first run, so its density under gravity is not "
-                 "known yet: give c0, or a 'run 0' first",
-                 cmd, t);
+  // an 'auto' speed of sound is needed now: from this column's head
+  SPHSoundSpeed::derive(lmp, materials, "sph/set hydrostatic", groupbit, level);
 
   double **x = atom->x;
   const int *const mask = atom->mask;
