@@ -2,7 +2,7 @@
 # Run the transient Poiseuille example and print its error against the exact series.
 #   ./run.sh          40 particles across (8 columns, a periodic length of 4 m), then the
 #                     same with the viscous regularisation eta = 0.1 h of the pair's
-#                     default for comparison (about 1.5 minutes)
+#                     default for comparison (about 3 minutes)
 #   ./run.sh quick    20 across, 4 columns (the same 4 m), the CI test flow.validation.poiseuille_20
 #   ./run.sh surface-jitter  the same with the walls' surface (noslip surface) from a start
 #                     jittered by 0.1 dx, the CI test flow.validation.poiseuille_surface_jitter_20
@@ -24,13 +24,13 @@ if [ "${1:-}" = wendland ]; then
 elif [ "${1:-}" = surface-jitter ]; then
   size="-var n 20 -var ncol 4 -var noslip surface -var jitter 0.1 -var seed 1"
   label="20 across, walls' surface, jittered start"
-  # measured (README.md): max error 0.95 % of u_max, max |vy| 1.1 %; with the quadratic
+  # measured (README.md): max error 0.96 % of u_max, max |vy| 0.17 %; with the quadratic
   # continuation along the walls' normal too it broke up (4.9 %, |vy| 13 %)
   limits="--max-error 1.5 --max-vy 2.0"
 elif [ "${1:-}" = quick ]; then
   size="-var n 20 -var ncol 4"
   label="20 across"
-  # measured (README.md): max error 0.44 % of u_max (at t = 1200 s), max |vy| 0.023 %
+  # measured (README.md): max error 0.44 % of u_max (at t = 1200 s), max |vy| 0.022 %
   limits="--max-error 0.55 --max-vy 0.1"
 else
   size="-var n 40 -var ncol 8"

@@ -16,7 +16,8 @@
    opening voids (the cavities, the tanks, the Rayleigh-Benard layer above
    onset); without shifting it would suppress the onset of convection
    (examples/convection-rayleigh-benard), so none there. A flow that walls
-   or forces drive, without weight or buoyancy, takes 0.01 rho0 c0^2:
+   or forces drive, without weight or buoyancy, between walls (or periodic
+   boundaries) along every dimension, takes 0.01 rho0 c0^2:
    without it the Poiseuille flow of Morris et al. (1997) at 20 across ends
    8.5 % off with |v_y| 2.8 % of u_max, with it 0.44 % (the Couette flow:
    0.39 % and 0.13 %); under weight a free surface takes none. The volume
@@ -30,6 +31,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "fix_sph_boussinesq.h"
 #include "fix_sph_hold_volume.h"
 #include "fix_sph_materials.h"
@@ -41,6 +43,8 @@
 #include "sph_conduction_weights.h"
 #include "sph_hub.h"
 #include "utils.h"
+
+#include <cmath>
 
 using namespace LAMMPS_NS;
 
@@ -77,6 +81,36 @@ std::string buoyant_shifted_flow(LAMMPS *lmp)
                      buoyancy, shift);
 }
 const char without[] = "the default without a buoyancy-driven flow of shifted particles";
+
+// the first non-periodic dimension ("x", "y", "z") along which the fluid
+// (atoms whose type has an equation of state, outside the groups of fix
+// sph/wall/adami) does not lie between atoms of those walls, where it may
+// have a free surface; empty when it lies between walls along every one
+std::string open_dimension(LAMMPS *lmp)
+{
+  int wallbits = 0;
+  for (FixSPHWallAdami *wall : SPHHub(lmp).fixes<FixSPHWallAdami>()) wallbits |= wall->groupbit;
+  FixSPHMaterials *materials = FixSPHMaterials::find(lmp, "Fix sph/materials");
+  Atom *atom = lmp->atom;
+  // per dimension: -lowest, highest of the fluid; -lowest, highest of the walls
+  double local[12], all[12];
+  for (double &v : local) v = -INFINITY;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const int wall = (atom->mask[i] & wallbits) != 0;
+    if (!wall && !materials->eos(atom->type[i])) continue;
+    for (int d = 0; d < 3; d++) {
+      local[6 * wall + 2 * d] = fmax(local[6 * wall + 2 * d], -atom->x[i][d]);
+      local[6 * wall + 2 * d + 1] = fmax(local[6 * wall + 2 * d + 1], atom->x[i][d]);
+    }
+  }
+  MPI_Allreduce(local, all, 12, MPI_DOUBLE, MPI_MAX, lmp->world);
+  static const char *const names[3] = {"x", "y", "z"};
+  for (int d = 0; d < lmp->domain->dimension; d++) {
+    if (lmp->domain->periodicity[d]) continue;
+    if (!(all[6 + 2 * d] > all[2 * d] && all[6 + 2 * d + 1] > all[2 * d + 1])) return names[d];
+  }
+  return std::string();
+}
 
 // a setting (value, number) that is 'on' in a buoyancy-driven flow of
 // shifted particles and 'off' otherwise, with the reason for the log
@@ -117,7 +151,17 @@ SPHSceneDefaults::Choice SPHSceneDefaults::background(LAMMPS *lmp)
                         weight->id),
             0.0};
   if (!SPHHub(lmp).flow()) return buoyant;
-  return {1, "the default in a flow without weight or buoyancy, which walls or forces drive", 0.01};
+  const std::string open = open_dimension(lmp);
+  if (!open.empty())
+    return {0,
+            fmt::format("the default without weight or buoyancy when the fluid is not between "
+                        "walls of fix sph/wall/adami along {}: a free surface takes none",
+                        open),
+            0.0};
+  return {1,
+          "the default in a flow without weight or buoyancy between walls or periodic "
+          "boundaries, which walls or forces drive",
+          0.01};
 }
 
 SPHSceneDefaults::Choice SPHSceneDefaults::volume_hold(LAMMPS *lmp, const Fix *buoyancy,

@@ -3,7 +3,8 @@ the speed of sound is 10 times the scene's speed (the eos's 'speed', the
 atoms' largest at the start, sqrt(|g| H) along a non-periodic g), the
 densest fluid's rho0 c0^2 for a lighter one, the eos's speed raises fix
 sph/boussinesq's estimate, and the background pressure a flow without
-weight or buoyancy takes by default is 0.01 rho0 c0^2 (0 under weight).
+weight or buoyancy takes by default is 0.01 rho0 c0^2 between walls (0
+under weight or with a side open).
 usage: test_auto_sound_speed.py --lmp LMP --plugin PLUGIN"""
 
 import math
@@ -22,6 +23,8 @@ def main():
     # case: (c0 of types 1, 2 and the last, background logged)
     expected = {
         "speed": ((5.0, 5.0, 5.0), "0.01 rho0 c0^2"),
+        # no walls above the fluid: a free surface takes no background
+        "open": ((5.0, 5.0, 5.0), "0 "),
         "moving": ((3.0, 3.0, 3.0), "0.01 rho0 c0^2"),
         # H: the 10 rows of 0.1 (each atom's cell), g along -y
         "weight": ((10 * math.sqrt(9.81),) * 3, "0 "),
