@@ -314,7 +314,8 @@ int FixSPHDtReset::end_at_until(bool at_setup)
     timer->force_timeout();
     return 1;
   }
-  if (left <= update->dt && !at_setup) {
+  // after a halving, 'left' is the halved dt up to round-off: land on it
+  if (left <= update->dt * (1.0 + 1.0e-9) && !at_setup) {
     set_dt(left);
     const bigint last = update->ntimestep + 1;
     if (output->next_thermo > last) {

@@ -5,8 +5,10 @@ densest fluid's rho0 c0^2 for a lighter one, the eos's speed raises fix
 sph/boussinesq's estimate, and the background pressure a flow without
 weight or buoyancy takes by default is 0.01 rho0 c0^2 between walls (0
 under weight or with a side open).
-usage: test_auto_sound_speed.py --lmp LMP --plugin PLUGIN"""
+With --np 2 each case runs on 2 ranks as well.
+usage: test_auto_sound_speed.py --lmp LMP --plugin PLUGIN [--np 2 --mpirun M]"""
 
+import argparse
 import math
 import os
 import re
@@ -14,11 +16,13 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 from checks import finish, near, that
-from lammps_checks import run_input, serial_check
+from lammps_checks import lammps_arguments, run_input
 
 
 def main():
-    args, _ = serial_check(__doc__)
+    parser = argparse.ArgumentParser(description=__doc__)
+    lammps_arguments(parser)
+    args = parser.parse_args()
     workdir = tempfile.mkdtemp(prefix="auto-c0-")
     # case: (c0 of types 1, 2 and the last, background logged)
     expected = {
@@ -36,13 +40,16 @@ def main():
         "buoyant": ((1000.0, 1000.0, 1000.0), "0 "),
     }
     for case, (c0, background) in expected.items():
-        out = run_input(args.lmp, os.path.join(HERE, "in.auto_sound_speed"),
-                        {"plugin": args.plugin, "case": case}, workdir)
-        found = [float(x) for x in re.search(r"^c0: (\S+) (\S+) (\S+)", out, re.M).groups()]
-        for t, (got, want) in enumerate(zip(found, c0)):
-            near(got, want, 1e-9, f"{case}: c0 of type {'1, 2, last'.split(', ')[t]}")
-        that(f"Fix sph/materials: background {background}" in out,
-             f"{case}: the default background {background.strip()} is logged")
+        # the extents and speeds are reduced over ranks: 2 ranks find the same
+        for np_ in (1, 2) if args.np > 1 else (1,):
+            out = run_input(args.lmp, os.path.join(HERE, "in.auto_sound_speed"),
+                            {"plugin": args.plugin, "case": case}, workdir, np_, args.mpirun)
+            found = [float(x) for x in re.search(r"^c0: (\S+) (\S+) (\S+)", out, re.M).groups()]
+            for t, (got, want) in enumerate(zip(found, c0)):
+                near(got, want, 1e-9,
+                     f"{case}, {np_} rank(s): c0 of type {'1, 2, last'.split(', ')[t]}")
+            that(f"Fix sph/materials: background {background}" in out,
+                 f"{case}, {np_} rank(s): the default background {background.strip()} is logged")
     finish()
 
 

@@ -173,7 +173,8 @@ sphthermal_python_test(flow.two_fluids.column flow/test_two_fluid_column.py LAMM
 # 'eos linear auto' without buoyancy: c0 = 10 times the scene's speed (the
 # eos's 'speed', moving atoms, sqrt(g H)), one rho0 c0^2 for two fluids, and
 # the background a flow without weight or buoyancy takes by default
-sphthermal_python_test(flow.auto_sound_speed flow/test_auto_sound_speed.py LAMMPS LABELS unit)
+sphthermal_python_test(flow.auto_sound_speed flow/test_auto_sound_speed.py LAMMPS
+  ARGS --np 2 --mpirun ${MPIRUN} LABELS mpi PROCESSORS 2)
 
 # fix sph/wall/adami 'surface': the walls extend a linear profile exactly
 # (Couette flow from its steady profile), on 1, 2 and 4 ranks
