@@ -24,8 +24,8 @@
    the driven flows need none (the Poiseuille flow with Wendland's kernel
    0.42 % either way, and in the Re = 652 channel, its volume held, 0.01
    rho0 c0^2 raised |v| across the flow from 0.02 to 0.4 % of u_max). The
-   volume of a closed convection cell held: the continuity equation lets its mean
-   density rise where the flow meets walls (0.6 % per diffusion time in
+   volume of a closed convection cell held: the continuity equation lets
+   its mean density rise where the flow meets walls (0.6 % per diffusion time in
    the Rayleigh-Benard layer), and the viscosity, diffusivity and Rayleigh
    number the fluid sees drift with it.
 ------------------------------------------------------------------------- */
@@ -146,7 +146,7 @@ SPHSceneDefaults::Choice SPHSceneDefaults::background(LAMMPS *lmp)
 {
   const Choice buoyant = by_buoyant_shift(lmp, 0, 0.0, 1, 0.1);
   if (buoyant.value || !buoyancy_fix(lmp).empty()) return buoyant;
-  // a flow that walls or a force drive, without weight (no free surface)
+  // under weight the fluid may have a free surface
   const Fix *weight = SPHBodyForce::source(lmp);
   if (weight)
     return {0,

@@ -38,9 +38,9 @@ namespace SPHSceneDefaults {
   // 'background' of an equation of state of fix sph/materials that gives
   // none (number: the pressure as a multiple of rho0 c0^2): 0.1 in a
   // buoyancy-driven flow of shifted particles, 0.01 in an unshifted flow
-  // without weight (fix gravity) or buoyancy whose fluid lies between walls of fix
-  // sph/wall/adami along every non-periodic dimension (no free surface),
-  // 0 otherwise
+  // without weight (fix gravity) or buoyancy whose fluid lies between
+  // walls of fix sph/wall/adami along every non-periodic dimension (no
+  // free surface), 0 otherwise
   Choice background(LAMMPS *lmp);
 
   // 'hold' of fix sph/boussinesq 'buoyancy' (1: its group's volume held,
