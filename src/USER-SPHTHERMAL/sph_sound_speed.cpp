@@ -6,7 +6,6 @@
 #include "sph_sound_speed.h"
 
 #include "atom.h"
-#include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
