@@ -250,10 +250,31 @@ def cmd_onset(args):
               f"{r['steps']} | {r['wall']:.1f} |")
     if args.png:
         plot(runs, args, a, ra_c, est, os.path.join(outdir, args.png))
+    if args.results:
+        write_onset_result(args.results, args, est, d_est, ra_c, err, len(runs), total)
     if args.max_error is not None and abs(err) > args.max_error:
         print(f"FAIL: |onset error| {abs(err):.2f} % > {args.max_error} %")
         return 1
     return 0
+
+
+def write_onset_result(path, args, est, d_est, ra_c, err, nruns, total):
+    """One row per width and resolution in the results file: this search's
+    replaces the row of the same width, particles per H and window."""
+    head = ["# analyse.py onset --results: the Rayleigh-Benard onset of in.rb (the package's "
+            "defaults) against linear theory (tools/rb_linear.py)",
+            "| W/H | particles per H | window | onset Ra_c | linear theory | error | runs | "
+            "LAMMPS time (s) |",
+            "|---|---|---|---|---|---|---|---|"]
+    key = f"| {args.width:g} | {args.n} | {args.window[0]:g}-{args.window[1]:g} |"
+    rows = []
+    if os.path.exists(path):
+        rows = [r for r in open(path).read().splitlines()
+                if r.startswith("| ") and not r.startswith(head[1][:6]) and not r.startswith(key)]
+    rows.append(f"{key} {est:.1f} +- {d_est:.1f} | {ra_c:.2f} | {err:+.2f} % | {nruns} | {total:.0f} |")
+    rows.sort(key=lambda r: (float(r.split("|")[1]), int(r.split("|")[2])))
+    with open(path, "w") as f:
+        f.write("\n".join(head + rows) + "\n")
 
 
 def plot(runs, args, a, ra_c, est, png):
@@ -316,6 +337,7 @@ def main():
     o.add_argument("--out", default=".", help="directory of the logs and the PNG")
     o.add_argument("--png", default="onset.png")
     o.add_argument("--max-error", type=float, help="fail (exit 1) above this onset error, %%")
+    o.add_argument("--results", help="keep this search's onset as a row of this results file")
     u = sub.add_parser("nu", help="mean Nu of logs above onset against tools/rb_fv.py")
     u.add_argument("logs", nargs="*")
     u.add_argument("--run", type=float, nargs="+", metavar="RA", help="run in.rb at these Ra first")

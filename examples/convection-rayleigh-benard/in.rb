@@ -19,43 +19,28 @@
 # Variables: ra, pr, n (particles per H), width (W / H; W n must be an
 #   integer), kernel, hdx (h / dx), eps (perturbation amplitude), tend (end
 #   time), kemax (or stop when the kinetic energy exceeds it: the end of the
-#   linear stage), cfac (c0 = cfac sqrt(Ra Pr / 2)), c0min, bg (background
-#   pressure / (rho0 c0^2)), delta (density diffusion of the pair), pform
-#   (its pressure form), cac (acoustic coefficient of fix sph/dt/reset), init
-#   (hydrostatic: the density of the conduction state's pressure; uniform:
-#   rho0 everywhere), every (thermo), dump (yes: write the fluid to the
-#   file out at the end), t0 (T0 of fix sph/boussinesq: 0.5 or layers),
-#   gradient (correction of the flow pair), conduction (keywords of the heat
-#   pair; none: the package's default, the plain operator at the onset,
-#   unshifted, and 'correction consistent' with shifting), shift (skillen coefficient, 0: none), continuity (of the shift),
-#   hold (of fix sph/boussinesq: yes, the package's default in a closed
-#   cell, holds the fluid's volume sum m / rho; no: the continuity
-#   equation's, which lets the mean density rise), jitter
-#   (random initial displacement of the fluid particles / dx; 0, the
-#   default: none), seed (its random seed), noslip (surface: the walls'
-#   velocity from the fluid's across the plates, the default; shepard:
-#   Adami's mean of the fluid near each wall particle, for comparison).
-# settings = onset (the defaults below) or convection: above onset, to a
-#   steady state (t = 0.8), with the flagship cavity's settings (without
-#   the background pressure particles entered the plates at 10 and 16 per H
-#   and lost the run at 20 and 30), and T0 by layers, so that the conduction
-#   state is not compressed and the run starts from the rest density
-#   ('run.sh nu').
-# Defaults and why (README.md): cfac 5, so that c0^2 = 100 times the
-#   pressure difference of the conduction state, g/8 (density range 0.9 %);
-#   at cfac 10 the run goes unstable with cac 0.1 (stable with cac 0.05).
-#   bg 0: a background pressure slows the growth (it stiffens the particle
-#   lattice: bg 0.01 at cfac 5 gave sigma 5.9 instead of 7.5 at Ra 3000).
-#   delta 0: the density diffusion slowed the growth of the perturbation,
-#   measured with Molteni's form, which flattened the hydrostatic density of
-#   the conduction state (the pair's Fourtakas form now reads the buoyancy).
+#   linear stage), every (thermo), dump (yes: write the fluid to the file
+#   out at the end), jitter (random initial displacement of the fluid
+#   particles / dx; 0: none), seed (its random seed).
+# Every numerical setting is the package's default; these variables vary
+#   them for a study: eos (the equation of state's speed of sound and
+#   keywords, 'auto': the package's, from the buoyancy's compression),
+#   flow and heat (more keywords of pair sph/harmonic/visc and
+#   sph/cleary/heat), dtreset (keywords of fix sph/dt/reset), t0 (T0 of fix
+#   sph/boussinesq: layers, so that the conduction state feels no buoyancy
+#   and the run starts at rest at rho0; or a temperature), shift (yes: fix
+#   sph/shift with the keywords shiftargs), hold (of fix sph/boussinesq),
+#   noslip (surface: the walls' velocity from the fluid's across the
+#   plates; shepard: Adami's mean of the fluid near each wall particle).
+# settings = onset (unshifted) or convection: above onset, to a steady
+#   state (t = 0.8), the particles shifted and the flow pair's gradient
+#   corrected, as in the flagship cavity ('run.sh nu').
 
 variable plugin  index ../../build/sphthermalplugin.so
 variable settings index onset
 if "${settings} == convection" then &
-  "variable tend index 0.8" "variable kemax index 1e30" "variable delta index 0.1" &
-  "variable init index uniform" "variable t0 index layers" "variable gradient index gradient" &
-  "variable shift index 2" "variable every index 200" "variable bg index 0.1" &
+  "variable tend index 0.8" "variable kemax index 1e30" "variable shift index yes" &
+  "variable flow index 'correction gradient'" "variable every index 200" &
 elif "${settings} != onset" &
   "print 'ERROR: settings ${settings}: onset or convection'" "quit 1"
 variable ra      index 3000
@@ -67,25 +52,19 @@ variable hdx     index 2.0
 variable eps     index 1e-2
 variable tend    index 0.3
 variable kemax   index 1.0
-variable cfac    index 5
-variable c0min   index 50
-variable bg      index 0.0
-variable eta     index 0.01
-variable pform   index averaged
-variable cac     index 0.1
-variable delta   index 0.0
-variable init    index hydrostatic
 variable every   index 100
 variable out     index rb.dump
 variable dump    index no
-variable t0      index 0.5
-variable gradient index none
-variable conduction index ""
-variable shift   index 0
-variable continuity index no
-variable hold    index yes
 variable jitter  index 0.0
 variable seed    index 12345
+variable eos     index auto
+variable flow    index ""
+variable heat    index ""
+variable dtreset index ""
+variable t0      index layers
+variable shift   index no
+variable shiftargs index ""
+variable hold    index yes
 variable noslip  index surface
 
 variable has_plugin equal is_file(${plugin})
@@ -102,12 +81,6 @@ variable        dx equal 1.0/${n}
 variable        nw equal round(${width}*${n})
 if "$(abs(v_nw-v_width*v_n) > 1e-9)" then "print 'width * n = $(v_width*v_n) must be an integer'" quit
 variable        g equal ${ra}*${pr}
-# the buoyant pressure scale g beta dT H / 2 = Ra Pr / 2 (the conduction
-# state's pressure varies by g/8 over the layer): c0^2 = cfac^2 Ra Pr / 2
-variable        c0a equal ${cfac}*sqrt(v_g/2.0)
-# (LAMMPS 29Sep2021 has no ternary(): an if)
-variable        c0 equal ${c0min}
-if "$(v_c0a) > ${c0min}" then "variable c0 delete" "variable c0 equal ${c0a}"
 variable        qmax equal 2
 if "${kernel} == lucy" then "variable qmax delete" "variable qmax equal 1"
 if "${kernel} == quintic" then "variable qmax delete" "variable qmax equal 3"
@@ -134,20 +107,14 @@ if "${jitter} > 0.0" then &
 
 fix             materials all sph/materials type * conductivity constant 1.0 cv 1.0 &
                 viscosity constant ${pr} expansion 1.0 &
-                eos linear ${c0} background $(v_bg*v_c0^2) rho0 1.0
+                eos linear ${eos} rho0 1.0
 sph/set         all materials spacing ${dx} temperature 0.5
 variable        Tinit atom 1.0-y+${eps}*sin(PI*y)*cos(2.0*PI*x/${width})
 sph/set         fluid temperature v_Tinit
 sph/set         hot temperature 1.0
 sph/set         cold temperature 0.0
-# hydrostatic start: the conduction state's pressure, dp/dy = g (1/2 - y)
-# (rho = 1), zero on average over the layer, gives the density
-# 1 + (y/2 - y^2/2 - 1/12) g / c0^2 (mass conserved)
-variable        rhoinit atom 1.0+(y/2.0-y*y/2.0-1.0/12.0)*v_g/(v_c0*v_c0)
-if "${init} == hydrostatic" then "set group fluid sph/rho v_rhoinit"
 
-pair_style      hybrid/overlay sph/harmonic/visc ${kernel} ${cut} eta ${eta} delta ${delta} pressure ${pform} &
-                correction ${gradient} sph/cleary/heat same eta ${eta} ${conduction}
+pair_style      hybrid/overlay sph/harmonic/visc ${kernel} ${cut} ${flow} sph/cleary/heat same ${heat}
 pair_coeff      * * sph/harmonic/visc
 pair_coeff      * * sph/cleary/heat
 neighbor        $(0.2*v_dx) bin
@@ -160,8 +127,8 @@ fix             hot hot sph/wall/dirichlet 1.0 surface layer
 fix             cold cold sph/wall/dirichlet 0.0 surface layer
 fix             buoyancy fluid sph/boussinesq ${t0} gravity 0.0 -${g} 0.0 hold ${hold}
 fix             integrate fluid sph
-if "${shift} > 0" then "fix shift fluid sph/shift skillen ${shift} continuity ${continuity}"
-fix             dt fluid sph/dt/reset 1 acoustic ${cac}
+if "${shift} == yes" then "fix shift fluid sph/shift ${shiftargs}"
+fix             dt fluid sph/dt/reset 1 ${dtreset}
 
 # Nu of the plates from the heat they give (hot) and take up (cold): 1 in
 # the conduction state; the area of each plate is the width
@@ -185,7 +152,7 @@ thermo_style    custom step time dt c_ke v_vymax c_nu_hot[1] c_nu_cold[1] c_rhom
                 c_volume elapsed cpuremain
 thermo_modify   format float %.10g
 thermo          ${every}
-print           "Ra = ${ra}, Pr = ${pr}, width = ${width}, ${nw} x ${n} fluid particles, c0 = $(v_c0:%.4g), g = $(v_g:%.6g), eps = ${eps}, init = ${init}"
+print           "Ra = ${ra}, Pr = ${pr}, width = ${width}, ${nw} x ${n} fluid particles, g = $(v_g:%.6g), eps = ${eps}"
 run             0
 variable        reached equal (time>=${tend})||(c_ke>${kemax})
 fix             stop fluid halt 10 v_reached == 1 error continue

@@ -10,7 +10,9 @@
 # Environment: LMP (LAMMPS binary), PLUGIN (sphthermalplugin.so), PYTHON,
 # OUT (output directory, default ./out), N, WIDTH, LO, HI, STEPS, METHOD
 # (falsi or bisect), WINDOW (fit window "T0 T1", default "0.1 0.3"; the runs
-# end at T1), EPS (perturbation), MAX_ONSET_ERROR (exit 1 above it, %).
+# end at T1), EPS (perturbation), MAX_ONSET_ERROR (exit 1 above it, %),
+# RESULTS (the results file that keeps each width's and resolution's onset,
+# default onsets.txt here).
 # The runs are serial (NP is not used).
 #   ./run.sh nu           convection above onset: Ra = 1e4 and 2e4 (RA="..."),
 #                         N particles per H, to t = 0.8, mean Nu over
@@ -38,4 +40,5 @@ export LMP PLUGIN
 "$PYTHON" "$here/analyse.py" onset --width "$WIDTH" --n "$N" \
   --lo "${LO:-1000}" --hi "${HI:-4000}" --steps "${STEPS:-6}" --method "${METHOD:-falsi}" \
   --window $WINDOW --eps "${EPS:-1e-2}" --out . --png onset.png \
+  --results "${RESULTS:-$here/onsets.txt}" \
   ${MAX_ONSET_ERROR:+--max-error "$MAX_ONSET_ERROR"}
