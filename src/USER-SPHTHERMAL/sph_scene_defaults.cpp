@@ -9,11 +9,9 @@
    particles, and in the heated channel (Ng et al. 2020) it halves the
    downstream temperature error; on unshifted ones (the onset of
    Rayleigh-Benard convection) and on lattices the plain operator is the
-   closer one. eta: 0.01 in buoyant flows (the cavity, the tanks, the
-   Rayleigh-Benard layer), Cleary's 0.1 in conduction, the channels and
-   around bodies: at h = 2 dx, 0.1 takes 4 % of the heat of the nearest
-   pairs, and the Rayleigh-Benard layer's conduction state gave Nu 0.985
-   at 20 and 40 particles per H (0.999 with 0.01) and an onset 2.6 % low. A
+   closer one. eta: 0.01 in the
+   cavity, the tanks and the Rayleigh-Benard layer (shifted, buoyant),
+   Cleary's 0.1 in conduction, the channels and around bodies. A
    background pressure of 0.1 rho0 c0^2 keeps shifted buoyant flows from
    opening voids (the cavities, the tanks, the Rayleigh-Benard layer above
    onset); without shifting it would suppress the onset of convection
@@ -141,10 +139,7 @@ SPHSceneDefaults::Choice SPHSceneDefaults::heat_correction(LAMMPS *lmp)
 
 SPHSceneDefaults::Choice SPHSceneDefaults::heat_eta(LAMMPS *lmp)
 {
-  const std::string buoyancy = buoyancy_fix(lmp);
-  if (buoyancy.empty() || !SPHHub(lmp).flow())
-    return {0, "the default without a buoyancy-driven flow", 0.1};
-  return {1, fmt::format("the default with buoyancy, fix sph/boussinesq {}", buoyancy), 0.01};
+  return by_buoyant_shift(lmp, 0, 0.1, 1, 0.01);
 }
 
 SPHSceneDefaults::Choice SPHSceneDefaults::background(LAMMPS *lmp)

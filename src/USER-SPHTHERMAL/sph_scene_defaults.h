@@ -32,7 +32,7 @@ namespace SPHSceneDefaults {
   Choice heat_correction(LAMMPS *lmp);
 
   // 'eta' of pair sph/cleary/heat (number): 0.01 in a buoyancy-driven flow
-  // (fix sph/boussinesq), as the flow pair's, 0.1 (Cleary's) otherwise
+  // of shifted particles, as the flow pair's, 0.1 (Cleary's) otherwise
   Choice heat_eta(LAMMPS *lmp);
 
   // 'background' of an equation of state of fix sph/materials that gives
