@@ -138,6 +138,13 @@ FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
 
   for (int k = 0; k < NLIMITS; k++) limit[k] = BIG;
 
+  // a restart file written during a run (the 'restart' command) holds the
+  // time of that run's start, and the next run's init drops the steps since
+  // (Integrate::init sets atimestep): bring the time up to date with the dt
+  // that made those steps, as the 'timestep' command does; a no-op after a
+  // run, and a restart file of this fix sets its own time below
+  update->update_time();
+
   // the elapsed time depends on every dt: keep it across restarts, and
   // forbid reset_timestep while the fix exists (as fix dt/reset does)
   time_depend = 1;

@@ -13,7 +13,10 @@
               mass, rho; and time = sum of the dt's
   restart     run, write_restart, read_restart in a new process, run: time
               continues from where it was and stays the sum of the dt's; dt
-              and time match one session that runs twice
+              and time match one session that runs twice; a fixed-dt run's
+              restart file written during the run ('restart' command, which
+              holds the run's start time) resumed with the fix: the time
+              goes on from step * dt
   mpi         the dt sequence and the active limits on 1 and --np ranks
   until       'until T': the run stops at the step whose end is T (to
               round-off), every earlier step but the last two takes the
@@ -359,6 +362,18 @@ def cmd_restart(a):
     check(len(first + second) == len(twice[0] + twice[1]) and worst <= 1e-12,
           f"restart against one session running twice: largest rel. deviation of time and dt "
           f"{worst:.1e}")
+    # a restart file of a fixed-dt run written during it holds the time of the
+    # run's start: the fix takes the time up from there (step * 0.001 here)
+    with tempfile.TemporaryDirectory() as tmp:
+        restart = os.path.join(tmp, "restart")
+        run_lammps(a, "in.dt_reset", dict(common, split="fixedwrite", restart=restart), cwd=tmp)
+        resumed = thermo_runs(run_lammps(a, "in.dt_reset", dict(common, split="read", restart=restart),
+                                         cwd=tmp))[0]
+    start = common["steps"] * 0.001
+    check(resumed[0]["step"] == common["steps"] and abs(resumed[0]["time"] - start) <= 1e-14,
+          f"resumed from a fixed-dt run's restart file: step {resumed[0]['step']} at time "
+          f"{resumed[0]['time']!r}, expected {start!r}")
+    check_time(resumed, "after a fixed-dt run's restart file", start=start)
     return report()
 
 
