@@ -269,8 +269,7 @@ def write_onset_result(path, args, est, d_est, ra_c, err, nruns, total):
     key = f"| {args.width:g} | {args.n} | {args.window[0]:g}-{args.window[1]:g} |"
     rows = []
     if os.path.exists(path):
-        rows = [r for r in open(path).read().splitlines()
-                if r.startswith("| ") and not r.startswith(head[1][:6]) and not r.startswith(key)]
+        rows = [r for r in open(path).read().splitlines()[len(head):] if not r.startswith(key)]
     rows.append(f"{key} {est:.1f} +- {d_est:.1f} | {ra_c:.2f} | {err:+.2f} % | {nruns} | {total:.0f} |")
     rows.sort(key=lambda r: (float(r.split("|")[1]), int(r.split("|")[2])))
     with open(path, "w") as f:
