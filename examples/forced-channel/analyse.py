@@ -17,7 +17,7 @@ A PNG shows the profiles, the bulk temperature and Nu.
 
 With --series (a run started from rest): every frame's u against the
 series solution of Poiseuille flow started from rest (Morris, Fox & Zhu
-1997), at the frame's time step * dt (dt = dtfac hdx dx / (cfac u_max)):
+1997), at the frame's time (the dump's ITEM: TIME, dump_modify time yes):
 per particle (mean and largest error) and as a profile (u - series
 averaged in rows of one spacing: the largest row and the centre rows),
 and with --series-png a plot of u(y) (the fluid averaged in rows of one
@@ -25,7 +25,7 @@ spacing) against the series at t = 50, 100, 200, 300 s and the last frame.
 
   analyse.py channel.dump [--walls dirichlet|thick] [--ksk 1] [--re 652]
              [--n 20] [--png channel.png] [--max-t-error PCT] [--max-vy PCT]
-             [--series --hdx 1.3 --dtfac 0.15 --cfac 10 [--series-png FILE]]
+             [--series [--series-png FILE]]
 """
 import argparse
 import sys
@@ -33,7 +33,7 @@ import sys
 import numpy as np
 
 import channel_fv
-from sphthermal_tools.dump import read_frames
+from sphthermal_tools.dump import frame_times, read_frames
 
 from channel_flow import poiseuille_from_rest
 
@@ -53,15 +53,15 @@ def row_means(y, values, dx, n):
     return np.bincount(row, values, n) / np.maximum(np.bincount(row, None, n), 1)
 
 
-def plot_series(a, frames, dt, dx, u_max, times=(50.0, 100.0, 200.0, 300.0)):
+def plot_series(a, frames, frame_time, dx, u_max, times=(50.0, 100.0, 200.0, 300.0)):
     """u(y) of the frames nearest to times and of the last one, rows of one spacing."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     chosen = []
     for t in times:
-        k = min(range(1, len(frames)), key=lambda i: abs(frames[i][0] * dt - t))
-        if abs(frames[k][0] * dt - t) < 0.5 * t and k not in chosen:
+        k = min(range(1, len(frames)), key=lambda i: abs(frame_time[i] - t))
+        if abs(frame_time[k] - t) < 0.5 * t and k not in chosen:
             chosen.append(k)
     if len(frames) - 1 not in chosen:
         chosen.append(len(frames) - 1)
@@ -69,8 +69,7 @@ def plot_series(a, frames, dt, dx, u_max, times=(50.0, 100.0, 200.0, 300.0)):
     rows = np.arange(a.n)
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
     for k in chosen:
-        fstep, f = frames[k]
-        t = fstep * dt
+        f, t = frames[k][1], frame_time[k]
         fl = f["type"] == 1
         u_row = row_means(f["y"][fl], f["vx"][fl], dx, a.n)
         line, = ax.plot(poiseuille_from_rest(y_fine, t, u_max, MU / RHO, W) / u_max, y_fine, "-",
@@ -103,9 +102,6 @@ def main():
     p.add_argument("--series", action="store_true",
                    help="compare every frame's u with the flow started from rest")
     p.add_argument("--series-png", help="with --series: u(y) against the series, as a PNG")
-    p.add_argument("--hdx", type=float, default=1.3)
-    p.add_argument("--dtfac", type=float, default=0.15)
-    p.add_argument("--cfac", type=float, default=10.0)
     a = p.parse_args()
 
     frames = read_frames(a.dump)
@@ -113,12 +109,13 @@ def main():
     dx = W / a.n
     u_max = a.re * MU / (RHO * W)
     if a.series:
-        dt = a.dtfac * a.hdx * dx / (a.cfac * u_max)
+        times = frame_times(a.dump)
+        if None in times:
+            sys.exit(f"{a.dump}: --series needs every frame's time (dump_modify time yes)")
         print(f"{'t (s)':>8} {'mean |u err| %':>15} {'max |u err| %':>14} {'rows: max %':>12} "
               f"{'centre %':>9} {'max |v| %':>10}  (of u_max)")
-        for fstep, f in frames[1:]:
+        for t, (fstep, f) in zip(times[1:], frames[1:]):
             fl = f["type"] == 1
-            t = fstep * dt
             series = poiseuille_from_rest(f["y"][fl], t, u_max, MU / RHO, W)
             err = 100.0 * np.abs(f["vx"][fl] - series) / u_max
             # the profile: u and the series averaged over the same particles, rows of one spacing
@@ -127,7 +124,7 @@ def main():
             print(f"{t:8.1f} {err.mean():15.3f} {err.max():14.3f} {np.abs(rows).max():12.3f} "
                   f"{centre:+9.3f} {100.0 * np.abs(f['vy'][fl]).max() / u_max:10.4f}")
         if a.series_png:
-            plot_series(a, frames, dt, dx, u_max)
+            plot_series(a, frames, times, dx, u_max)
     fluid = d["type"] == 1
     ref = reference(a)
     dT = T_W - T_IN

@@ -14,15 +14,19 @@
 #                       (in.exchanger, section 4.5), to TEND = 200 s with the
 #                       plate's cp lowered to 2.5 (the steady state does not
 #                       depend on it; PLATECP), about 1.5 hours each;
-#                       CONTINUITY, NOSLIP, HOLD and PB as for in.channel (the
-#                       same defaults), CONDUCTION (as for in.channel)
+#                       CONTINUITY, NOSLIP and HOLD as for in.channel (the
+#                       same defaults), PB (background pressure / rho0 c0^2,
+#                       in.exchanger's 0), CONDUCTION (as for in.channel)
 # Environment: LMP, PLUGIN, NP, OUT as in the other examples; N (particles
 # across), TEND (s), RE, KSK, SHIFT (yes|no), START (developed|rest),
-# DTFAC (dt = DTFAC h / c0), PB (background pressure / rho0 c0^2;
-# in.channel's 0), HOLD (yes|no: the fluid keeps its volume; in.channel's yes), CONTINUITY (yes|no: the shift's continuity keyword;
-# in.channel's no), NOSLIP (surface|shepard: the walls' no-slip velocity;
-# in.channel's surface), CONDUCTION (options
-# of pair sph/cleary/heat, e.g. "correction consistent mean interface"),
+# HOLD (yes|no: the fluid keeps its volume; in.channel's yes), CONTINUITY
+# (yes|no: the shift's continuity keyword; in.channel's no), NOSLIP
+# (surface|shepard: the walls' no-slip velocity; in.channel's surface),
+# and in.channel's variables that add to the package's defaults: EOS
+# (keywords of the eos, e.g. "background 0.01 relative"), FLOW (options
+# of pair sph/harmonic/visc), CONDUCTION (options of pair sph/cleary/heat,
+# e.g. "mean interface"), DTRESET (keywords of fix sph/dt/reset, e.g.
+# "acoustic 0.15");
 # MAX_T_ERROR (exit 1 above it, % of T_w - T_in), MAX_VY (exit 1 above it,
 # % of u_max).
 set -e
@@ -56,9 +60,9 @@ rm -f "$name.dump"
 $run "$LMP" -in "$here/in.channel" -var plugin "$PLUGIN" -var n "$N" -var tend "$TEND" \
   -var re "$RE" -var walls "$WALLS" -var ksk "$KSK" -var shift "${SHIFT:-yes}" \
   ${CONTINUITY:+-var continuity "$CONTINUITY"} ${NOSLIP:+-var noslip "$NOSLIP"} \
-  ${HOLD:+-var hold "$HOLD"} ${PB:+-var pb "$PB"} \
-  -var start "${START:-developed}" -var dtfac "${DTFAC:-0.15}" -var every "$TEND" \
-  -var conduction "${CONDUCTION:-mean harmonic}" -var out "$name" -log "log.$name" |
-  grep -E "^u_max|Loop time|sph/cleary/heat:"
+  ${HOLD:+-var hold "$HOLD"} ${EOS:+-var eos "$EOS"} ${FLOW:+-var flow "$FLOW"} \
+  ${CONDUCTION:+-var conduction "$CONDUCTION"} ${DTRESET:+-var dtreset "$DTRESET"} \
+  -var start "${START:-developed}" -var every "$TEND" -var out "$name" -log "log.$name" |
+  grep -E "^u_max|^dt =|speed of sound|Loop time|sph/cleary/heat:"
 "$PYTHON" "$here/analyse.py" "$name.dump" --walls "$WALLS" --ksk "$KSK" --re "$RE" --n "$N" \
   --png "$name.png" ${MAX_T_ERROR:+--max-t-error "$MAX_T_ERROR"} ${MAX_VY:+--max-vy "$MAX_VY"}
