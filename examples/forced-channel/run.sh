@@ -3,13 +3,13 @@
 # (tools/channel_fv.py); writes channel.png.
 #   ./run.sh            Re = 652, walls at 420 K, 20 particles across (the
 #                       paper's resolution), from the developed flow to
-#                       t = 150 s (about 8 minutes on one core)
+#                       t = 150 s (2576 s of loop on one core, shared)
 #   ./run.sh quick      Re = 65.2, 10 across, to t = 800 s (the CI test
-#                       forced.validation.channel_re65_10, about 30 s; at
+#                       forced.validation.channel_re65_10, about 140 s; at
 #                       Re = 652 10 across is too coarse: the flow breaks up)
 #   ./run.sh thick      the thick-wall channel (10 m slabs, KSK = k_s/k); with
 #                       N=10 RE=65.2 TEND=800 the CI test
-#                       forced.validation.thick_re65_10 (about 50 s)
+#                       forced.validation.thick_re65_10 (about 190 s)
 #   ./run.sh exchanger  the parallel-flow and counter-flow heat exchangers
 #                       (in.exchanger, section 4.5), to TEND = 200 s with the
 #                       plate's cp lowered to 2.5 (the steady state does not
