@@ -24,17 +24,17 @@ several % within 10-20 s).
 import argparse
 import glob
 import os
-import re
 import subprocess
 
 import numpy as np
 
 from sphthermal_tools.log import longest_thermo_table
 
+from channel_2000 import logged_wall_time
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 CHANNEL = os.path.join(ROOT, "examples", "forced-channel", "in.channel")
-LOOP = re.compile(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps")
 LAMINAR_VY = 1.0  # % of u_max
 
 
@@ -72,12 +72,8 @@ def gather(work):
     """Time, largest |v| (% u_max), largest u (of u_max), mean rho / rho0 of all pieces;
     the loop seconds and steps."""
     t, vy, u, rho = [], [], [], []
-    seconds = steps = 0
     for path in pieces(work):
         text = open(path).read()
-        for s, _, n in LOOP.findall(text):
-            seconds += float(s)
-            steps += int(n)
         table = longest_thermo_table(text)
         if table is None:
             continue
@@ -88,7 +84,7 @@ def gather(work):
         vy += list(100.0 * table["v_vymax"])
         u += list(table["c_vxmax"])
         rho += list(table["v_rhomean"])
-    return np.array(t), np.array(vy), np.array(u), np.array(rho), seconds, steps
+    return (np.array(t), np.array(vy), np.array(u), np.array(rho)) + logged_wall_time(pieces(work))
 
 
 def summary(a):
