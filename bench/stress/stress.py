@@ -18,7 +18,13 @@ listed as "not run (cost)"; --costly runs them too.
 
 The results table is written from the records (record.json) of every run
 in --out, so that cases run by separate invocations share one table; each
-invocation's command line is listed at the top.
+invocation's command line is listed at the top. The same table, as an
+reStructuredText list-table, is written into the stress section of
+doc/src/Stability_sphthermal.rst (between its two marker comments):
+
+  stress.py --doc          only that: the doc's table from results.md
+  stress.py --doc-check    exit 1 unless the doc's table is results.md's
+                           (the test docs.stress_table)
 """
 
 import argparse
@@ -40,6 +46,9 @@ from sphthermal_tools.log import late_rows, longest_thermo_table  # noqa: E402
 from cavity_fv import DE_VAHL_DAVIS  # noqa: E402
 
 EX = os.path.join(ROOT, "examples")
+DOC = os.path.join(ROOT, "doc", "src", "Stability_sphthermal.rst")
+DOC_BEGIN = ".. the stress table, written by bench/stress/stress.py from its results.md"
+DOC_END = ".. end of the stress table"
 SEEDS = (1, 2, 3)
 JITTER = "0.1"
 
@@ -422,6 +431,31 @@ def write_results(args, records):
     print(f"wrote {args.results}")
 
 
+def doc_table(results):
+    """The rst list-table of the rows of results.md, in its order."""
+    rows, _ = previous_results(results)
+    lines = [".. list-table::", "   :header-rows: 1", ""]
+    header = ["case", "variant", "stable", "error", "wall time (s)"]
+    for r in [dict(zip(("case", "variant", "stable", "error", "wall"), header))] + list(rows.values()):
+        stable = r["stable"] if isinstance(r["stable"], str) else \
+            {True: "yes", False: "**no**", None: "-"}[r["stable"]]
+        wall = r["wall"] if isinstance(r["wall"], str) else \
+            ("-" if r["wall"] is None else f"{r['wall']:.0f}")
+        cells = [r["case"], r["variant"], stable, r["error"], wall]
+        lines.append(f"   * - {cells[0]}")
+        lines += [f"     - {c}" for c in cells[1:]]
+    return lines
+
+
+def doc_with_table(results, doc):
+    """The doc page's text with the table between its markers made anew."""
+    text = open(doc).read().split("\n")
+    if DOC_BEGIN not in text or DOC_END not in text:
+        sys.exit(f"stress: {doc} lacks the marker lines '{DOC_BEGIN}' and '{DOC_END}'")
+    begin, end = text.index(DOC_BEGIN), text.index(DOC_END)
+    return "\n".join(text[:begin + 1] + [""] + doc_table(results) + [""] + text[end:])
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
@@ -437,7 +471,24 @@ def main():
     p.add_argument("--out", default=os.path.join(HERE, "out"), help="work directory")
     p.add_argument("--results", help="Markdown table (default bench/stress/results.md; "
                    "with --quick none unless given)")
+    p.add_argument("--doc", action="store_true", help="no runs: the doc page's table from --results")
+    p.add_argument("--doc-check", action="store_true",
+                   help="no runs: exit 1 unless the doc page's table is that of --results")
     args = p.parse_args()
+    if args.doc or args.doc_check:
+        results = args.results or os.path.join(HERE, "results.md")
+        new = doc_with_table(results, DOC)
+        if args.doc_check:
+            if new != open(DOC).read():
+                print(f"FAIL: the stress table of {DOC} is not that of {results}: "
+                      "run bench/stress/stress.py --doc")
+                return 1
+            print(f"ok: the stress table of {os.path.basename(DOC)} is that of {results}")
+            return 0
+        with open(DOC, "w") as f:
+            f.write(new)
+        print(f"wrote the stress table of {DOC}")
+        return 0
     args.lmp, args.plugin, args.out = (os.path.abspath(a) for a in (args.lmp, args.plugin, args.out))
     cmdline = " ".join(shlex.quote(a) for a in
                        ["bench/stress/stress.py"] + [a for a in sys.argv[1:]])
@@ -478,6 +529,10 @@ def main():
             var.update(change)
             records[(case, variant)] = run_case(args, case, variant, var, cmdline)
     write_results(args, records)
+    if os.path.abspath(args.results) == os.path.join(HERE, "results.md"):
+        with open(DOC, "w") as f:
+            f.write(doc_with_table(args.results, DOC))
+        print(f"wrote the stress table of {DOC}")
     unstable = [k for k, r in records.items() if r["stable"] is False]
     if unstable:
         print("not stable: " + ", ".join(f"{c} / {v}" for c, v in unstable))

@@ -27,10 +27,12 @@ import tempfile
 from sphtest import finish, lammps_arguments, record_site, run_script
 
 # the fixes, defined alike before write_restart and after read_restart (the
-# fix's restart() reads its state when it is defined again)
+# fix's restart() reads its state when it is defined again); the materials'
+# speed of sound from 'auto' is such a state
 FIXES = """fix materials all sph/materials type 1 conductivity constant 1.0 cv 1.0 &
-    viscosity constant 1e-3 eos linear 1.0 rho0 1000
+    viscosity constant 1e-3 eos linear auto speed 0.1 rho0 1000
 fix integrate moving sph
+fix volume moving sph/hold/volume
 fix held right sph/stationary
 fix adami wall sph/wall/adami
 fix hot wall sph/wall/dirichlet 1.0
@@ -77,7 +79,7 @@ read_restart {path}
 # the style names whose data carry a head, as the file spells them
 STYLES = ["sph/harmonic/visc", "sph/cleary/heat", "sph/wall/adami", "sph/wall/dirichlet",
           "sph/dt/reset", "sph/heatflow", "sph/surface/flux", "sph/shift",
-          "sph/inlet/temperature", "SPH/MIXING/REFERENCE"]
+          "sph/inlet/temperature", "SPH/MIXING/REFERENCE", "sph/materials", "sph/hold/volume"]
 TAG = struct.pack("i", 0x53505448)
 
 

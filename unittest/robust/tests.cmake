@@ -17,6 +17,13 @@ foreach(file ${robust_cmake_files})
   include(${file})
 endforeach()
 
+# a stop on one rank of two (a NaN position found by the rank that owns the
+# atom) names its rank and the atom, before MPI aborts (SPHCheck::stop)
+sphthermal_test(robust.faults.error.mpi.nan_position_dirichlet_wall LABELS mpi PROCESSORS 2
+  COMMAND ${sphtest} error --lmp ${SPHTHERMAL_LMP} --plugin ${SPHTHERMAL_PLUGIN}
+          --cases ${CMAKE_CURRENT_LIST_DIR}/faults_errors.in --name nan_position_dirichlet_wall
+          --np 2 --mpirun ${MPIRUN})
+
 # every error and warning call of the package's sources is raised by an
 # error case (the cases run first: they record the lines that raised them;
 # robust.error_branches runs after all of them: unittest/CMakeLists.txt

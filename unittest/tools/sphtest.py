@@ -192,7 +192,8 @@ def cmd_error(a):
     with tempfile.NamedTemporaryFile("w", suffix=".in") as f:
         f.write(script)
         f.flush()
-        proc = subprocess.run([a.lmp, "-log", "none", "-echo", "screen", "-in", f.name], text=True,
+        proc = subprocess.run(mpi_prefix(a.np, a.mpirun) +
+                              [a.lmp, "-log", "none", "-echo", "screen", "-in", f.name], text=True,
                               capture_output=True, env=mpi_env())
     output = proc.stdout + proc.stderr
     lines = output.splitlines()
@@ -224,6 +225,11 @@ def cmd_error(a):
     if not re.search(case["expect"], errors[0]):
         print(output)
         print(f"FAIL {a.name}: first error is\n  {errors[0]}\nexpected /{case['expect']}/")
+        return 1
+    if a.np > 1 and not errors[0].startswith("ERROR on proc"):
+        # a stop on one rank of several names that rank (SPHCheck::stop)
+        print(output)
+        print(f"FAIL {a.name}: on {a.np} ranks the first error does not name its rank:\n  {errors[0]}")
         return 1
     return passed(errors[0])
 
@@ -473,6 +479,8 @@ def main():
     s.add_argument("--name")
     s.add_argument("--list", action="store_true")
     s.add_argument("--record", help="write the site (file line) of the expected message here")
+    s.add_argument("--np", type=int, default=1, help="MPI ranks (above 1: the error names its rank)")
+    s.add_argument("--mpirun", default="mpirun")
 
     s = sub.add_parser("styles")
     s.add_argument("--lmp", required=True)

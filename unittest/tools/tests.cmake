@@ -65,6 +65,10 @@ else()
   message(STATUS "docs.rst left out: no docutils (apt-get install python3-docutils)")
 endif()
 
+# the stress table of Stability_sphthermal.rst is that of bench/stress/results.md
+sphthermal_python_test(docs.stress_table ${SPHTHERMAL_ROOT}/bench/stress/stress.py ARGS --doc-check
+  LABELS unit)
+
 # the measured numbers the docs quote are those of the results files the
 # benchmarks and reference solvers write (the quotes: doc_numbers.txt);
 # the self-test must see each wrong quote of doc_numbers_faults.txt fail
