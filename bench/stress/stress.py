@@ -434,14 +434,12 @@ def write_results(args, records):
 def doc_table(results):
     """The rst list-table of the rows of results.md, in its order."""
     rows, _ = previous_results(results)
+    table = [["case", "variant", "stable", "error", "wall time (s)"]]
+    for r in rows.values():
+        table.append([r["case"], r["variant"], {True: "yes", False: "**no**", None: "-"}[r["stable"]],
+                      r["error"], "-" if r["wall"] is None else f"{r['wall']:.0f}"])
     lines = [".. list-table::", "   :header-rows: 1", ""]
-    header = ["case", "variant", "stable", "error", "wall time (s)"]
-    for r in [dict(zip(("case", "variant", "stable", "error", "wall"), header))] + list(rows.values()):
-        stable = r["stable"] if isinstance(r["stable"], str) else \
-            {True: "yes", False: "**no**", None: "-"}[r["stable"]]
-        wall = r["wall"] if isinstance(r["wall"], str) else \
-            ("-" if r["wall"] is None else f"{r['wall']:.0f}")
-        cells = [r["case"], r["variant"], stable, r["error"], wall]
+    for cells in table:
         lines.append(f"   * - {cells[0]}")
         lines += [f"     - {c}" for c in cells[1:]]
     return lines
@@ -454,6 +452,13 @@ def doc_with_table(results, doc):
         sys.exit(f"stress: {doc} lacks the marker lines '{DOC_BEGIN}' and '{DOC_END}'")
     begin, end = text.index(DOC_BEGIN), text.index(DOC_END)
     return "\n".join(text[:begin + 1] + [""] + doc_table(results) + [""] + text[end:])
+
+
+def write_doc(results):
+    text = doc_with_table(results, DOC)    # read before the page is opened for writing
+    with open(DOC, "w") as f:
+        f.write(text)
+    print(f"wrote the stress table of {DOC}")
 
 
 def main():
@@ -485,9 +490,7 @@ def main():
                 return 1
             print(f"ok: the stress table of {os.path.basename(DOC)} is that of {results}")
             return 0
-        with open(DOC, "w") as f:
-            f.write(new)
-        print(f"wrote the stress table of {DOC}")
+        write_doc(results)
         return 0
     args.lmp, args.plugin, args.out = (os.path.abspath(a) for a in (args.lmp, args.plugin, args.out))
     cmdline = " ".join(shlex.quote(a) for a in
@@ -530,9 +533,7 @@ def main():
             records[(case, variant)] = run_case(args, case, variant, var, cmdline)
     write_results(args, records)
     if os.path.abspath(args.results) == os.path.join(HERE, "results.md"):
-        with open(DOC, "w") as f:
-            f.write(doc_with_table(args.results, DOC))
-        print(f"wrote the stress table of {DOC}")
+        write_doc(args.results)
     unstable = [k for k, r in records.items() if r["stable"] is False]
     if unstable:
         print("not stable: " + ", ".join(f"{c} / {v}" for c, v in unstable))
