@@ -18,7 +18,8 @@
 #                       same defaults), PB (background pressure / rho0 c0^2,
 #                       in.exchanger's 0), CONDUCTION (as for in.channel)
 # Environment: LMP, PLUGIN, NP, OUT as in the other examples; N (particles
-# across), TEND (s), RE, KSK, SHIFT (yes|no), START (developed|rest),
+# across), TEND (s), RE, KSK, SHIFT (yes|no), SHIFTC (C of the shift;
+# in.channel's 1), START (developed|rest),
 # HOLD (yes|no: the fluid keeps its volume; in.channel's yes), CONTINUITY
 # (yes|no: the shift's continuity keyword; in.channel's no), NOSLIP
 # (surface|shepard: the walls' no-slip velocity; in.channel's surface),
@@ -59,6 +60,7 @@ name=channel-$WALLS
 rm -f "$name.dump"
 $run "$LMP" -in "$here/in.channel" -var plugin "$PLUGIN" -var n "$N" -var tend "$TEND" \
   -var re "$RE" -var walls "$WALLS" -var ksk "$KSK" -var shift "${SHIFT:-yes}" \
+  ${SHIFTC:+-var shiftc "$SHIFTC"} \
   ${CONTINUITY:+-var continuity "$CONTINUITY"} ${NOSLIP:+-var noslip "$NOSLIP"} \
   ${HOLD:+-var hold "$HOLD"} ${EOS:+-var eos "$EOS"} ${FLOW:+-var flow "$FLOW"} \
   ${CONDUCTION:+-var conduction "$CONDUCTION"} ${DTRESET:+-var dtreset "$DTRESET"} \
