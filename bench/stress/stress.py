@@ -46,6 +46,7 @@ from sphthermal_tools.log import late_rows, longest_thermo_table  # noqa: E402
 from cavity_fv import DE_VAHL_DAVIS  # noqa: E402
 
 EX = os.path.join(ROOT, "examples")
+RESULTS = os.path.join(HERE, "results.md")
 DOC = os.path.join(ROOT, "doc", "src", "Stability_sphthermal.rst")
 DOC_BEGIN = ".. the stress table, written by bench/stress/stress.py from its results.md"
 DOC_END = ".. end of the stress table"
@@ -383,6 +384,14 @@ def previous_results(path):
     return rows, invocations
 
 
+def row_cells(rec):
+    """stable, error and wall time of a record as the tables print them."""
+    stable = {True: "yes", False: "**no**", None: "-"}[rec["stable"]]
+    error = rec["error"] if rec["stable"] is not False else "; ".join(rec["problems"])
+    wall = f"{rec['wall']:.0f}" if rec["wall"] is not None else "-"
+    return [stable, error, wall]
+
+
 def write_results(args, records):
     """The table of every record in args.out (and the skipped variants), in
     the order of CASES; rows of the earlier table that neither has are kept."""
@@ -420,10 +429,7 @@ def write_results(args, records):
         case = rec["case"]
         name = case if case in seen else f"{case}: {rec['what']}"
         seen.add(case)
-        stable = {True: "yes", False: "**no**", None: "-"}[rec["stable"]]
-        error = rec["error"] if rec["stable"] is not False else "; ".join(rec["problems"])
-        wall = f"{rec['wall']:.0f}" if rec["wall"] is not None else "-"
-        lines.append(f"| {name} | {rec['variant']} | {stable} | {error} | {wall} |")
+        lines.append("| " + " | ".join([name, rec["variant"]] + row_cells(rec)) + " |")
     lines += ["", "The LAMMPS command of each run: `record.json` in its directory under the "
               "work directory (`--out`)."]
     with open(args.results, "w") as f:
@@ -436,8 +442,7 @@ def doc_table(results):
     rows, _ = previous_results(results)
     table = [["case", "variant", "stable", "error", "wall time (s)"]]
     for r in rows.values():
-        table.append([r["case"], r["variant"], {True: "yes", False: "**no**", None: "-"}[r["stable"]],
-                      r["error"], "-" if r["wall"] is None else f"{r['wall']:.0f}"])
+        table.append([r["case"], r["variant"]] + row_cells(r))
     lines = [".. list-table::", "   :header-rows: 1", ""]
     for cells in table:
         lines.append(f"   * - {cells[0]}")
@@ -481,7 +486,7 @@ def main():
                    help="no runs: exit 1 unless the doc page's table is that of --results")
     args = p.parse_args()
     if args.doc or args.doc_check:
-        results = args.results or os.path.join(HERE, "results.md")
+        results = args.results or RESULTS
         new = doc_with_table(results, DOC)
         if args.doc_check:
             if new != open(DOC).read():
@@ -519,7 +524,7 @@ def main():
         return 0
 
     if args.results is None:
-        args.results = os.path.join(HERE, "results.md")
+        args.results = RESULTS
     records = {}
     for case in args.cases:
         for variant, change, skip in CASES[case]["variants"]:
@@ -532,7 +537,7 @@ def main():
             var.update(change)
             records[(case, variant)] = run_case(args, case, variant, var, cmdline)
     write_results(args, records)
-    if os.path.abspath(args.results) == os.path.join(HERE, "results.md"):
+    if os.path.abspath(args.results) == RESULTS:
         write_doc(args.results)
     unstable = [k for k, r in records.items() if r["stable"] is False]
     if unstable:
