@@ -491,7 +491,7 @@ void FixSPHDtReset::write_restart(FILE *fp)
 
 void FixSPHDtReset::restart(char *buf)
 {
-  const double *list = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION);
+  const double *list = SPHCheck::read_restart_state(lmp, FLERR, this, buf, RESTART_VERSION);
   update->atime = list[0];
   update->atimestep = update->ntimestep;
 }

@@ -151,7 +151,7 @@ void FixSPHHeatflow::write_restart(FILE *fp)
 
 void FixSPHHeatflow::restart(char *buf)
 {
-  const double *state = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION);
+  const double *state = SPHCheck::read_restart_state(lmp, FLERR, this, buf, RESTART_VERSION);
   energy = state[0];
   int at = 1;
   const std::string into = SPHCheck::unpack_name(state, at);

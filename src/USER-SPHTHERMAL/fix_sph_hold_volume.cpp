@@ -138,7 +138,7 @@ void FixSPHHoldVolume::write_restart(FILE *fp)
 
 void FixSPHHoldVolume::restart(char *buf)
 {
-  const double *state = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION);
+  const double *state = SPHCheck::read_restart_state(lmp, FLERR, this, buf, RESTART_VERSION);
   int at = 1;
   const std::string name = SPHCheck::unpack_name(state, at);
   if (name == group->names[igroup]) {

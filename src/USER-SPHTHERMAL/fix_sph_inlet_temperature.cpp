@@ -479,7 +479,7 @@ void FixSPHInletTemperature::write_restart(FILE *fp)
 
 void FixSPHInletTemperature::restart(char *buf)
 {
-  const double *state = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION);
+  const double *state = SPHCheck::read_restart_state(lmp, FLERR, this, buf, RESTART_VERSION);
   energy_reset = state[0];
   energy_plane = state[1];
 }

@@ -270,7 +270,7 @@ void FixSPHMaterials::write_restart(FILE *fp)
 
 void FixSPHMaterials::restart(char *buf)
 {
-  const double *state = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION);
+  const double *state = SPHCheck::read_restart_state(lmp, FLERR, this, buf, RESTART_VERSION);
   const int n = (int) state[0];
   for (int t = 1; t <= ntypes && t <= n; t++)
     if (state[t] > 0.0) set_sound_speed(t, state[t], "auto, from the restart file");

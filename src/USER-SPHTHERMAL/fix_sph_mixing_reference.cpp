@@ -198,7 +198,7 @@ void FixSPHMixingReference::write_restart(FILE *fp)
 
 void FixSPHMixingReference::restart(char *buf)
 {
-  const double *list = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION);
+  const double *list = SPHCheck::read_restart_state(lmp, FLERR, this, buf, RESTART_VERSION);
   captured = (int) list[0];
   resize((int) list[1]);
   elapsed_restart = list[2];

@@ -645,7 +645,7 @@ void FixSPHShift::write_restart(FILE *fp)
 
 void FixSPHShift::restart(char *buf)
 {
-  const double *state = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION);
+  const double *state = SPHCheck::read_restart_state(lmp, FLERR, this, buf, RESTART_VERSION);
   energy = state[0];
   int at = 1;
   const std::string written = SPHCheck::unpack_name(state, at);

@@ -105,8 +105,9 @@ void FixSPHSurfaceFlux::reset_dt()
 
 void FixSPHSurfaceFlux::init()
 {
-  SPHCheck::group_of_kind(
-      lmp, this, SPHHub(lmp).fixes_of_any<FixSPHWallDirichlet, FixSPHWallAdiabatic>(), true, true);
+  SPHCheck::group_of_kind(lmp, FLERR, this,
+                          SPHHub(lmp).fixes_of_any<FixSPHWallDirichlet, FixSPHWallAdiabatic>(),
+                          true, true);
   SPHCheck::atom_state(lmp, FLERR, "Fix sph/surface/flux", groupbit, SPHCheck::CV | SPHCheck::ESPH);
   reset_dt();
   area = pow(spacing, domain->dimension - 1);
@@ -164,5 +165,5 @@ void FixSPHSurfaceFlux::write_restart(FILE *fp)
 
 void FixSPHSurfaceFlux::restart(char *buf)
 {
-  energy = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION)[0];
+  energy = SPHCheck::read_restart_state(lmp, FLERR, this, buf, RESTART_VERSION)[0];
 }

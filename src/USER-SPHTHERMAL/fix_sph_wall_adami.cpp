@@ -133,7 +133,7 @@ void FixSPHWallAdami::init()
   if (mirror) mirror->init(groupbit, kernel_kind, cutoff, id);
   materials = FixSPHMaterials::find(lmp, "Fix sph/wall/adami");
   // ghost velocities: turned on and checked by the pair, which this fix requires
-  SPHCheck::group_of_kind(lmp, this, hub.fixes_of_any<FixSPHWallAdami>(), false, false);
+  SPHCheck::group_of_kind(lmp, FLERR, this, hub.fixes_of_any<FixSPHWallAdami>(), false, false);
   // a wall type without an equation of state is a solid of its own density
   int local_solid = 0;
   for (int t = 1; t <= atom->ntypes; t++) solid_type[t] = materials->eos(t) ? 0 : 1;
@@ -512,7 +512,7 @@ void FixSPHWallAdami::write_restart(FILE *fp)
 
 void FixSPHWallAdami::restart(char *buf)
 {
-  const double *state = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION);
+  const double *state = SPHCheck::read_restart_state(lmp, FLERR, this, buf, RESTART_VERSION);
   sampled = (int) state[0];
   remaining_sampled = state[1];
 }

@@ -110,9 +110,10 @@ void FixSPHWallAdiabatic::init()
       SPHHub(lmp).require_heat("Fix sph/wall/adiabatic")->kernel_settings();
   const int kernel_kind = given.kind;
   const double cutoff = given.cutoff;
-  SPHCheck::group_of_kind(lmp, this,
-                          SPHHub(lmp).fixes_of_any<FixSPHWallIsothermal, FixSPHWallDirichlet,
-                                                   FixSPHWallAdiabatic, FixSPHSurfaceFlux>(),
+  SPHCheck::group_of_kind(lmp, FLERR, this,
+                          SPHHub(lmp)
+                              .fixes_of_any<FixSPHWallIsothermal, FixSPHWallDirichlet,
+                                            FixSPHWallAdiabatic, FixSPHSurfaceFlux>(),
                           false, false);
   mirror->init(groupbit, kernel_kind, cutoff, id);
 }

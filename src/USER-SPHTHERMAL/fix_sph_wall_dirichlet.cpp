@@ -104,9 +104,10 @@ void FixSPHWallDirichlet::init()
   const SPHKernelSettings given = hub.require_heat("Fix sph/wall/dirichlet")->kernel_settings();
   kernel_kind = given.kind;
   cutoff = given.cutoff;
-  SPHCheck::group_of_kind(lmp, this,
-                          SPHHub(lmp).fixes_of_any<FixSPHWallIsothermal, FixSPHWallDirichlet,
-                                                   FixSPHWallAdiabatic, FixSPHSurfaceFlux>(),
+  SPHCheck::group_of_kind(lmp, FLERR, this,
+                          SPHHub(lmp)
+                              .fixes_of_any<FixSPHWallIsothermal, FixSPHWallDirichlet,
+                                            FixSPHWallAdiabatic, FixSPHSurfaceFlux>(),
                           false, false);
   // (the cv of its group: the pair, required above, has checked every atom's
   // at its init, which comes before the fixes')

@@ -60,7 +60,7 @@ int FixSPHWallIsothermal::setmask()
 void FixSPHWallIsothermal::init()
 {
   SPHCheck::group_of_kind(
-      lmp, this,
+      lmp, FLERR, this,
       SPHHub(lmp).fixes_of_any<FixSPHWallIsothermal, FixSPHWallDirichlet, FixSPHWallAdiabatic>(),
       false, true);
   SPHCheck::atom_state(lmp, FLERR, "Fix sph/wall/isothermal", groupbit, SPHCheck::CV);

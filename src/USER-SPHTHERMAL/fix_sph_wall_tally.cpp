@@ -128,7 +128,7 @@ void FixSPHWallTally::write_restart(FILE *fp)
 
 void FixSPHWallTally::restart(char *buf)
 {
-  energy = SPHCheck::read_restart_state(lmp, this, buf, RESTART_VERSION)[0];
+  energy = SPHCheck::read_restart_state(lmp, FLERR, this, buf, RESTART_VERSION)[0];
 }
 
 /* ---------------------------------------------------------------------- */

@@ -492,7 +492,7 @@ void PairSPHClearyHeat::write_restart_settings(FILE *fp)
 
 void PairSPHClearyHeat::read_restart_settings(FILE *fp)
 {
-  SPHCheck::read_restart_head(lmp, fp, "pair sph/cleary/heat", RESTART_VERSION);
+  SPHCheck::read_restart_head(lmp, FLERR, fp, "pair sph/cleary/heat", RESTART_VERSION);
   int length = 0;
   if (comm->me == 0) {
     utils::sfread(FLERR, &kernel_kind, sizeof(int), 1, fp, nullptr, error);

@@ -298,7 +298,7 @@ void PairSPHHarmonicVisc::write_restart_settings(FILE *fp)
 
 void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
 {
-  SPHCheck::read_restart_head(lmp, fp, "pair sph/harmonic/visc", RESTART_VERSION);
+  SPHCheck::read_restart_head(lmp, FLERR, fp, "pair sph/harmonic/visc", RESTART_VERSION);
   int ints[6];
   double doubles[9];
   if (comm->me == 0) {

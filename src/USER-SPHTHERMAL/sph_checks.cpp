@@ -232,23 +232,24 @@ void SPHCheck::write_restart_head(FILE *fp, int version)
 }
 
 // the errors for a head read as (tag, version); collective
-static void check_restart_head(LAMMPS *lmp, const int *head, const std::string &who,
-                               const char *what, int version)
+static void check_restart_head(LAMMPS *lmp, const char *file, int line, const int *head,
+                               const std::string &who, const char *what, int version)
 {
   if (head[0] != RESTART_TAG)
-    lmp->error->all(FLERR,
+    lmp->error->all(file, line,
                     "{}: the restart file's {} have no version head: it was written by a "
                     "USER-SPHTHERMAL older than this one, whose layout it cannot read; "
                     "start from a data file (write_data) of that run instead",
                     who, what);
   if (head[1] != version)
-    lmp->error->all(FLERR,
+    lmp->error->all(file, line,
                     "{}: the restart file's {} are of version {}, this build reads "
                     "version {}; start from a data file (write_data) of that run instead",
                     who, what, head[1], version);
 }
 
-void SPHCheck::read_restart_head(LAMMPS *lmp, FILE *fp, const char *who, int version)
+void SPHCheck::read_restart_head(LAMMPS *lmp, const char *file, int line, FILE *fp, const char *who,
+                                 int version)
 {
   int head[2] = {0, 0};
   if (lmp->comm->me == 0) {
@@ -258,7 +259,7 @@ void SPHCheck::read_restart_head(LAMMPS *lmp, FILE *fp, const char *who, int ver
       utils::sfread(FLERR, head + 1, sizeof(int), 1, fp, nullptr, lmp->error);
   }
   MPI_Bcast(head, 2, MPI_INT, 0, lmp->world);
-  check_restart_head(lmp, head, who, "settings", version);
+  check_restart_head(lmp, file, line, head, who, "settings", version);
 }
 
 void SPHCheck::write_restart_state(FILE *fp, int version, const double *state, int n)
@@ -269,13 +270,14 @@ void SPHCheck::write_restart_state(FILE *fp, int version, const double *state, i
   fwrite(state, sizeof(double), n, fp);
 }
 
-const double *SPHCheck::read_restart_state(LAMMPS *lmp, Fix *fix, const char *buf, int version)
+const double *SPHCheck::read_restart_state(LAMMPS *lmp, const char *file, int line, Fix *fix,
+                                           const char *buf, int version)
 {
   // every rank holds the same block, so the check needs no communication
   int head[2];
   memcpy(head, buf, sizeof(head));
-  check_restart_head(lmp, head, std::string("Fix ") + fix->style + " " + fix->id, "state data",
-                     version);
+  check_restart_head(lmp, file, line, head, std::string("Fix ") + fix->style + " " + fix->id,
+                     "state data", version);
   return (const double *) (buf + sizeof(head));
 }
 
@@ -295,19 +297,20 @@ std::string SPHCheck::unpack_name(const double *state, int &at)
 
 /* ---------------------------------------------------------------------- */
 
-void SPHCheck::group_of_kind(LAMMPS *lmp, Fix *fix, const std::vector<Fix *> &exclusive,
-                             bool every_ok, bool moving_ok)
+void SPHCheck::group_of_kind(LAMMPS *lmp, const char *file, int line, Fix *fix,
+                             const std::vector<Fix *> &exclusive, bool every_ok, bool moving_ok)
 {
   Error *error = lmp->error;
   const char *group = lmp->group->names[fix->igroup];
   const bigint count = group_count(lmp, fix->groupbit);
   if (count == 0)
-    error->all(FLERR, "Fix {} (style {}): group {} has no atoms", fix->id, fix->style, group);
+    error->all(file, line, "Fix {} (style {}): group {} has no atoms", fix->id, fix->style, group);
   if (!every_ok && count == lmp->atom->natoms)
-    error->all(FLERR,
-               "Fix {} (style {}): group {} holds every atom, so no particle is left for the medium "
-               "it bounds",
-               fix->id, fix->style, group);
+    error->all(
+        file, line,
+        "Fix {} (style {}): group {} holds every atom, so no particle is left for the medium "
+        "it bounds",
+        fix->id, fix->style, group);
 
   Modify *modify = lmp->modify;
   for (int i = 0; i < modify->nfix; i++) {
@@ -315,19 +318,19 @@ void SPHCheck::group_of_kind(LAMMPS *lmp, Fix *fix, const std::vector<Fix *> &ex
     if (other == fix) continue;
     const bool clash = std::find(exclusive.begin(), exclusive.end(), other) != exclusive.end();
     if (clash && groups_overlap(lmp, fix->groupbit, other->groupbit))
-      error->all(FLERR,
+      error->all(file, line,
                  "Fix {} (style {}) and fix {} (style {}) share atoms of groups {} and {}: a "
                  "particle can be one of them only",
                  fix->id, fix->style, other->id, other->style, group,
                  lmp->group->names[other->igroup]);
     if (SPHHub(lmp).fix_sph_moves(other) && groups_overlap(lmp, fix->groupbit, other->groupbit)) {
       if (!moving_ok)
-        error->all(FLERR,
+        error->all(file, line,
                    "Fix {} (style {}): atoms of group {} are also moved by fix {} (style sph); "
                    "integrate them with fix sph/stationary, or not at all",
                    fix->id, fix->style, group, other->id);
       else if (lmp->comm->me == 0)
-        error->warning(FLERR,
+        error->warning(file, line,
                        "Fix {} (style {}): atoms of group {} are also moved by fix {} (style sph)",
                        fix->id, fix->style, group, other->id);
     }

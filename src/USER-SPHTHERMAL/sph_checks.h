@@ -61,8 +61,8 @@ namespace SPHCheck {
   // atom (unless every_ok), or shares atoms with a fix of one of the styles
   // 'exclusive' (a particle can be one kind of wall only); integrated by
   // fix sph (moving with the flow) an error, or a warning when moving_ok
-  void group_of_kind(LAMMPS *lmp, Fix *fix, const std::vector<Fix *> &exclusive, bool every_ok,
-                     bool moving_ok);
+  void group_of_kind(LAMMPS *lmp, const char *file, int line, Fix *fix,
+                     const std::vector<Fix *> &exclusive, bool every_ok, bool moving_ok);
 
   // The atom an error names when several ranks may each find bad atoms: the
   // lowest ID, with up to four numbers its owner records of it (type,
@@ -99,7 +99,8 @@ namespace SPHCheck {
   // file only; read: collective, an error naming the style when the file
   // has no head (written before heads existed) or another version.
   void write_restart_head(FILE *fp, int version);
-  void read_restart_head(LAMMPS *lmp, FILE *fp, const char *who, int version);
+  void read_restart_head(LAMMPS *lmp, const char *file, int line, FILE *fp, const char *who,
+                         int version);
 
   // A fix's global restart state (n doubles) behind the same head, as the
   // one block LAMMPS keeps per fix. write: rank 0's file only; read: the
@@ -107,7 +108,8 @@ namespace SPHCheck {
   // ID); a head-less block holds at least one double, so its first 8 bytes
   // can be read as a head.
   void write_restart_state(FILE *fp, int version, const double *state, int n);
-  const double *read_restart_state(LAMMPS *lmp, Fix *fix, const char *buf, int version);
+  const double *read_restart_state(LAMMPS *lmp, const char *file, int line, Fix *fix,
+                                   const char *buf, int version);
 
   // A name (a group's) in such a state: its length, then its characters,
   // one per double. unpack: the name at state[at], 'at' moved past it.
