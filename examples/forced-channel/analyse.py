@@ -9,7 +9,9 @@ Printed and checked:
   error in % of T_w - T_in;
 - the bulk (mixing-cup) temperature along x and the local Nusselt number
   Nu = q D_h / (k (T_w - T_b)), D_h = 2 W, from the heat the wall's dummy
-  particles give to the fluid (walls = dirichlet), against the reference;
+  particles give to the fluid (walls = dirichlet), against the reference,
+  in the column at each station and as the mean of the columns within 2.5 m
+  of it (one column's heat at one frame carries the particles' noise);
 - the flow: u against the Poiseuille profile (in % of u_max) and the
   largest |v| (in % of u_max; 0 exactly for a laminar flow), and the flow
   rate (mean u of the fluid against the profile's mean).
@@ -178,9 +180,14 @@ def main():
           f"{t_bulk[-1]:.2f} K (reference {ref_bulk[-1]:.2f} K)")
     if nu is not None:
         ref_nu = channel_fv.nu_at(ref, centres)
+        # one column's heat at one frame carries the particles' noise: the
+        # mean over the columns within 2.5 m of the station shows how much
         for xs in (50.0, 100.0, 150.0, 195.0):
             k = int(xs / dx)
-            print(f"  Nu at x = {xs:5.0f} m: {nu[k]:.3f} (reference {ref_nu[k]:.3f})")
+            near = np.abs(centres - xs) <= 2.5
+            print(f"  Nu at x = {xs:5.0f} m: {nu[k]:.3f} (reference {ref_nu[k]:.3f}); over "
+                  f"{near.sum()} columns within 2.5 m: {nu[near].mean():.3f} "
+                  f"(reference {ref_nu[near].mean():.3f})")
 
     try:
         import matplotlib

@@ -19,7 +19,7 @@
 #                       in.exchanger's 0), CONDUCTION (as for in.channel)
 # Environment: LMP, PLUGIN, NP, OUT as in the other examples; N (particles
 # across), TEND (s), RE, KSK, SHIFT (yes|no), SHIFTC (C of the shift;
-# in.channel's 1), START (developed|rest),
+# in.channel's 0.5), START (developed|rest),
 # HOLD (yes|no: the fluid keeps its volume; in.channel's yes), CONTINUITY
 # (yes|no: the shift's continuity keyword; in.channel's no), NOSLIP
 # (surface|shepard: the walls' no-slip velocity; in.channel's surface),

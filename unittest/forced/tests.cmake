@@ -16,9 +16,10 @@ add_example_test(forced.validation.poiseuille_wendland_40 flow-poiseuille wendla
 # the heated channel at Re = 65.2, 10 across, to t = 800 s against the
 # finite-volume reference (measured with in.channel's defaults, the walls'
 # surface, the fluid's volume held, no background pressure, the consistent
-# conduction on the shifted fluid, fix sph/dt/reset's timestep: 1.67 % of
-# T_w - T_in at x = 5 m, 0.55 % at 50 m, 0.12 % at 100 m, |v| 0.024 % of
-# u_max, flow rate -0.10 %; with the plain conduction 1.77, 0.70, 0.16 %;
+# conduction on the shifted fluid, fix sph/dt/reset's timestep, the
+# shift's C = 0.5: 1.65 % of T_w - T_in at x = 5 m, 0.54 % at 50 m, 0.12 %
+# at 100 m, |v| 0.023 % of u_max, flow rate -0.10 %; with C = 1 1.67, 0.55,
+# 0.12 %; with the plain conduction (C = 1) 1.77, 0.70, 0.16 %;
 # with Adami's mean and the mean density held by the shift 2.70, 1.30,
 # 0.31 %, |v| 0.18 %, flow rate +2.84 %. The inlet ghosts held at T_inlet
 # gave 1.06 % at x = 5 m with Adami's mean here but 1.47 % at 20 across)
@@ -27,8 +28,9 @@ add_example_test(forced.validation.channel_re65_10 forced-channel quick forced_c
 # the thick-wall channel (10 m slabs, k_s = k) at Re = 65.2, 10 across, to
 # t = 800 s against the conjugate finite-volume reference, fluid and slabs
 # (measured with in.channel's defaults: 2.60 % of T_w - T_in at x = 5 m,
-# 0.20, 0.13, 0.12, 0.10 % at x = 50 to 195 m, |v| 0.024 % of u_max; with
-# the plain conduction 2.57, 0.21, 0.35, 0.27, 0.20 %; with Adami's mean
+# 0.20, 0.13, 0.12, 0.10 % at x = 50 to 195 m, |v| 0.023 % of u_max, the
+# same to 0.01 % with the shift's C = 1; with C = 1 and the plain
+# conduction 2.57, 0.21, 0.35, 0.27, 0.20 %; with Adami's mean
 # and the plain conduction 2.28, 1.13, 1.20, 0.87, 0.59 %. With the slab's outer
 # dummies at the fluid's conductivity instead of the slab's, 5 % at 20
 # across)
