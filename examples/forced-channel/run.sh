@@ -3,7 +3,7 @@
 # (tools/channel_fv.py); writes channel.png.
 #   ./run.sh            Re = 652, walls at 420 K, 20 particles across (the
 #                       paper's resolution), from the developed flow to
-#                       t = 150 s (2576 s of loop on one core, shared)
+#                       t = 150 s (1892 s of loop on one core, shared)
 #   ./run.sh quick      Re = 65.2, 10 across, to t = 800 s (the CI test
 #                       forced.validation.channel_re65_10, about 140 s; at
 #                       Re = 652 10 across is too coarse: the flow breaks up)

@@ -37,8 +37,9 @@ add_example_test(forced.validation.channel_re65_10 forced-channel quick forced_c
 add_example_test(forced.validation.thick_re65_10 forced-channel thick forced_thick_re65_10
   ENV N=10 RE=65.2 TEND=800 KSK=1 MAX_T_ERROR=3.0 MAX_VY=0.3)
 # Re = 652 stays laminar with delta-plus shifting (measured with in.channel's
-# defaults: |v| 0.020 % of u_max at t = 60 s, 0.023 % at most; with a
-# background pressure of 1 % 0.45 %; without shifting 24 %)
+# defaults, the shift's C = 0.5: |v| 0.0195 % of u_max at t = 60 s, 0.022 %
+# at most; with C = 1 0.020 and 0.023 %; with a background pressure of 1 %
+# 0.45 %; without shifting 24 %)
 sphthermal_test(forced.validation.laminar_652 LABELS validation
   COMMAND ${CMAKE_CURRENT_LIST_DIR}/laminar.sh ${SPHTHERMAL_LMP} ${SPHTHERMAL_PLUGIN}
           ${PYTHON_NUMPY} ${CMAKE_CURRENT_BINARY_DIR}/forced_laminar_652 0.2)
