@@ -38,6 +38,16 @@ CHANNEL = os.path.join(ROOT, "examples", "forced-channel", "in.channel")
 LAMINAR_VY = 1.0  # % of u_max
 
 
+def input_default(name):
+    """The value in.channel gives its variable 'name' (variable NAME index VALUE)."""
+    with open(CHANNEL) as f:
+        for line in f:
+            words = line.split()
+            if words[:3] == ["variable", name, "index"]:
+                return words[3]
+    raise SystemExit(f"in.channel has no variable {name}")
+
+
 def pieces(work):
     """The logs of the pieces, in order."""
     logs = glob.glob(os.path.join(work, "log.*"))
@@ -111,11 +121,12 @@ def summary(a):
                      f"{rho[rows][-1]:.7f} |")
     name = a.name or f"channel_{a.n}"
     given = "".join(f", {k} = {v}" for k, v in a.var)
+    shiftc = dict(a.var).get("shiftc", input_default("shiftc"))
     with open(os.path.join(a.out, name + ".md"), "w") as f:
         f.write(f"# Heated channel, Re = {a.re:g}, {a.n} particles across, run long\n\n")
         f.write("examples/forced-channel/in.channel with its defaults (the package's for every "
                 "numerical setting: c0 = 10 u_max, the timestep of fix sph/dt/reset, delta-plus "
-                "shifting, the fluid's volume held), from the developed flow"
+                f"shifting with C = {shiftc}, the fluid's volume held), from the developed flow"
                 + (f"; variables given: {given[2:]}" if given else "")
                 + f"; {len(pieces(a.work))} piece(s). Written by `bench/forced/channel_long.py`.\n\n")
         cost = (f"Loop time {seconds:.0f} s for {steps} steps ({1e3 * seconds / steps:.3f} ms "
