@@ -13,7 +13,7 @@
 #   ./run.sh exchanger  the parallel-flow and counter-flow heat exchangers
 #                       (in.exchanger, section 4.5), to TEND = 200 s with the
 #                       plate's cp lowered to 2.5 (the steady state does not
-#                       depend on it; PLATECP), about 1.5 hours each;
+#                       depend on it; PLATECP), about 1.6 hours each;
 #                       CONTINUITY, NOSLIP and HOLD as for in.channel (the
 #                       same defaults), PB (background pressure / rho0 c0^2,
 #                       in.exchanger's 0), CONDUCTION (as for in.channel)
