@@ -180,8 +180,6 @@ def main():
           f"{t_bulk[-1]:.2f} K (reference {ref_bulk[-1]:.2f} K)")
     if nu is not None:
         ref_nu = channel_fv.nu_at(ref, centres)
-        # one column's heat at one frame carries the particles' noise: the
-        # mean over the columns within 2.5 m of the station shows how much
         for xs in (50.0, 100.0, 150.0, 195.0):
             k = int(xs / dx)
             near = np.abs(centres - xs) <= 2.5
