@@ -22,11 +22,9 @@ import sys
 import numpy as np
 
 import channel_fv
-from sphthermal_tools.dump import read_frames
+from sphthermal_tools.dump import frame_times, read_frames
 
 W, LENGTH, T_C, T_H = 0.1, 2.0, 300.0, 800.0
-# in.exchanger's c0 = 10 u_max of the hot stream, u_max = f_x W^2 / (8 nu)
-C0 = 10.0 * 0.024 * W**2 / (8.0 * 0.15 / 1000.0)
 
 
 def streams(frame, n):
@@ -49,6 +47,11 @@ def streams(frame, n):
     return out
 
 
+def when(t):
+    """A frame's time, or that its dump has none (no dump_modify time yes)."""
+    return f"t = {t:7.2f} s" if t is not None else "no time"
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("parallel")
@@ -58,7 +61,6 @@ def main():
     p.add_argument("--max-outlet-error", type=float,
                    help="fail if an outlet temperature is off the reference by more than PCT %% of T_H - T_C")
     p.add_argument("--history", action="store_true", help="the outlet temperatures of every frame")
-    p.add_argument("--dtfac", type=float, default=0.15, help="the run's dtfac (for --history's times)")
     a = p.parse_args()
     dT = T_H - T_C
     ok = True
@@ -68,12 +70,11 @@ def main():
         frames = read_frames(dump)
         s = streams(frames[-1], a.n)
         if a.history:
-            # in.exchanger's dt: dtfac h / c0, h = 1.3 dx
-            dt = a.dtfac * 1.3 * (W / a.n) / C0
-            for frame in frames[1:]:
+            # the frames' times (ITEM: TIME, dump_modify time yes)
+            for frame, t in list(zip(frames, frame_times(dump)))[1:]:
                 f = streams(frame, a.n)
                 cold = f["cold"][-1] if arrangement == "parallel" else f["cold"][0]
-                print(f"{arrangement} t = {frame[0] * dt:7.1f} s: cold outlet {cold:.2f} K, "
+                print(f"{arrangement} {when(t)}: cold outlet {cold:.2f} K, "
                       f"hot outlet {f['hot'][-1]:.2f} K")
         ref_cold = channel_fv.bulk_at(ref, "cold", s["x"])
         ref_hot = channel_fv.bulk_at(ref, "hot", s["x"])
@@ -85,7 +86,7 @@ def main():
         eps, ref_eps = (cold_out - T_C) / dT, (ref_cold_out - T_C) / dT
         err_bulk = 100.0 * max(np.abs(s["cold"] - ref_cold).max(), np.abs(s["hot"] - ref_hot).max()) / dT
         err_out = 100.0 * max(abs(cold_out - ref_cold_out), abs(hot_out - ref_hot_out)) / dT
-        print(f"{arrangement} (step {s['step']}): cold outlet {cold_out:.2f} K (reference "
+        print(f"{arrangement} (step {s['step']}, {when(frame_times(dump)[-1])}): cold outlet {cold_out:.2f} K (reference "
               f"{ref_cold_out:.2f} K), hot outlet {hot_out:.2f} K ({ref_hot_out:.2f} K); "
               f"effectiveness {eps:.4f} ({ref_eps:.4f}); largest bulk error {err_bulk:.2f} %, "
               f"outlets {err_out:.2f} % of T_H - T_C")

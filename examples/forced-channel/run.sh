@@ -13,10 +13,11 @@
 #   ./run.sh exchanger  the parallel-flow and counter-flow heat exchangers
 #                       (in.exchanger, section 4.5), to TEND = 200 s with the
 #                       plate's cp lowered to 2.5 (the steady state does not
-#                       depend on it; PLATECP), about 1.6 hours each;
-#                       CONTINUITY, NOSLIP and HOLD as for in.channel (the
-#                       same defaults), PB (background pressure / rho0 c0^2,
-#                       in.exchanger's 0), CONDUCTION (as for in.channel)
+#                       depend on it; PLATECP), a frame every 25 s (the
+#                       outlets of each printed), about 1.6 hours each;
+#                       SHIFTC, CONTINUITY, NOSLIP, HOLD, EOS, FLOW,
+#                       CONDUCTION and DTRESET as for in.channel (the same
+#                       defaults)
 # Environment: LMP, PLUGIN, NP, OUT as in the other examples; N (particles
 # across), TEND (s), RE, KSK, SHIFT (yes|no), SHIFTC (C of the shift;
 # in.channel's 0.5), START (developed|rest),
@@ -38,12 +39,15 @@ if [ "${1:-}" = exchanger ]; then
   for arrangement in parallel counter; do
     rm -f "exchanger-$arrangement.dump"
     $run "$LMP" -in "$here/in.exchanger" -var plugin "$PLUGIN" -var arrangement "$arrangement" \
-      -var tend "${TEND:-200}" -var every "${TEND:-200}" -var platecp "${PLATECP:-2.5}" \
-      ${CONTINUITY:+-var continuity "$CONTINUITY"} ${NOSLIP:+-var noslip "$NOSLIP"} \
-      ${HOLD:+-var hold "$HOLD"} ${PB:+-var pb "$PB"} ${CONDUCTION:+-var conduction "$CONDUCTION"} -var out "exchanger-$arrangement" -log "log.exchanger-$arrangement" | grep -E "^u_max|Loop time"
+      -var tend "${TEND:-200}" -var every 25 -var platecp "${PLATECP:-2.5}" \
+      ${SHIFTC:+-var shiftc "$SHIFTC"} ${CONTINUITY:+-var continuity "$CONTINUITY"} \
+      ${NOSLIP:+-var noslip "$NOSLIP"} ${HOLD:+-var hold "$HOLD"} ${EOS:+-var eos "$EOS"} \
+      ${FLOW:+-var flow "$FLOW"} ${CONDUCTION:+-var conduction "$CONDUCTION"} \
+      ${DTRESET:+-var dtreset "$DTRESET"} -var out "exchanger-$arrangement" \
+      -log "log.exchanger-$arrangement" | grep -E "^u_max|^dt =|Loop time"
   done
   "$PYTHON" "$here/analyse_exchanger.py" exchanger-parallel.dump exchanger-counter.dump \
-    --png exchanger.png ${MAX_OUTLET_ERROR:+--max-outlet-error "$MAX_OUTLET_ERROR"}
+    --history --png exchanger.png ${MAX_OUTLET_ERROR:+--max-outlet-error "$MAX_OUTLET_ERROR"}
   exit 0
 fi
 
