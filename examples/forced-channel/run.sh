@@ -14,7 +14,7 @@
 #                       (in.exchanger, section 4.5), to TEND = 200 s with the
 #                       plate's cp lowered to 2.5 (the steady state does not
 #                       depend on it; PLATECP), a frame every 25 s (the
-#                       outlets of each printed), about 1.6 hours each;
+#                       outlets of each printed), about 1.4 hours each;
 #                       SHIFTC, CONTINUITY, NOSLIP, HOLD, EOS, FLOW,
 #                       CONDUCTION and DTRESET as for in.channel (the same
 #                       defaults)
