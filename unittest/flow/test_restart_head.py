@@ -41,6 +41,7 @@ fix into right sph/heatflow wall
 fix flux right sph/surface/flux flux 1.0 spacing 0.01
 fix shift moving sph/shift skillen 2.0
 fix inlet moving sph/inlet/temperature 1.0
+fix open opening sph/open inlet -y 0.02 fluid moving velocity 0.01
 compute mix moving sph/mixing top
 """
 
@@ -48,7 +49,7 @@ WRITE = """plugin load {plugin}
 units si
 dimension 2
 atom_style sph
-boundary p p p
+boundary p m p
 lattice sq 0.01
 region box block 0 8 0 6 -0.5 0.5
 create_box 1 box
@@ -56,12 +57,14 @@ create_atoms 1 box
 mass * 0.1
 region left block INF 0.5 INF INF INF INF
 region right block 6.5 INF INF INF INF INF
-region upper block INF INF 3 INF INF INF
+region upper block INF INF 1 INF INF INF
+region opening block 0.5 6.5 2 INF INF INF
 group wall region left
 group right region right
 group top region upper
+group opening region opening
 group fixed union wall right
-group moving subtract all fixed
+group moving subtract all fixed opening
 """ + FIXES + """sph/set all materials spacing 0.01 temperature 1.0
 pair_style hybrid/overlay sph/harmonic/visc wendland 0.03 sph/cleary/heat wendland 0.03
 pair_coeff * * sph/harmonic/visc
@@ -79,7 +82,8 @@ read_restart {path}
 # the style names whose data carry a head, as the file spells them
 STYLES = ["sph/harmonic/visc", "sph/cleary/heat", "sph/wall/adami", "sph/wall/dirichlet",
           "sph/dt/reset", "sph/heatflow", "sph/surface/flux", "sph/shift",
-          "sph/inlet/temperature", "SPH/MIXING/REFERENCE", "sph/materials", "sph/hold/volume"]
+          "sph/inlet/temperature", "SPH/MIXING/REFERENCE", "sph/materials", "sph/hold/volume",
+          "sph/open"]
 TAG = struct.pack("i", 0x53505448)
 
 

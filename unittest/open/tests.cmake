@@ -1,0 +1,20 @@
+# fix sph/open: inlets and outlets (included by unittest/CMakeLists.txt;
+# helpers: cmake/sphthermal_tests.cmake)
+set(open_input ${CMAKE_CURRENT_LIST_DIR}/in.open)
+sphthermal_lammps_test(open.uniform_stream ${open_input}
+  VARS check uniform scene stream inflow uniform LABELS validation PASS "uniform: atoms")
+foreach(inflow uniform parabolic)
+  sphthermal_lammps_test(open.balance.${inflow} ${open_input}
+    VARS check balance inflow ${inflow} LABELS validation PASS "balance: atoms in")
+endforeach()
+foreach(np 2 4)
+  sphthermal_state_test(open.mpi.np${np} same ${open_input}
+    ARGS --var check=state --var lo=-0.2 --var steps=600 NP ${np} RTOL 1e-10)
+endforeach()
+set(in_build_dir WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+# 200 steps: round-off grows to 1e-9 by 600 steps in the channel's corners
+sphthermal_state_test(open.restart same ${open_input} ${in_build_dir}
+  ARGS --var check=state --var lo=-0.2 --var steps=200 --var split=two --var2 split=yes
+       RTOL 1e-12)
+add_error_cases(open ${CMAKE_CURRENT_LIST_DIR}/errors.in)
+add_example_test(open.validation.channel_10 open-channel quick channel_10)
