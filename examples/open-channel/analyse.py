@@ -1,0 +1,109 @@
+#!/usr/bin/env python3
+"""The open channel of in.channel against Poiseuille's flow: from the frames
+of <out>.dump at t >= --from (averaged), per column of particles (width dx)
+along the channel:
+  - the profile's departure from u = 6 U y (H - y) / H^2, in % of its
+    centre speed 1.5 U: per column the rms over its particles; over the
+    developed part (x >= --developed, up to 0.5 H before the outlet) the
+    largest of the mean departures of the particles of each row of height
+    dx;
+  - the centre speed u_c (a quadratic through the particles within 0.2 H
+    of the centre line) and where it first reaches 99 % of 1.5 U: the
+    entrance length, printed next to the correlation of Durst, Ray, Unsal
+    and Bayoumi (J. Fluids Eng. 127 (2005) 1154-1160) for a plane channel,
+    L/H = (0.631^1.6 + (0.0442 Re)^1.6)^(1/1.6);
+  - the mean density, whose slope along the developed part gives the
+    pressure gradient c0^2 d rho / dx, against Poiseuille's 12 mu U / H^2.
+Fails (exit 1) when the developed profile departs by more than --max-profile
+% or the pressure gradient by more than --max-gradient %.
+
+  analyse.py channel.dump --re 20 --c0 2.0 [--from 80] [--developed 3]
+"""
+
+import argparse
+import sys
+
+import numpy as np
+
+from sphthermal_tools.dump import frame_times, read_frames
+
+U = 0.1
+H = 1.0
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("dump")
+    p.add_argument("--re", type=float, required=True)
+    p.add_argument("--c0", type=float, required=True)
+    p.add_argument("--from", dest="t_from", type=float, default=0.0,
+                   help="average the frames from this time on (default: the last frame only)")
+    p.add_argument("--developed", type=float, default=3.0,
+                   help="the developed part starts this far from the inlet (in H)")
+    p.add_argument("--max-profile", type=float, default=None)
+    p.add_argument("--max-gradient", type=float, default=None)
+    a = p.parse_args()
+
+    frames = [columns for _, columns in read_frames(a.dump)]
+    times = frame_times(a.dump)
+    chosen = [k for k, t in enumerate(times) if t >= a.t_from - 1e-9] if a.t_from > 0.0 else [-1]
+    x, y, vx, rho = (np.concatenate([frames[k][name] for k in chosen]) for name in ("x", "y", "vx", "c_rho"))
+    # the spacing: the lattice's, from the rows of the first frame
+    rows = np.unique(np.round(frames[0]["y"], 9))
+    dx = float(np.min(np.diff(rows)))
+    length = round((x.max() + 0.5 * dx) / dx) * dx
+    nu = U * H / a.re
+    umax = 1.5 * U
+    print(f"{len(chosen)} frame(s) from t = {times[chosen[0]]:.4g} s; dx = {dx:.4g} H, channel {length:.4g} H, "
+          f"Re = {a.re:g}")
+    print("     x/H   u_c/(1.5 U)   rms profile error (% of 1.5 U)   rho")
+    centres = np.arange(0.5 * dx, length, dx)
+    uc, worst, mean_rho = [], [], []
+    for xc in centres:
+        m = np.abs(x - xc) < 0.5 * dx
+        near = m & (np.abs(y - 0.5 * H) < 0.2 * H)
+        coef = np.polyfit(y[near] - 0.5 * H, vx[near], 2)
+        uc.append(coef[-1] / umax)
+        exact = 6.0 * U * y[m] * (H - y[m]) / H**2
+        worst.append(100.0 * np.sqrt(np.mean((vx[m] - exact) ** 2)) / umax)
+        mean_rho.append(np.mean(rho[m]))
+    uc, worst, mean_rho = np.array(uc), np.array(worst), np.array(mean_rho)
+    for k in range(0, len(centres), max(1, len(centres) // 24)):
+        print(f"  {centres[k]:6.3f}   {uc[k]:9.4f}   {worst[k]:10.2f}   {mean_rho[k]:.6f}")
+
+    reached = np.nonzero(uc >= 0.99)[0]
+    entrance = None
+    if len(reached):
+        k = reached[0]
+        entrance = centres[k] if k == 0 else np.interp(0.99, [uc[k - 1], uc[k]], [centres[k - 1], centres[k]])
+    durst = (0.631**1.6 + (0.0442 * a.re) ** 1.6) ** (1.0 / 1.6)
+    print(f"entrance length (u_c = 0.99 of 1.5 U): "
+          f"{'not reached' if entrance is None else f'{entrance:.3f} H'}; Durst et al. 2005: {durst:.3f} H")
+
+    developed = (centres >= a.developed) & (centres <= length - 0.5)
+    inside = (x >= a.developed - 0.5 * dx) & (x <= length - 0.5 + 0.5 * dx)
+    row = np.floor(y / dx).astype(int)
+    profile = 0.0
+    for r in np.unique(row[inside]):
+        k = inside & (row == r)
+        profile = max(profile, abs(np.mean(vx[k] - 6.0 * U * y[k] * (H - y[k]) / H**2)))
+    profile *= 100.0 / umax
+    slope = np.polyfit(centres[developed], mean_rho[developed], 1)[0]
+    gradient = -a.c0**2 * slope
+    exact_gradient = 12.0 * nu * U / H**2    # rho0 = 1
+    gradient_error = 100.0 * (gradient / exact_gradient - 1.0)
+    print(f"developed part (x >= {a.developed:g} H): profile within {profile:.2f} % of 1.5 U; "
+          f"centre speed {np.mean(uc[developed]):.4f} of 1.5 U; "
+          f"-dp/dx {gradient:.6g} against 12 mu U / H^2 = {exact_gradient:.6g} ({gradient_error:+.2f} %)")
+    failed = []
+    if a.max_profile is not None and not profile <= a.max_profile:
+        failed.append(f"developed profile off by {profile:.2f} % (limit {a.max_profile} %)")
+    if a.max_gradient is not None and not abs(gradient_error) <= a.max_gradient:
+        failed.append(f"pressure gradient off by {gradient_error:+.2f} % (limit {a.max_gradient} %)")
+    for f in failed:
+        print("FAIL:", f)
+    sys.exit(1 if failed else 0)
+
+
+if __name__ == "__main__":
+    main()
