@@ -72,10 +72,9 @@ static const char cmd[] = "fix sph/open";
 
 FixSPHOpen::FixSPHOpen(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), kind(INLET), axis(0), direction(1), position(0.0), fluid_group(-1),
-    fluidbit(0), profile(UNIFORM), speed(0.0), profile_axis(-1), profile_lo(0.0),
-    profile_hi(0.0), temperature_given(0), temperature(0.0), pressure_given(0), pressure(0.0),
-    length(0.0), spacing(0.0), kernel_kind(0), cutoff(0.0), materials(nullptr), pending_any(0),
-    extrapolated(0)
+    fluidbit(0), profile(UNIFORM), speed(0.0), profile_axis(-1), profile_lo(0.0), profile_hi(0.0),
+    temperature_given(0), temperature(0.0), pressure_given(0), pressure(0.0), length(0.0),
+    spacing(0.0), kernel_kind(0), cutoff(0.0), materials(nullptr), extrapolated(0)
 {
   if (!atom->rho_flag || !atom->esph_flag || !atom->cv_flag || !atom->vest_flag)
     error->all(FLERR, "Fix sph/open requires atom style sph (rho, esph, cv, vest)");
@@ -128,14 +127,13 @@ FixSPHOpen::FixSPHOpen(LAMMPS *lmp, int narg, char **arg) :
       velocity_given = 1;
       if (strcmp(arg[iarg + 1], "parabolic") == 0) {
         if (iarg + 5 >= narg)
-          error->all(FLERR,
-                     "Illegal {} command: velocity parabolic needs <U_max> <axis> <lo> <hi>",
+          error->all(FLERR, "Illegal {} command: velocity parabolic needs <U_max> <axis> <lo> <hi>",
                      cmd);
         profile = PARABOLIC;
         speed = SPHCompat::finite_numeric(lmp, FLERR, cmd, "U_max", arg[iarg + 2]);
         const std::string across = arg[iarg + 3];
-        if (across.size() != 1 || across[0] < 'x' || across[0] > 'z' ||
-            across[0] - 'x' == axis || (domain->dimension == 2 && across[0] == 'z'))
+        if (across.size() != 1 || across[0] < 'x' || across[0] > 'z' || across[0] - 'x' == axis ||
+            (domain->dimension == 2 && across[0] == 'z'))
           error->all(FLERR,
                      "Illegal {} command: velocity parabolic axis '{}' must be x, y or z, "
                      "across the flow (not along it, nor z in 2d)",
@@ -144,8 +142,8 @@ FixSPHOpen::FixSPHOpen(LAMMPS *lmp, int narg, char **arg) :
         profile_lo = SPHCompat::finite_numeric(lmp, FLERR, cmd, "lo", arg[iarg + 4]);
         profile_hi = SPHCompat::finite_numeric(lmp, FLERR, cmd, "hi", arg[iarg + 5]);
         if (!(profile_hi > profile_lo))
-          error->all(FLERR, "Illegal {} command: velocity parabolic needs lo < hi, not {} {}",
-                     cmd, arg[iarg + 4], arg[iarg + 5]);
+          error->all(FLERR, "Illegal {} command: velocity parabolic needs lo < hi, not {} {}", cmd,
+                     arg[iarg + 4], arg[iarg + 5]);
         iarg += 6;
       } else {
         profile = UNIFORM;
@@ -304,22 +302,23 @@ void FixSPHOpen::check_sides()
   }
   const char xyz[] = "xyz";
   if (bad.agree(lmp))
-    error->all(FLERR,
-               "Fix {} {}: {} atom {} at {} = {:.8g} lies on the {} side of the plane {} = {:.8g} (the "
-               "fluid flows {}{}: an inlet's buffer lies upstream of it, an outlet's "
-               "downstream)",
-               id, style, bad.info[0] == 0.0 ? "fluid" : "buffer", bad.tag, xyz[axis],
-               bad.info[1], bad.info[0] == 0.0 ? "buffer's" : "fluid's", xyz[axis], position,
-               direction > 0 ? '+' : '-', xyz[axis]);
+    error->all(
+        FLERR,
+        "Fix {} {}: {} atom {} at {} = {:.8g} lies on the {} side of the plane {} = {:.8g} (the "
+        "fluid flows {}{}: an inlet's buffer lies upstream of it, an outlet's "
+        "downstream)",
+        id, style, bad.info[0] == 0.0 ? "fluid" : "buffer", bad.tag, xyz[axis], bad.info[1],
+        bad.info[0] == 0.0 ? "buffer's" : "fluid's", xyz[axis], position, direction > 0 ? '+' : '-',
+        xyz[axis]);
   // inlet: copies enter a buffer length behind the plane; outlet: atoms
   // travel up to half a skin past the back before they are deleted
-  const double back =
-      position - direction * (kind == INLET ? length : -(length + neighbor->skin));
+  const double back = position - direction * (kind == INLET ? length : -(length + neighbor->skin));
   if (back < domain->boxlo[axis] - 1e-9 * length || back > domain->boxhi[axis] + 1e-9 * length)
-    error->all(FLERR,
-               "Fix {} {}: the buffer's back, at {} = {:.8g}, lies outside the box ({:.8g} to {:.8g}): "
-               "extend the box along {}",
-               id, style, xyz[axis], back, domain->boxlo[axis], domain->boxhi[axis], xyz[axis]);
+    error->all(
+        FLERR,
+        "Fix {} {}: the buffer's back, at {} = {:.8g}, lies outside the box ({:.8g} to {:.8g}): "
+        "extend the box along {}",
+        id, style, xyz[axis], back, domain->boxlo[axis], domain->boxhi[axis], xyz[axis]);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -381,8 +380,7 @@ void FixSPHOpen::setup(int /*vflag*/)
   double c0 = INFINITY;
   const std::vector<int> types = SPHCheck::group_types(lmp, groupbit);
   for (int t = 1; t <= atom->ntypes; t++)
-    if (materials->eos(t) && types[t])
-      c0 = fmin(c0, materials->eos(t)->c0);
+    if (materials->eos(t) && types[t]) c0 = fmin(c0, materials->eos(t)->c0);
   if (!(speed < c0))
     error->all(FLERR,
                "Fix {} {}: the inflow speed {} is not below the buffer's speed of sound {}: "
@@ -474,8 +472,8 @@ void FixSPHOpen::extrapolate()
       const double p = pressure_given ? pressure : eos->p_background;
       rho[i] = sphe_density_at(eos, p, particles.temperature(i));
       if (!(rho[i] > 0.0) || !std::isfinite(rho[i]))
-        SPHCheck::nonfinite(lmp, FLERR, "Fix sph/open", "density at the outlet pressure", i,
-                            rho[i], fmt::format("pressure {} and its equation of state", p));
+        SPHCheck::nonfinite(lmp, FLERR, "Fix sph/open", "density at the outlet pressure", i, rho[i],
+                            fmt::format("pressure {} and its equation of state", p));
       double value[4];
       int found = 1;
       for (int f = 0; f < 4; f++) {
@@ -704,8 +702,8 @@ void FixSPHOpen::write_restart(FILE *fp)
   state.push_back(total / RECORD);
   const size_t head = state.size();
   state.resize(head + total);
-  MPI_Gatherv(pending.data(), mine, MPI_DOUBLE, state.data() + head, counts.data(),
-              offsets.data(), MPI_DOUBLE, 0, world);
+  MPI_Gatherv(pending.data(), mine, MPI_DOUBLE, state.data() + head, counts.data(), offsets.data(),
+              MPI_DOUBLE, 0, world);
   if (comm->me == 0) SPHCheck::write_restart_state(fp, RESTART_VERSION, state.data(), state.size());
 }
 

@@ -54,9 +54,9 @@ class FixSPHOpen : public Fix {
   enum Kind { INLET, OUTLET };
   enum Profile { UNIFORM, PARABOLIC };
   int kind;
-  int axis;            // 0, 1, 2: the plane's normal
-  int direction;       // +1 or -1: the flow's direction along the axis
-  double position;     // the plane's coordinate along the axis
+  int axis;           // 0, 1, 2: the plane's normal
+  int direction;      // +1 or -1: the flow's direction along the axis
+  double position;    // the plane's coordinate along the axis
   int fluid_group, fluidbit;
   // inlet: the velocity profile and temperature
   int profile;
@@ -69,7 +69,7 @@ class FixSPHOpen : public Fix {
   int pressure_given;
   double pressure;
 
-  double length;       // the buffer's depth behind the plane (a multiple of the spacing)
+  double length;    // the buffer's depth behind the plane (a multiple of the spacing)
   double spacing;
   int kernel_kind;
   double cutoff;
@@ -78,7 +78,6 @@ class FixSPHOpen : public Fix {
   // entering copies waiting for the next neighbour build (inlet), packed
   // as records of RECORD values
   std::vector<double> pending;
-  int pending_any;
   int extrapolated;    // the buffer's quantities were found at a set-up before
   // since the first run (kept in restart files): atoms, mass, momentum (3)
   // and thermal energy that crossed the plane into the fluid (inlet) or out
@@ -86,10 +85,7 @@ class FixSPHOpen : public Fix {
   double crossed[6];
 
   // signed distance of a point downstream of the plane
-  double downstream_of_plane(const double *x) const
-  {
-    return direction * (x[axis] - position);
-  }
+  double downstream_of_plane(const double *x) const { return direction * (x[axis] - position); }
   void inlet_velocity(const double *x, double *v) const;
   void find_length();
   void check_sides();
