@@ -15,7 +15,8 @@ along the channel:
   - the mean density, whose slope along the developed part gives the
     pressure gradient c0^2 d rho / dx, against Poiseuille's 12 mu U / H^2.
 Fails (exit 1) when the developed profile departs by more than --max-profile
-% or the pressure gradient by more than --max-gradient %.
+%, the pressure gradient by more than --max-gradient % or the entrance
+length exceeds --max-entrance (a parabolic inflow enters developed).
 
   analyse.py channel.dump --re 20 --c0 2.0 [--from 80] [--developed 3]
 """
@@ -31,6 +32,33 @@ U = 0.1
 H = 1.0
 
 
+def plot(path, centres, uc, x, y, vx, inside, dx, re):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
+    left.plot(centres, uc, "o-", ms=3, label="SPH")
+    left.axhline(0.99, color="grey", lw=0.8, ls="--", label="99 %")
+    left.set_xlabel("x / H")
+    left.set_ylabel("centre speed / 1.5 U")
+    left.set_title(f"along the channel, Re = {re:g}")
+    left.legend()
+    rows = np.floor(y[inside] / dx).astype(int)
+    mean_y = [np.mean(y[inside][rows == r]) for r in np.unique(rows)]
+    mean_u = [np.mean(vx[inside][rows == r]) for r in np.unique(rows)]
+    s = np.linspace(0.0, H, 101)
+    right.plot(6.0 * U * s * (H - s) / H**2 / (1.5 * U), s, "k-", label="Poiseuille")
+    right.plot(np.array(mean_u) / (1.5 * U), mean_y, "o", ms=4, label="SPH, mean of each row")
+    right.set_xlabel("u / 1.5 U")
+    right.set_ylabel("y / H")
+    right.set_title("developed part")
+    right.legend()
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    print(f"wrote {path}")
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("dump")
@@ -42,6 +70,9 @@ def main():
                    help="the developed part starts this far from the inlet (in H)")
     p.add_argument("--max-profile", type=float, default=None)
     p.add_argument("--max-gradient", type=float, default=None)
+    p.add_argument("--png", help="write the centre speed along the channel and the developed profile here")
+    p.add_argument("--max-entrance", type=float, default=None,
+                   help="fail when the centre speed reaches 99 %% of 1.5 U later than this (in H)")
     a = p.parse_args()
 
     frames = [columns for _, columns in read_frames(a.dump)]
@@ -95,11 +126,15 @@ def main():
     print(f"developed part (x >= {a.developed:g} H): profile within {profile:.2f} % of 1.5 U; "
           f"centre speed {np.mean(uc[developed]):.4f} of 1.5 U; "
           f"-dp/dx {gradient:.6g} against 12 mu U / H^2 = {exact_gradient:.6g} ({gradient_error:+.2f} %)")
+    if a.png:
+        plot(a.png, centres, uc, x, y, vx, inside, dx, a.re)
     failed = []
     if a.max_profile is not None and not profile <= a.max_profile:
         failed.append(f"developed profile off by {profile:.2f} % (limit {a.max_profile} %)")
     if a.max_gradient is not None and not abs(gradient_error) <= a.max_gradient:
         failed.append(f"pressure gradient off by {gradient_error:+.2f} % (limit {a.max_gradient} %)")
+    if a.max_entrance is not None and not (entrance is not None and entrance <= a.max_entrance):
+        failed.append(f"entrance length {entrance} H (limit {a.max_entrance} H)")
     for f in failed:
         print("FAIL:", f)
     sys.exit(1 if failed else 0)
