@@ -77,14 +77,8 @@ FixSPHInletTemperature::FixSPHInletTemperature(LAMMPS *lmp, int narg, char **arg
     if (strcmp(arg[iarg], "flow") == 0) {
       if (iarg + 1 >= narg)
         error->all(FLERR, "Illegal {} command: missing value after 'flow'", cmd);
-      const char *dir = arg[iarg + 1];
-      if (strlen(dir) != 2 || (dir[0] != '+' && dir[0] != '-') || dir[1] < 'x' || dir[1] > 'z')
-        error->all(FLERR,
-                   "Illegal {} command: flow '{}' must be one of +x -x +y -y +z -z (the "
-                   "direction the fluid leaves the box in)",
-                   cmd, dir);
-      downstream = (dir[0] == '+') ? 1 : -1;
-      axis = dir[1] - 'x';
+      SPHCompat::signed_axis(lmp, FLERR, cmd, "flow", arg[iarg + 1],
+                             "the direction the fluid leaves the box in", axis, downstream);
       iarg += 2;
     } else if (strcmp(arg[iarg], "ghosts") == 0) {
       if (iarg + 1 >= narg)
@@ -102,8 +96,6 @@ FixSPHInletTemperature::FixSPHInletTemperature(LAMMPS *lmp, int narg, char **arg
     } else
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
   }
-  if (domain->dimension == 2 && axis == 2)
-    error->all(FLERR, "Illegal {} command: flow along z in a 2d simulation", cmd);
 
   scalar_flag = 1;
   extscalar = 1;

@@ -89,16 +89,8 @@ FixSPHOpen::FixSPHOpen(LAMMPS *lmp, int narg, char **arg) :
     kind = OUTLET;
   else
     error->all(FLERR, "Illegal {} command: '{}' must be inlet or outlet", cmd, arg[3]);
-  const char *dir = arg[4];
-  if (strlen(dir) != 2 || (dir[0] != '+' && dir[0] != '-') || dir[1] < 'x' || dir[1] > 'z')
-    error->all(FLERR,
-               "Illegal {} command: direction '{}' must be one of +x -x +y -y +z -z (the "
-               "direction the fluid flows in)",
-               cmd, dir);
-  direction = (dir[0] == '+') ? 1 : -1;
-  axis = dir[1] - 'x';
-  if (domain->dimension == 2 && axis == 2)
-    error->all(FLERR, "Illegal {} command: flow along z in a 2d simulation", cmd);
+  SPHCompat::signed_axis(lmp, FLERR, cmd, "direction", arg[4], "the direction the fluid flows in",
+                         axis, direction);
   position = SPHCompat::finite_numeric(lmp, FLERR, cmd, "position", arg[5]);
   if (strcmp(arg[6], "fluid") != 0)
     error->all(FLERR, "Illegal {} command: expected 'fluid <group-ID>' after the position", cmd);

@@ -239,6 +239,25 @@ namespace SPHCompat {
     return number;
   }
 
+  // a direction along a box axis, '+x' .. '-z' (e.g. a flow's): its axis
+  // (0, 1, 2) and sign (+1, -1); z refused in a 2d simulation. 'what' names
+  // the argument, 'meaning' says what the direction is, in the message
+  inline void signed_axis(LAMMPS *lmp, const char *file, int line, const std::string &command,
+                          const char *what, const char *value, const char *meaning, int &axis,
+                          int &sign)
+  {
+    if (strlen(value) != 2 || (value[0] != '+' && value[0] != '-') || value[1] < 'x' ||
+        value[1] > 'z')
+      lmp->error->all(file, line,
+                      "Illegal {} command: {} '{}' must be one of +x -x +y -y +z -z ({})",
+                      command, what, value, meaning);
+    sign = (value[0] == '+') ? 1 : -1;
+    axis = value[1] - 'x';
+    if (lmp->domain->dimension == 2 && axis == 2)
+      lmp->error->all(file, line, "Illegal {} command: {} along z in a 2d simulation", command,
+                      what);
+  }
+
 }    // namespace SPHCompat
 }    // namespace LAMMPS_NS
 
