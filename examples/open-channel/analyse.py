@@ -11,7 +11,8 @@ along the channel:
     of the centre line) and where it first reaches 99 % of 1.5 U: the
     entrance length, printed next to the correlation of Durst, Ray, Unsal
     and Bayoumi (J. Fluids Eng. 127 (2005) 1154-1160) for a plane channel,
-    L/H = (0.631^1.6 + (0.0442 Re)^1.6)^(1/1.6);
+    L/H = (0.631^1.6 + (0.0442 Re)^1.6)^(1/1.6); with --reference, u_c
+    against our own solution of the entrance flow (tools/channel_entrance.py);
   - the mean density, whose slope along the developed part gives the
     pressure gradient c0^2 d rho / dx, against Poiseuille's 12 mu U / H^2.
 Fails (exit 1) when the developed profile departs by more than --max-profile
@@ -32,13 +33,15 @@ U = 0.1
 H = 1.0
 
 
-def plot(path, centres, uc, x, y, vx, inside, dx, re):
+def plot(path, centres, uc, x, y, vx, inside, dx, re, reference):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
     left.plot(centres, uc, "o-", ms=3, label="SPH")
+    if reference is not None:
+        left.plot(reference[:, 0], reference[:, 1], "k-", label="tools/channel_entrance.py")
     left.axhline(0.99, color="grey", lw=0.8, ls="--", label="99 %")
     left.set_xlabel("x / H")
     left.set_ylabel("centre speed / 1.5 U")
@@ -71,6 +74,8 @@ def main():
     p.add_argument("--max-profile", type=float, default=None)
     p.add_argument("--max-gradient", type=float, default=None)
     p.add_argument("--png", help="write the centre speed along the channel and the developed profile here")
+    p.add_argument("--reference", help="x and u_c / 1.5 U of tools/channel_entrance.py --write, for the "
+                   "entrance region (uniform inflow): the difference is printed, not checked")
     p.add_argument("--max-entrance", type=float, default=None,
                    help="fail when the centre speed reaches 99 %% of 1.5 U later than this (in H)")
     a = p.parse_args()
@@ -107,6 +112,16 @@ def main():
     if len(reached):
         k = reached[0]
         entrance = centres[k] if k == 0 else np.interp(0.99, [uc[k - 1], uc[k]], [centres[k - 1], centres[k]])
+    reference = None
+    if a.reference:
+        reference = np.loadtxt(a.reference, ndmin=2)
+        near = centres <= 3.0
+        ref = np.interp(centres[near], reference[:, 0], reference[:, 1])
+        worst = np.argmax(np.abs(uc[near] - ref))
+        shown = ", ".join(f"{xs:g} H {np.interp(xs, centres, uc):.3f} ({np.interp(xs, reference[:, 0], reference[:, 1]):.3f})"
+                          for xs in (0.1, 0.25, 0.5, 0.75, 1.0, 1.5))
+        print(f"centre speed against the reference {a.reference} (x <= 3 H): largest difference "
+              f"{uc[near][worst] - ref[worst]:+.3f} of 1.5 U at x = {centres[near][worst]:.3f} H; {shown}")
     durst = (0.631**1.6 + (0.0442 * a.re) ** 1.6) ** (1.0 / 1.6)
     print(f"entrance length (u_c = 0.99 of 1.5 U): "
           f"{'not reached' if entrance is None else f'{entrance:.3f} H'}; Durst et al. 2005: {durst:.3f} H")
@@ -127,7 +142,7 @@ def main():
           f"centre speed {np.mean(uc[developed]):.4f} of 1.5 U; "
           f"-dp/dx {gradient:.6g} against 12 mu U / H^2 = {exact_gradient:.6g} ({gradient_error:+.2f} %)")
     if a.png:
-        plot(a.png, centres, uc, x, y, vx, inside, dx, a.re)
+        plot(a.png, centres, uc, x, y, vx, inside, dx, a.re, reference)
     failed = []
     if a.max_profile is not None and not profile <= a.max_profile:
         failed.append(f"developed profile off by {profile:.2f} % (limit {a.max_profile} %)")

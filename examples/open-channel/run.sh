@@ -30,6 +30,7 @@ for n in $sizes; do
     eval limits=\$limits_$inflow
     png=""
     [ "${1:-}" = quick ] || png="--png $name.png"
-    "$PYTHON" "$here/analyse.py" $name.dump --re 20 --c0 2.0 --from $from $limits $png | tail -3
+    if [ $inflow = uniform ]; then png="$png --reference $here/entrance_re20.txt"; fi
+    "$PYTHON" "$here/analyse.py" $name.dump --re 20 --c0 2.0 --from $from $limits $png | tail -4
   done
 done
