@@ -16,8 +16,9 @@ along the channel:
   - the mean density, whose slope along the developed part gives the
     pressure gradient c0^2 d rho / dx, against Poiseuille's 12 mu U / H^2.
 Fails (exit 1) when the developed profile departs by more than --max-profile
-%, the pressure gradient by more than --max-gradient % or the entrance
-length exceeds --max-entrance (a parabolic inflow enters developed).
+%, the pressure gradient by more than --max-gradient %, the entrance
+length exceeds --max-entrance (a parabolic inflow enters developed) or the
+centre speed departs from --reference by more than --max-reference.
 
   analyse.py channel.dump --re 20 --c0 2.0 [--from 80] [--developed 3]
 """
@@ -75,7 +76,9 @@ def main():
     p.add_argument("--max-gradient", type=float, default=None)
     p.add_argument("--png", help="write the centre speed along the channel and the developed profile here")
     p.add_argument("--reference", help="x and u_c / 1.5 U of tools/channel_entrance.py --write, for the "
-                   "entrance region (uniform inflow): the difference is printed, not checked")
+                   "entrance region (uniform inflow)")
+    p.add_argument("--max-reference", type=float, default=None,
+                   help="fail when u_c departs from --reference by more than this (of 1.5 U) up to 3 H")
     p.add_argument("--max-entrance", type=float, default=None,
                    help="fail when the centre speed reaches 99 %% of 1.5 U later than this (in H)")
     a = p.parse_args()
@@ -113,11 +116,13 @@ def main():
         k = reached[0]
         entrance = centres[k] if k == 0 else np.interp(0.99, [uc[k - 1], uc[k]], [centres[k - 1], centres[k]])
     reference = None
+    reference_error = None
     if a.reference:
         reference = np.loadtxt(a.reference, ndmin=2)
         near = centres <= 3.0
         ref = np.interp(centres[near], reference[:, 0], reference[:, 1])
         worst = np.argmax(np.abs(uc[near] - ref))
+        reference_error = abs(uc[near][worst] - ref[worst])
         shown = ", ".join(f"{xs:g} H {np.interp(xs, centres, uc):.3f} ({np.interp(xs, reference[:, 0], reference[:, 1]):.3f})"
                           for xs in (0.1, 0.25, 0.5, 0.75, 1.0, 1.5))
         print(f"centre speed against the reference {a.reference} (x <= 3 H): largest difference "
@@ -150,6 +155,8 @@ def main():
         failed.append(f"pressure gradient off by {gradient_error:+.2f} % (limit {a.max_gradient} %)")
     if a.max_entrance is not None and not (entrance is not None and entrance <= a.max_entrance):
         failed.append(f"entrance length {entrance} H (limit {a.max_entrance} H)")
+    if a.max_reference is not None and not (reference_error is not None and reference_error <= a.max_reference):
+        failed.append(f"centre speed {reference_error} of 1.5 U from the reference (limit {a.max_reference})")
     for f in failed:
         print("FAIL:", f)
     sys.exit(1 if failed else 0)

@@ -2,24 +2,30 @@
 # Flow through a channel with a true inlet and outlet (fix sph/open), at
 # Re = 20, against Poiseuille's flow: the developed profile and pressure
 # gradient downstream, from a parabolic and from a uniform inflow.
-#   ./run.sh          20 and 40 particles across H, both inflows, to t = 60 s, PNGs (about 4 min)
+#   ./run.sh          20 and 40 particles across H, both inflows, to t = 60 s, PNGs (about 6 min)
 #   ./run.sh quick    10 across, both inflows, to t = 30 s (the CI test open.validation.channel_10, 5 s)
 # Environment: LMP, PLUGIN, NP (MPI ranks), OUT (default ./out), PYTHON.
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../common.sh"
 
+# measured (README.md), shifted as in.channel: from a parabolic inflow the
+# profile within 1.3-2.5 % and developed from the first column (0.05 H;
+# 1.0-1.4 H from a uniform one), -dp/dx +0.5 to +4.4 % at 20 and 40 across
+# (its rms from one frame to the next 15-21 %; at 10 across 20-47 %: not
+# checked there); from a uniform inflow the centre speed within 0.017-0.023
+# of 1.5 U of tools/channel_entrance.py's (0.06-0.10 unshifted) and the
+# profile within 1.5-2.9 %
 case "${1:-}" in
-  quick) sizes=10; tend=30; from=15 ;;
-  *) sizes="20 40"; tend=60; from=30 ;;
+  quick)
+    sizes=10; tend=30; from=15
+    limits_parabolic="--max-profile 3.0 --max-entrance 0.3"
+    limits_uniform="--max-profile 4.0 --max-reference 0.05" ;;
+  *)
+    sizes="20 40"; tend=60; from=30
+    limits_parabolic="--max-profile 3.0 --max-entrance 0.3 --max-gradient 6"
+    limits_uniform="--max-profile 3.5 --max-reference 0.05" ;;
 esac
-# measured (README.md): from a parabolic inflow the profile within 0.49-1.21 %
-# and -dp/dx within 1.1 %, the centre speed developed from the first column
-# (within 0.05 H; 0.5-0.7 H from a uniform inflow); from a uniform one the profile within 1.32-2.41 %,
-# -dp/dx within 10 % only (the inlet's corners send pressure waves down the
-# channel: 7-34 % rms from one frame to the next), so not checked
-limits_parabolic="--max-profile 2.0 --max-gradient 3 --max-entrance 0.3"
-limits_uniform="--max-profile 3.0"
 for n in $sizes; do
   for inflow in parabolic uniform; do
     name=channel_${inflow}_$n
@@ -31,6 +37,12 @@ for n in $sizes; do
     png=""
     [ "${1:-}" = quick ] || png="--png $name.png"
     if [ $inflow = uniform ]; then png="$png --reference $here/entrance_re20.txt"; fi
-    "$PYTHON" "$here/analyse.py" $name.dump --re 20 --c0 2.0 --from $from $limits $png | tail -4
+    # the checks' verdict is the script's, not tail's
+    ok=0
+    "$PYTHON" "$here/analyse.py" $name.dump --re 20 --c0 2.0 --from $from $limits $png \
+      > $name.analysis || ok=1
+    grep -v "^ *[0-9]" $name.analysis | grep -v "x/H" | tail -5
+    [ $ok -eq 0 ] || failed=1
   done
 done
+exit ${failed:-0}
