@@ -325,32 +325,45 @@ def _merit(grid, r):
     return float(np.sqrt(np.mean(s * s)))
 
 
-def newton(grid, q, ra, pr, tol=1e-9, maxit=30, verbose=False):
-    """Steady Newton iteration from q; returns (q, iterations)."""
+def damped_newton(residual, merit, step_norm, q, where, tol, maxit, floor, verbose=False):
+    """Newton's method with a backtracking line search (Armijo on the merit,
+    steps halved down to 1/64): residual(q, jacobian) returns (r, J), J None
+    without the Jacobian; merit(r) the norm searched on; step_norm(q, dq)
+    the update's size that stops the iteration below tol at a full step;
+    floor a merit accepted whatever the decrease; where names the case in
+    the messages. Returns (q, iterations). Shared by the MAC solvers here
+    and in channel_entrance.py."""
     q = q.copy()
-    r, J = grid.residual(q, ra, pr)
-    m = _merit(grid, r)
+    r, J = residual(q, True)
+    m = merit(r)
     for it in range(1, maxit + 1):
         dq = _factor(J).solve(-r)
         lam = 1.0
         while True:
             qn = q + lam * dq
-            rn, _ = grid.residual(qn, ra, pr, jacobian=False)
-            mn = _merit(grid, rn)
-            if np.isfinite(mn) and (mn <= (1.0 - 1e-4 * lam) * m or mn < 1e-9):
+            rn, _ = residual(qn, False)
+            mn = merit(rn)
+            if np.isfinite(mn) and (mn <= (1.0 - 1e-4 * lam) * m or mn < floor):
                 break
             lam *= 0.5
             if lam < 1.0 / 64:
-                raise NoConvergence(f"line search failed at Ra {ra:g}, N {grid.n}")
-        step = _norms(grid, q, lam * dq)
+                raise NoConvergence(f"line search failed at {where}")
+        step = step_norm(q, lam * dq)
         q, m = qn, mn
         if verbose:
-            print(f"#   N {grid.n} Ra {ra:g} it {it}: step {step:.2e} damping {lam:g} residual {m:.2e}",
+            print(f"#   {where} it {it}: step {step:.2e} damping {lam:g} residual {m:.2e}",
                   file=sys.stderr)
         if lam == 1.0 and step < tol:
             return q, it
-        r, J = grid.residual(q, ra, pr)
-    raise NoConvergence(f"no convergence in {maxit} Newton iterations at Ra {ra:g}, N {grid.n}")
+        r, J = residual(q, True)
+    raise NoConvergence(f"no convergence in {maxit} Newton iterations at {where}")
+
+
+def newton(grid, q, ra, pr, tol=1e-9, maxit=30, verbose=False):
+    """Steady Newton iteration from q; returns (q, iterations)."""
+    return damped_newton(lambda x, jac: grid.residual(x, ra, pr, jacobian=jac),
+                         lambda r: _merit(grid, r), lambda x, dx: _norms(grid, x, dx), q,
+                         f"Ra {ra:g}, N {grid.n}", tol, maxit, 1e-9, verbose)
 
 
 def _continuation(grid, q, ra_from, ra, pr, tol, verbose):

@@ -64,11 +64,10 @@ import time
 
 import numpy as np
 import scipy.sparse as sp
-import scipy.sparse.linalg as spla
 from scipy.interpolate import RegularGridInterpolator
 from scipy.optimize import brentq
 
-from cavity_fv import Axis, NoConvergence, extrapolate
+from cavity_fv import Axis, NoConvergence, damped_newton, extrapolate
 
 U_C_DEVELOPED = 1.5          # Poiseuille's centre speed / U
 STATIONS = (0.1, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0)     # x / H of the summary line
@@ -272,10 +271,6 @@ class Grid:
 
 # ------------------------------------------------------------------ solver
 
-def _factor(J):
-    return spla.splu(J.tocsc(), permc_spec="COLAMD", options={"SymmetricMode": False})
-
-
 def _merit(grid, r):
     """RMS of the residuals per unit control-volume area."""
     o = grid.offsets
@@ -284,32 +279,15 @@ def _merit(grid, r):
 
 
 def newton(grid, q, re, u_in, tol=1e-10, maxit=30, verbose=False):
-    """Steady Newton iteration from q; returns (q, iterations)."""
-    q = q.copy()
+    """Steady Newton iteration from q (cavity_fv's damped Newton); returns (q, iterations)."""
     o = grid.offsets
-    r, J = grid.residual(q, re, u_in)
-    m = _merit(grid, r)
-    for it in range(1, maxit + 1):
-        dq = _factor(J).solve(-r)
-        lam = 1.0
-        while True:
-            qn = q + lam * dq
-            rn, _ = grid.residual(qn, re, u_in, jacobian=False)
-            mn = _merit(grid, rn)
-            if np.isfinite(mn) and (mn <= (1.0 - 1e-4 * lam) * m or mn < 1e-11):
-                break
-            lam *= 0.5
-            if lam < 1.0 / 64:
-                raise NoConvergence(f"line search failed at Re {re:g}, {grid.nx} x {grid.ny}")
-        step = np.abs(lam * dq[o[0]:o[2]]).max() / (np.abs(q[o[0]:o[2]]).max() + 1.0)
-        q, m = qn, mn
-        if verbose:
-            print(f"#   {grid.nx} x {grid.ny} Re {re:g} it {it}: step {step:.2e} damping {lam:g} "
-                  f"residual {m:.2e}", file=sys.stderr)
-        if lam == 1.0 and step < tol:
-            return q, it
-        r, J = grid.residual(q, re, u_in)
-    raise NoConvergence(f"no convergence in {maxit} Newton iterations at Re {re:g}, {grid.nx} x {grid.ny}")
+
+    def step_norm(x, dx):
+        return np.abs(dx[o[0]:o[2]]).max() / (np.abs(x[o[0]:o[2]]).max() + 1.0)
+
+    return damped_newton(lambda x, jac: grid.residual(x, re, u_in, jacobian=jac),
+                         lambda r: _merit(grid, r), step_norm, q,
+                         f"Re {re:g}, {grid.nx} x {grid.ny}", tol, maxit, 1e-11, verbose)
 
 
 def _steady(grid, re, u_in, tol, start=None, verbose=False):
