@@ -10,9 +10,9 @@
    section 3: buffer particles, their quantities prescribed or
    extrapolated from the fluid at their mirror points across the open
    boundary, particles created and deleted as they cross it).
-   - Each step, before the forces: the inlet buffer's velocity and
-     temperature are the prescribed ones and its density is extrapolated
-     to first order, rho_b = rho_g + grad rho_g . (r_b - r_g), from the
+   - The inlet buffer has the prescribed velocity and temperature (set at
+     each run's set-up); each step, before the forces, its density is
+     extrapolated to first order, rho_b = rho_g + grad rho_g . (r_b - r_g), from the
      fluid at the mirror point g (Liu & Liu's corrected interpolation,
      sph_interpolation.h); the outlet buffer's density is the equation of
      state's at the prescribed pressure, its velocity and temperature the
@@ -330,8 +330,9 @@ void FixSPHOpen::inlet_velocity(const double *x, double *v) const
 }
 
 /* ----------------------------------------------------------------------
-   before the first force: the sides checked, the inlet's velocity set (so
-   that an 'auto' speed of sound sees it)
+   before the first force: the sides checked, the inlet's prescribed
+   velocity (so that an 'auto' speed of sound sees it) and temperature set;
+   nothing changes them during the run, and the entering copies carry them
 ------------------------------------------------------------------------- */
 
 void FixSPHOpen::setup_pre_exchange()
@@ -348,6 +349,7 @@ void FixSPHOpen::setup_pre_exchange()
     if (!(atom->mask[i] & groupbit)) continue;
     inlet_velocity(atom->x[i], atom->v[i]);
     for (int k = 0; k < 3; k++) atom->vest[i][k] = atom->v[i][k];
+    if (temperature_given) atom->esph[i] = atom->cv[i] * temperature;
   }
 }
 
@@ -360,9 +362,11 @@ void FixSPHOpen::setup_pre_exchange()
 
 void FixSPHOpen::setup_pre_force(int /*vflag*/)
 {
-  if (!extrapolated) extrapolate();
+  if (!extrapolated)
+    extrapolate();    // which sends the ghosts their values
+  else
+    SPHCompat::forward_comm(comm, this);
   extrapolated = 1;
-  SPHCompat::forward_comm(comm, this);
 }
 
 void FixSPHOpen::setup(int /*vflag*/)
@@ -420,15 +424,15 @@ void FixSPHOpen::extrapolate()
   const sphk_kernel kernel = sphk_make(kernel_kind, dim, cutoff);
 
   // the fluid within reach of the mirror points, binned
-  std::vector<int> skip(nall, 1);
+  not_near.assign(nall, 1);
   const double reach = length + cutoff;
   for (int j = 0; j < nall; j++) {
     if (!(mask[j] & fluidbit)) continue;
     const double s = downstream_of_plane(x[j]);
     const double inside = (kind == INLET) ? s : -s;
-    if (inside < reach) skip[j] = 0;
+    if (inside < reach) not_near[j] = 0;
   }
-  cells.bin(x, skip.data(), nall, 1, cutoff);
+  cells.bin(x, not_near.data(), nall, 1, cutoff);
 
   const int nfields = (kind == INLET) ? 1 : 4;    // rho; or v (3) and T
   for (int i = 0; i < nlocal; i++) {
@@ -457,9 +461,6 @@ void FixSPHOpen::extrapolate()
         for (int k = 0; k < 3; k++) value += grad[k] * (x[i][k] - g[k]);
       // (the flow pair checks every atom's density before it is used)
       rho[i] = value;
-      inlet_velocity(x[i], v[i]);
-      for (int k = 0; k < 3; k++) vest[i][k] = v[i][k];
-      if (temperature_given) esph[i] = cv[i] * temperature;
     } else {
       const double p = pressure_given ? pressure : eos->p_background;
       rho[i] = sphe_density_at(eos, p, particles.temperature(i));

@@ -94,6 +94,8 @@ class FixSPHOpen : public Fix {
   void create_pending(double moved_for);
   void delete_passed();
   SPHCells cells;
+  std::vector<int>
+      not_near;    // per atom (owned and ghost): 1 unless fluid within reach of the mirror points
 };
 
 }    // namespace LAMMPS_NS
