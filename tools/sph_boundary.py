@@ -394,6 +394,41 @@ def setup(curves, dx, eps=0.42, layers=1, offset=(0.5, 0.5), angle=0.0, center=(
                  np.concatenate(cur), dx, comment)
 
 
+def body(curves, dx, layers=3, fluid_layers=3, comment=""):
+    """A body in a fluid with the half-spacing convention of the Adami and
+    mirror walls (the surface halfway between the wall particles and the
+    fluid's, as a flat wall on the lattice): wall layer k on the curve offset
+    by (k + 1/2) dx into the body (k = 0 .. layers-1), fluid layer k on it
+    offset by (k + 1/2) dx into the fluid (k = 0 .. fluid_layers-1), each
+    equally spaced about dx along it (a circle's ring of radius r holds
+    round(2 pi r / dx) particles), so each particle stands for dx^2 of the
+    body or fluid. The curves are the bodies' surfaces (the medium outside:
+    hole=True). The rest of the fluid, beyond fluid_layers dx from the
+    surface, is the caller's (e.g. LAMMPS's lattice outside that distance).
+    Types: 1 fluid layers, 2 the first wall layer, 3 the further ones;
+    normals of the wall particles point out of the body, into the fluid."""
+    x, typ, nrm, lay, cur = [], [], [], [], []
+    for c, curve in enumerate(curves):
+        if not curve.hole:
+            raise ValueError("body: the fluid lies outside the body's surface (hole=True)")
+        for k in range(fluid_layers):
+            p, n = curve.points(-(k + 0.5), dx)
+            x.append(p)
+            nrm.append(np.zeros_like(p))
+            typ.append(np.ones(len(p), dtype=int))
+            lay.append(np.full(len(p), -1))
+            cur.append(np.full(len(p), -1))
+        for k in range(layers):
+            p, n = curve.points(k + 0.5, dx)
+            x.append(p)
+            nrm.append(n)
+            typ.append(np.full(len(p), 3 if k else 2))
+            lay.append(np.full(len(p), k))
+            cur.append(np.full(len(p), c))
+    return Setup(np.vstack(x), np.concatenate(typ), np.vstack(nrm), np.concatenate(lay),
+                 np.concatenate(cur), dx, comment, ntypes=3)
+
+
 def naive(curves, dx, layers=1, offset=(0.5, 0.5), connectivity=4, comment=""):
     """The naive set-up: lattice points inside the medium; the outermost (a
     lattice neighbour, 4- or 8-connected, outside) are the wall; normals
@@ -697,6 +732,11 @@ def main(argv=None):
     p.add_argument("--connectivity", type=int, choices=[4, 8], default=4,
                    help="naive: outermost = a 4- (default) or 8-neighbour outside")
     p.add_argument("--type-per-curve", action="store_true", help="types 2+2c, 3+2c for curve c")
+    p.add_argument("--body", action="store_true",
+                   help="disc, rectangle, polygon: a body in a fluid, half-spacing convention: "
+                        "--layers wall layers (k + 1/2) dx inside the surface and --fluid-layers "
+                        "fluid layers (k + 1/2) dx outside it, no lattice")
+    p.add_argument("--fluid-layers", type=int, default=3, help="--body: fluid layers (3)")
     p.add_argument("--rho", type=float, default=1.0)
     p.add_argument("--cv", type=float, default=1.0)
     p.add_argument("--T", type=float, default=1.0, help="initial temperature of the interior")
@@ -722,7 +762,7 @@ def main(argv=None):
         except ValueError as e:
             p.error(str(e))
     elif a.shape == "disc":
-        curves = [circle(cen[0], cen[1], a.radius)]
+        curves = [circle(cen[0], cen[1], a.radius, hole=a.body)]
         desc = f"disc R={a.radius:g}"
     elif a.shape == "annulus":
         curves = [circle(cen[0], cen[1], a.outer_radius), circle(cen[0], cen[1], a.radius, hole=True)]
@@ -730,13 +770,18 @@ def main(argv=None):
     elif a.shape == "rectangle":
         c, s = math.cos(math.radians(a.angle)), math.sin(math.radians(a.angle))
         v = np.array([[-a.lx / 2, -a.ly / 2], [a.lx / 2, -a.ly / 2], [a.lx / 2, a.ly / 2], [-a.lx / 2, a.ly / 2]])
-        curves = [polygon(v @ np.array([[c, s], [-s, c]]) + np.asarray(cen))]
+        curves = [polygon(v @ np.array([[c, s], [-s, c]]) + np.asarray(cen), hole=a.body)]
         desc = f"rectangle {a.lx:g}x{a.ly:g} angle={a.angle:g}"
     else:
         v = np.array([[float(t) for t in xy.split(",")] for xy in a.vertices.split()])
-        curves = [polygon(v)]
+        curves = [polygon(v, hole=a.body)]
         desc = f"polygon of {len(v)} vertices"
-    if a.shape != "cylinder":
+    if a.body:
+        if a.shape not in ("disc", "rectangle", "polygon") or a.naive or a.type_per_curve:
+            p.error("--body is for a disc, rectangle or polygon, without --naive and --type-per-curve")
+        s = body(curves, a.dx, a.layers, a.fluid_layers,
+                 comment=f"body {desc} dx={a.dx:g} layers={a.layers} fluid-layers={a.fluid_layers}")
+    elif a.shape != "cylinder":
         if a.naive:
             s = naive(curves, a.dx, a.layers, off, a.connectivity,
                       comment=f"naive {desc} dx={a.dx:g} layers={a.layers}")

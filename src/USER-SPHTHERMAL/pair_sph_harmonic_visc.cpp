@@ -52,11 +52,11 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     heating(0.0), mean_pressure_held(0), mean_pressure(0.0), gradient_correction(0),
     gradient_inverse(nullptr), nmax_gradient(0), diffusion_form(DIFFUSION_BODY_FORCE),
     hydrostatic(0), body_force(nullptr), buoyancy(nullptr), pressure_buoyancy(nullptr), eta2(0.0),
-    materials(nullptr),
-    viscosity_varies(0), wall_groupbit(0), pressure(nullptr), viscosity(nullptr), mass_of(nullptr),
-    volume(nullptr), density(nullptr), diffused_density(nullptr), diffusion_rho(nullptr),
-    thermal_expansion(0), nmax(0), heat(nullptr), shift_sums_wanted(0), shift_sum(nullptr),
-    nmax_shift(0), background_warned(0), soft_fluid_warned(0)
+    materials(nullptr), viscosity_varies(0), wall_groupbit(0), pressure(nullptr),
+    viscosity(nullptr), mass_of(nullptr), volume(nullptr), density(nullptr),
+    diffused_density(nullptr), diffusion_rho(nullptr), thermal_expansion(0), nmax(0), heat(nullptr),
+    shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0), background_warned(0),
+    soft_fluid_warned(0)
 {
   // the continuity equation and the viscous term need the velocities of
   // ghost atoms: turned on here, as comm_modify vel yes would
@@ -174,6 +174,7 @@ void PairSPHHarmonicVisc::end_compute()
   check_rates(atom->drho, "drho");
   if (heat && heat->term_in_flow_loop()) heat->end_flow_loop_term();
   if (shift_sums_wanted && force->newton_pair) reverse(SPHCommStage().flat(shift_sum, 3));
+  if (!group_forces.empty()) make_group_forces();
 }
 
 void PairSPHHarmonicVisc::tally_pair(int i, int j, double fx, double fy, double fz, double delx,
@@ -332,19 +333,9 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
                 &s_v, &c_i, &c_j, &inv_heat);
       double fx, fy, fz;
       if (TERMS & GRADIENT) {
-        // the pressure force along B grad W: the mean of the two particles'
-        // B for a fluid pair, the fluid particle's with a wall (one matrix
-        // per pair: the force stays antisymmetric and momentum is kept)
         const double del[3] = {delx, dely, delz};
         double b_del[3];
-        if (wall_i || wall_j)
-          sphc_sym_apply(gradient_inverse[wall_i ? j : i], del, b_del);
-        else {
-          double b_del_j[3];
-          sphc_sym_apply(gradient_inverse[i], del, b_del);
-          sphc_sym_apply(gradient_inverse[j], del, b_del_j);
-          for (int k = 0; k < 3; k++) b_del[k] = 0.5 * (b_del[k] + b_del_j[k]);
-        }
+        corrected_direction(gradient_inverse, i, j, wall_i, wall_j, del, b_del);
         const double s_p = s_r - s_rv;    // the pressure's share of s_r
         fx = s_p * b_del[0] + s_rv * delx + s_v * dvx;
         fy = s_p * b_del[1] + s_rv * dely + s_v * dvy;

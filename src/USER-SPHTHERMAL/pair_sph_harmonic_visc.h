@@ -16,6 +16,7 @@ PairStyle(sph/harmonic/visc,PairSPHHarmonicVisc);
 #include "pair_sph_kernel.h"
 #include "sph_body_force.h"
 #include "sph_comm_stage.h"
+#include "sph_consistent.h"
 #include "sph_eos.h"
 
 #include <vector>
@@ -43,6 +44,22 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // style's, or an atom of the group that is a wall (wall-wall pairs skipped)
   virtual bool provide_shift_sums(int groupbit);
   const double *shift_sums() const { return shift_sum; }
+
+  // The force that the atoms outside a group exert on it through this
+  // style's momentum equation (compute sph/force): its pressure and viscous
+  // parts and their moments about 'origin', this rank's share of the pairs
+  // of the step's compute(). Made right after the pair loop, with the same
+  // state, on the steps the asking compute will be invoked
+  // (Compute::matchstep) and at set-up; asked again at every init, after
+  // this style's.
+  struct GroupForce {
+    class Compute *compute;    // who asks: its group and its steps
+    double origin[3];          // the next sums' moments are about it (kept near the group)
+    double made_about[3];      // the origin of the moments in 'sums'
+    double sums[12];           // pressure F, viscous F, their moments
+    bigint step;               // the step they were made on (-1: none yet)
+  };
+  void make_group_force(GroupForce *request) { group_forces.push_back(request); }
 
  protected:
   int pressure_form;     // SPHF_P_* of sph_flow.h (also selects the continuity form)
@@ -74,7 +91,7 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   int hydrostatic;
   double gravity[3];           // the uniform acceleration of the hydrostatic diffusion
   const double *body_force;    // the run's body force (fix gravity), nullptr when none
-  const SPHBodyForce::Buoyancy *buoyancy;    // fix sph/boussinesq's, nullptr when none
+  const SPHBodyForce::Buoyancy *buoyancy;             // fix sph/boussinesq's, nullptr when none
   const SPHBodyForce::Buoyancy *pressure_buoyancy;    // its potential's pressure, any diffusion
   std::vector<double> body_accel;    // with hydrostatic: per atom (owned, ghost) its acceleration
   void read_body_force();            // gravity and hydrostatic of 'diffusion fourtakas'
@@ -132,6 +149,27 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // ev_tally_xyz for pair i, j (the /omp style tallies per thread)
   virtual void tally_pair(int i, int j, double fx, double fy, double fz, double delx, double dely,
                           double delz, void *thread);
+
+  std::vector<GroupForce *> group_forces;
+  void make_group_forces();    // those wanted on this step
+  void group_force(GroupForce &request) const;
+  // the pressure force's direction for pair i, j with 'correction gradient':
+  // B grad W with the mean of both particles' B for a fluid pair, the fluid
+  // particle's with a wall (one matrix per pair keeps the force
+  // antisymmetric, so momentum is kept)
+  static inline void corrected_direction(const double *const *gradient_inverse, int i, int j,
+                                         int wall_i, int wall_j, const double del[3],
+                                         double b_del[3])
+  {
+    if (wall_i || wall_j)
+      sphc_sym_apply(gradient_inverse[wall_i ? j : i], del, b_del);
+    else {
+      double b_del_j[3];
+      sphc_sym_apply(gradient_inverse[i], del, b_del);
+      sphc_sym_apply(gradient_inverse[j], del, b_del_j);
+      for (int k = 0; k < 3; k++) b_del[k] = 0.5 * (b_del[k] + b_del_j[k]);
+    }
+  }
 
   void update_atom_state();
   // the inverse moments for this step's positions

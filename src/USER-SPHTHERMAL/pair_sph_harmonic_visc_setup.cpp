@@ -271,8 +271,9 @@ void PairSPHHarmonicVisc::init_style()
   warn_soft_fluid();
   // sph/cleary/heat decides at its init whether this loop evaluates its term
   heat = SPHHub(lmp).heat();
-  // fix sph/shift asks again at its init
+  // fix sph/shift asks again at its init, compute sph/force at its own
   shift_sums_wanted = 0;
+  group_forces.clear();
 
   SPHCompat::request_half_list(neighbor, this, instance_me);
 }

@@ -237,6 +237,7 @@ PROBES = {
     "compute_sph_heatflux_atom": (
         "cavity", "compute q fluid sph/heatflux/atom\ncompute qsum fluid reduce sum c_q[1] c_q[2]",
         "c_qsum[1] c_qsum[2]", {}),
+    "compute_sph_force": ("cavity", "compute force hot sph/force center 0.1 0.5 0.0", "c_force[*]", {}),
     "compute_sph_mixing": ("cavity", "compute mix fluid sph/mixing upper", "c_mix[*]", {}),
     "compute_sph_nusselt": ("cavity", "compute nu hot sph/nusselt hot 1.0 1.0 1.0", "c_nu[*]", {}),
     "compute_sph_thermal": ("cavity", "compute th fluid sph/thermal", "c_th[*]", {}),
