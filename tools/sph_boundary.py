@@ -46,6 +46,22 @@ Command line, e.g. (the disc of examples/conduction-disc: 30 particles across, o
 
 Module: setup = sph_boundary.disc(R, dx); setup.write_data("disc.data").
 
+A body in a fluid (--body; disc, rectangle, polygon), with the half-spacing
+convention of the Adami and mirror walls instead of Cleary's: the shape's
+curve is the body's surface, halfway between the wall particles and the
+fluid's; --layers wall layers (k + 1/2) dx inside it (types 2, then 3) and
+--fluid-layers fluid layers (k + 1/2) dx outside it (type 1), each equally
+spaced about dx along its curve; no lattice. The rest of the fluid is the
+input's, e.g. LAMMPS's lattice outside fluid-layers dx from the surface,
+and the file is added to it (--section none: no normals section):
+
+    python3 tools/sph_boundary.py disc --body --radius 0.05 --center 0.2,0.2 --dx 0.005 \
+        --layers 3 --fluid-layers 3 --section none -o cylinder.data
+    (in LAMMPS: region rings cylinder z 0.2 0.2 0.065 INF INF units box side out,
+     create_atoms 1 region ..., read_data cylinder.data add append)
+
+as examples/open-cylinder does.
+
 3-d: the closed cylindrical tank (cylinder), axis z through --center, fluid
 in r < R, 0 < z < H, the same rules on its surfaces:
 
@@ -331,6 +347,8 @@ class Setup:
             f.write("\nAtoms # sph\n\n")
             for i in range(len(self)):
                 f.write(f"{i + 1} {self.type[i]} {rho:.16g} {esph[i]:.16g} {cv:.16g} {xyz[i]}\n")
+            if section is None or section == "none":
+                return
             f.write(f"\n{section}\n\n")
             for i in range(len(self)):
                 f.write(f"{i + 1} {nrm[i]}\n")
@@ -741,7 +759,8 @@ def main(argv=None):
     p.add_argument("--cv", type=float, default=1.0)
     p.add_argument("--T", type=float, default=1.0, help="initial temperature of the interior")
     p.add_argument("--Twall", type=float, help="wall temperature (default T)")
-    p.add_argument("--section", default="Normals", help="name of the normals section (Normals)")
+    p.add_argument("--section", default="Normals",
+                   help="name of the normals section (Normals); none: no normals")
     p.add_argument("--outward", action="store_true", help="write normals pointing out of the medium")
     p.add_argument("-o", "--output", required=True, help="data file to write")
     a = p.parse_args(argv)

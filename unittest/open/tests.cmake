@@ -18,4 +18,5 @@ sphthermal_state_test(open.restart same ${open_input} ${in_build_dir}
        RTOL 1e-12)
 add_error_cases(open ${CMAKE_CURRENT_LIST_DIR}/errors.in)
 add_example_test(open.validation.channel_10 open-channel quick channel_10)
+add_example_test(open.validation.cylinder_10 open-cylinder quick cylinder_10)
 sphthermal_python_test(open.reference.channel_entrance tools/test_channel_entrance.py LABELS unit)

@@ -163,4 +163,48 @@ with tempfile.TemporaryDirectory() as tmp:
     else:
         print("skip LAMMPS round trip (set LMP to a LAMMPS executable)")
 
+# a body in a fluid, the half-spacing convention (--body): a disc of R = 0.05
+# at D / dx = 20, three wall rings (k + 1/2) dx inside and three fluid rings
+# (k + 1/2) dx outside, each of round(2 pi r / dx) equally spaced particles
+dxb, Rb, cb = 0.005, 0.05, (0.2, 0.2)
+b = sb.body([sb.circle(cb[0], cb[1], Rb, hole=True)], dxb, layers=3, fluid_layers=3)
+rb = np.hypot(b.x[:, 0] - cb[0], b.x[:, 1] - cb[1])
+for k in range(3):
+    for name, sel, r_expect, t_expect in (
+            ("wall", (b.layer == k), Rb - (k + 0.5) * dxb, 2 if k == 0 else 3),
+            ("fluid", None, Rb + (k + 0.5) * dxb, 1)):
+        if sel is None:
+            sel = b.interior & (abs(rb - r_expect) < 0.25 * dxb)
+        ring = b.x[sel]
+        that(len(ring) == round(2 * math.pi * r_expect / dxb) and abs(rb[sel] - r_expect).max() < 1e-12
+             and (b.type[sel] == t_expect).all(),
+             f"body: {name} ring {k} at r = R {'-' if name == 'wall' else '+'} ({k} + 1/2) dx, "
+             f"round(2 pi r / dx) particles, type {t_expect}", f"{len(ring)} particles")
+        sp = ring_spacing(ring - np.asarray(cb))
+        that(np.ptp(sp) < 1e-12 and abs(sp / dxb - 1).max() < 0.02, f"body: {name} ring {k} spacing dx within 2 %",
+             f"{sp.min() / dxb:.4f} .. {sp.max() / dxb:.4f} dx")
+that(len(b) == int((b.layer >= 0).sum()) + int(b.interior.sum()) and b.interior.sum() > 0,
+     "body: only wall and fluid rings, no lattice")
+nb = b.normal[b.layer >= 0]
+rhat_b = (b.x[b.layer >= 0] - np.asarray(cb)) / rb[b.layer >= 0][:, None]
+that(abs(np.sum(nb * rhat_b, axis=1) - 1).max() < 1e-12, "body: wall normals point out of the body, into the fluid")
+that(abs(b.normal[b.interior]).max() == 0, "body: fluid particles have no normal")
+# a square body, one corner up: its wall layers stay inside, the fluid's outside
+sq = sb.body([sb.polygon(np.array([[0, 0], [0.1, 0], [0.1, 0.1], [0, 0.1]]), hole=True)], 0.01, 2, 2)
+inside_sq = (sq.x > 0).all(axis=1) & (sq.x < 0.1).all(axis=1)
+that((inside_sq == (sq.layer >= 0)).all(), "body: a square's wall layers inside it, its fluid layers outside")
+try:
+    sb.body([sb.circle(0, 0, 1.0)], 0.1)
+    that(False, "body: a curve with the fluid inside is refused")
+except ValueError as e:
+    that("hole=True" in str(e), "body: a curve with the fluid inside is refused", str(e))
+with tempfile.TemporaryDirectory() as tmp:
+    path = os.path.join(tmp, "body.data")
+    rc_ = sb.main(["disc", "--body", "--radius", str(Rb), "--center", "0.2,0.2", "--dx", str(dxb),
+                   "--layers", "3", "--section", "none", "-o", path])
+    back = sb.read_data(path, section=None)
+    that(rc_ == 0 and back["natoms"] == len(b) and abs(back["x"][:, :2] - b.x).max() < 1e-15
+         and "Normals" not in open(path).read(),
+         "body command line: the module's particles, no normals section (--section none)")
+
 finish()
