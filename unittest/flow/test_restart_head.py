@@ -42,6 +42,7 @@ fix flux right sph/surface/flux flux 1.0 spacing 0.01
 fix shift moving sph/shift skillen 2.0
 fix inlet moving sph/inlet/temperature 1.0
 fix open opening sph/open inlet -y 0.02 fluid moving velocity 0.01
+fix drive moving sph/flowrate x 0.01
 compute mix moving sph/mixing top
 """
 
@@ -83,7 +84,7 @@ read_restart {path}
 STYLES = ["sph/harmonic/visc", "sph/cleary/heat", "sph/wall/adami", "sph/wall/dirichlet",
           "sph/dt/reset", "sph/heatflow", "sph/surface/flux", "sph/shift",
           "sph/inlet/temperature", "SPH/MIXING/REFERENCE", "sph/materials", "sph/hold/volume",
-          "sph/open"]
+          "sph/open", "sph/flowrate"]
 TAG = struct.pack("i", 0x53505448)
 
 

@@ -211,6 +211,7 @@ PROBES = {
         "min 1.0e-6 max 1.0e-3", "dt time", {}),
     "fix_sph_heatflow": ("cavity", "fix into fluid sph/heatflow hot", "f_into", {}),
     "fix_sph_hold_volume": ("cavity", "fix hold fluid sph/hold/volume", "f_hold", {}),
+    "fix_sph_flowrate": ("channel", "fix rate fluid sph/flowrate x 0.05 relax 0.01", "f_rate[*]", {}),
     # T0 by layers: sums over a few atoms per layer, whose order the ranks
     # change; 10 steps take their round-off to about 3e-12
     "fix_sph_boussinesq_layers": (
