@@ -23,4 +23,9 @@ foreach(np 2 4)
   sphthermal_python_test(body.mpi.force_np${np} body/test_force_ranks.py LAMMPS
     ARGS --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
 endforeach()
+# the sums of the /omp pair style's loop (made after its threads' reduction)
+if(host_openmp)
+  sphthermal_lammps_test(body.force.sum.omp ${force_input}
+    VARS check sum omp 2 LABELS unit PASS "force: sum passed" ENVIRONMENT OMP_NUM_THREADS=2)
+endif()
 add_error_cases(body ${CMAKE_CURRENT_LIST_DIR}/errors.in)
