@@ -104,6 +104,8 @@ FixSPHInletTemperature::FixSPHInletTemperature(LAMMPS *lmp, int narg, char **arg
   extvector = 1;
   global_freq = 1;
   restart_global = 1;
+  // atoms created in a run (fix sph/open) count their passes from where they are
+  create_attribute = 1;
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
@@ -489,6 +491,11 @@ void FixSPHInletTemperature::grow_arrays(int nmax)
 void FixSPHInletTemperature::copy_arrays(int i, int j, int /*delflag*/)
 {
   passes[j] = passes[i];
+}
+
+void FixSPHInletTemperature::set_arrays(int i)
+{
+  passes[i] = passes_now(i);
 }
 
 int FixSPHInletTemperature::pack_exchange(int i, double *buf)

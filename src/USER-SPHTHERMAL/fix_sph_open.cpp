@@ -34,11 +34,13 @@
 #include "atom_vec.h"
 #include "comm.h"
 #include "domain.h"
+#include "dump.h"
 #include "error.h"
 #include "fix_sph_materials.h"
 #include "group.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "output.h"
 #include "pair_sph_harmonic_visc.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
@@ -62,6 +64,17 @@ static constexpr int RESTART_VERSION = 1;
 static constexpr int RECORD = 12;
 
 static const char cmd[] = "fix sph/open";
+
+// A dump sorted by atom ID whose atoms' IDs were 1..N at the run's start
+// places each atom at index ID - lowest ID while the count is unchanged
+// (LAMMPS's Dump::sort, which exempts only fix gcmc). Atoms created and
+// deleted in balance keep the count but not the IDs, and the dump would
+// write past its index: such dumps sort by comparing IDs instead.
+namespace {
+struct DumpSortByComparison : public Dump {
+  static void apply(Dump *dump) { dump->*(&DumpSortByComparison::reorderflag) = 0; }
+};
+}    // namespace
 
 /* ----------------------------------------------------------------------
    fix ID group sph/open inlet|outlet <direction> <position> fluid <group-ID>
@@ -371,6 +384,8 @@ void FixSPHOpen::setup_pre_force(int /*vflag*/)
 
 void FixSPHOpen::setup(int /*vflag*/)
 {
+  // after the dumps' init, before the run's first frame
+  for (int d = 0; d < output->ndump; d++) DumpSortByComparison::apply(output->dump[d]);
   if (kind != INLET) return;
   // a buffer faster than sound would outrun the pressure that holds it
   double c0 = INFINITY;

@@ -99,6 +99,8 @@ FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
   for (int t = 0; t <= atom->ntypes; t++) solid_type[t] = 0;
   restart_global = 1;
   restart_peratom = 1;
+  // atoms created in a run (fix sph/open) start with no velocity sample
+  create_attribute = 1;
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
@@ -457,6 +459,11 @@ void FixSPHWallAdami::copy_arrays(int i, int j, int /*delflag*/)
     v_sampled[j][k] = v_sampled[i][k];
     accel[j][k] = accel[i][k];
   }
+}
+
+void FixSPHWallAdami::set_arrays(int i)
+{
+  for (int k = 0; k < 3; k++) v_sampled[i][k] = accel[i][k] = 0.0;
 }
 
 int FixSPHWallAdami::pack_exchange(int i, double *buf)

@@ -52,6 +52,7 @@ class FixSPHWallAdami : public Fix {
   // the velocity of the last sample travels and restarts with each atom
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
   int pack_restart(int, double *) override;

@@ -40,6 +40,8 @@ FixSPHWallTally::FixSPHWallTally(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
   peratom_flag = 1;
   peratom_freq = 1;
+  // atoms created in a run (fix sph/open) start with nothing tallied
+  create_attribute = 1;
   restart_global = 1;
   restart_peratom = 1;
   energy_global_flag = 0;
@@ -142,6 +144,11 @@ void FixSPHWallTally::grow_arrays(int nmax)
 void FixSPHWallTally::copy_arrays(int i, int j, int /*delflag*/)
 {
   for (int k = 0; k < size_peratom_cols; k++) wall[j][k] = wall[i][k];
+}
+
+void FixSPHWallTally::set_arrays(int i)
+{
+  for (int k = 0; k < size_peratom_cols; k++) wall[i][k] = 0.0;
 }
 
 int FixSPHWallTally::pack_exchange(int i, double *buf)

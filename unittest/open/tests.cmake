@@ -16,6 +16,8 @@ set(in_build_dir WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 sphthermal_state_test(open.restart same ${open_input} ${in_build_dir}
   ARGS --var check=state --var lo=-0.2 --var steps=200 --var split=two --var2 split=yes
        RTOL 1e-12)
+# a dump sorted by ID while atoms are created and deleted in balance
+sphthermal_python_test(open.dump_sort_id open/test_dump_sort.py LAMMPS LABELS unit)
 add_error_cases(open ${CMAKE_CURRENT_LIST_DIR}/errors.in)
 add_example_test(open.validation.channel_10 open-channel quick channel_10)
 add_example_test(open.validation.cylinder_10 open-cylinder quick cylinder_10)
