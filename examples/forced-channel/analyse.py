@@ -25,8 +25,12 @@ averaged in rows of one spacing: the largest row and the centre rows),
 and with --series-png a plot of u(y) (the fluid averaged in rows of one
 spacing) against the series at t = 50, 100, 200, 300 s and the last frame.
 
+With --open (in.channel's inlet = open) the particles of the buffers
+behind the inlet and the outlet, and the walls alongside them, are left
+out: only 0 <= x < 200 m is the channel.
+
   analyse.py channel.dump [--walls dirichlet|thick] [--ksk 1] [--re 652]
-             [--n 20] [--png channel.png] [--max-t-error PCT] [--max-vy PCT]
+             [--n 20] [--open] [--png channel.png] [--max-t-error PCT] [--max-vy PCT]
              [--series [--series-png FILE]]
 """
 import argparse
@@ -95,6 +99,8 @@ def main():
     p.add_argument("--ksk", type=float, default=1.0)
     p.add_argument("--re", type=float, default=652.0)
     p.add_argument("--n", type=int, default=20, help="particles across W")
+    p.add_argument("--open", action="store_true",
+                   help="a true inlet and outlet: leave out the buffers and the walls beside them")
     p.add_argument("--ref-nx", type=int, default=None, help="reference cells along x (its default)")
     p.add_argument("--ref-ny", type=int, default=None, help="reference cells across W (its default)")
     p.add_argument("--png", default="channel.png")
@@ -108,6 +114,9 @@ def main():
 
     frames = read_frames(a.dump)
     step, d = frames[-1]
+    if a.open:
+        inside = (d["x"] >= 0.0) & (d["x"] < LENGTH)
+        d = {key: value[inside] for key, value in d.items()}
     dx = W / a.n
     u_max = a.re * MU / (RHO * W)
     if a.series:

@@ -19,7 +19,9 @@
 #                       CONDUCTION and DTRESET as for in.channel (the same
 #                       defaults)
 # Environment: LMP, PLUGIN, NP, OUT as in the other examples; N (particles
-# across), TEND (s), RE, KSK, SHIFT (yes|no), SHIFTC (C of the shift;
+# across), TEND (s), RE, KSK, INLET (periodic|open: in.channel's inlet, a
+# true inlet and outlet with open; the CI test forced.validation.open_re65_10
+# is INLET=open ./run.sh quick), SHIFT (yes|no), SHIFTC (C of the shift;
 # in.channel's 0.5), START (developed|rest),
 # HOLD (yes|no: the fluid keeps its volume; in.channel's yes), CONTINUITY
 # (yes|no: the shift's continuity keyword; in.channel's no), NOSLIP
@@ -60,10 +62,13 @@ N=${N:-20}
 TEND=${TEND:-150}
 RE=${RE:-652}
 KSK=${KSK:-1}
+INLET=${INLET:-periodic}
 name=channel-$WALLS
+open_flag=""
+if [ "$INLET" != periodic ]; then name=$name-$INLET; open_flag=--open; fi
 rm -f "$name.dump"
 $run "$LMP" -in "$here/in.channel" -var plugin "$PLUGIN" -var n "$N" -var tend "$TEND" \
-  -var re "$RE" -var walls "$WALLS" -var ksk "$KSK" -var shift "${SHIFT:-yes}" \
+  -var re "$RE" -var walls "$WALLS" -var inlet "$INLET" -var ksk "$KSK" -var shift "${SHIFT:-yes}" \
   ${SHIFTC:+-var shiftc "$SHIFTC"} \
   ${CONTINUITY:+-var continuity "$CONTINUITY"} ${NOSLIP:+-var noslip "$NOSLIP"} \
   ${HOLD:+-var hold "$HOLD"} ${EOS:+-var eos "$EOS"} ${FLOW:+-var flow "$FLOW"} \
@@ -71,4 +76,4 @@ $run "$LMP" -in "$here/in.channel" -var plugin "$PLUGIN" -var n "$N" -var tend "
   -var start "${START:-developed}" -var every "$TEND" -var out "$name" -log "log.$name" |
   grep -E "^u_max|^dt =|speed of sound|Loop time|sph/cleary/heat:"
 "$PYTHON" "$here/analyse.py" "$name.dump" --walls "$WALLS" --ksk "$KSK" --re "$RE" --n "$N" \
-  --png "$name.png" ${MAX_T_ERROR:+--max-t-error "$MAX_T_ERROR"} ${MAX_VY:+--max-vy "$MAX_VY"}
+  --png "$name.png" $open_flag ${MAX_T_ERROR:+--max-t-error "$MAX_T_ERROR"} ${MAX_VY:+--max-vy "$MAX_VY"}

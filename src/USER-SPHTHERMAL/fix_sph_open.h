@@ -49,6 +49,8 @@ class FixSPHOpen : public Fix {
   void restart(char *) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
+  // the group bit of the fluid the boundary feeds or drains
+  int fluid_groupbit() const { return fluidbit; }
 
  protected:
   enum Kind { INLET, OUTLET };

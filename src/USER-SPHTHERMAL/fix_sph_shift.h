@@ -45,6 +45,8 @@ class FixSPHShift : public Fix {
 
  protected:
   class SPHCommStage forward_fields() const;    // what the forward comm carries
+  void size_sums();
+  void choose_continuity();
   enum { SKILLEN, DELTAPLUS };
   int form;
   double coefficient;    // D (skillen) or C (delta-plus)
@@ -55,6 +57,7 @@ class FixSPHShift : public Fix {
   enum { CORRECT_T = 1, CORRECT_ALL = 2 };
   int correct;           // 0, CORRECT_T: T_i += dr_i . grad T_i, CORRECT_ALL: T, rho and v
   int continuity;        // the group's mean rho follows the shift's change of the kernel sums
+  int continuity_given;  // 1: 'continuity' in the command; 0: the default of init()
   int kernel_kind;
   double cutoff;
   int loop_own;      // 1: always the fix's own neighbour pass ('loop own')
