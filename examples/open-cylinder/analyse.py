@@ -11,8 +11,12 @@ means, their standard errors from blocks of --block s, and the error of
 each against the benchmark's interval (0 inside it). Fails (exit 1) when
 |C_D error| > --max-drag percent, |dp error| > --max-dp percent, or the
 mean C_L lies outside [--min-lift, --max-lift]; --png writes the histories.
+With in.cylinder's heat = yes the file's last column is the cylinder's mean
+Nusselt number: its mean, and its error against --nu-ref (the finite-element
+reference of tools/cylinder_heat_fe.py), failing above --max-nu percent.
 usage: analyse.py FORCES [--from T] [--block S] [--max-drag P] [--max-dp P]
-                  [--min-lift L] [--max-lift L] [--png FILE]"""
+                  [--min-lift L] [--max-lift L] [--nu-ref NU] [--max-nu P]
+                  [--png FILE]"""
 
 import argparse
 import sys
@@ -50,6 +54,8 @@ def main():
     p.add_argument("--max-dp", type=float)
     p.add_argument("--min-lift", type=float)
     p.add_argument("--max-lift", type=float)
+    p.add_argument("--nu-ref", type=float)
+    p.add_argument("--max-nu", type=float)
     p.add_argument("--png")
     a = p.parse_args()
     d = np.loadtxt(a.forces)
@@ -76,6 +82,20 @@ def main():
             line += f"; benchmark [{lo}, {hi}], error {interval_error(v.mean(), BENCHMARK[name]):+.2f} %"
         print(line)
     ok = True
+    if d.shape[1] > 7 and np.any(d[sel, 7] != 0.0):
+        v = d[sel, 7]
+        se = block_error(v, t[sel], a.block)
+        line = f"Nu            mean {v.mean():.5f} +- {se:.5f} (rms of the samples {v.std():.4f})"
+        if a.nu_ref is not None:
+            err = 100.0 * (v.mean() - a.nu_ref) / a.nu_ref
+            line += f"; reference {a.nu_ref}, error {err:+.2f} %"
+            if a.max_nu is not None and abs(err) > a.max_nu:
+                print(f"FAIL: Nu off by more than {a.max_nu} %")
+                ok = False
+        print(line)
+    elif a.max_nu is not None:
+        print("FAIL: no Nusselt number in the file (in.cylinder's heat = yes writes it)")
+        ok = False
     if a.max_drag is not None and abs(interval_error(means["C_D"], BENCHMARK["C_D"])) > a.max_drag:
         print(f"FAIL: C_D off by more than {a.max_drag} %")
         ok = False
