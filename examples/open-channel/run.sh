@@ -9,13 +9,12 @@ set -e
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../common.sh"
 
-# measured (README.md), shifted as in.channel: from a parabolic inflow the
-# profile within 1.3-2.5 % and developed from the first column (0.05 H;
-# 1.0-1.4 H from a uniform one), -dp/dx +0.5 to +4.4 % at 20 and 40 across
-# (its rms from one frame to the next 15-21 %; at 10 across 20-47 %: not
-# checked there); from a uniform inflow the centre speed within 0.017-0.023
-# of 1.5 U of tools/channel_entrance.py's (0.06-0.10 unshifted) and the
-# profile within 1.5-2.9 %
+# measured (README.md), shifted as in.channel with the shift's continuity
+# (its default here): from a parabolic inflow the profile within 0.74 and
+# 0.63 % at 20 and 40 across and developed from the first column, -dp/dx
+# +0.9 and +0.6 %; from a uniform inflow the profile within 1.4 %, -dp/dx
+# +2.6 and +4.7 %, the centre speed within 0.018 and 0.012 of 1.5 U of
+# tools/channel_entrance.py's; the quick run 1.5 and 1.9 %, within 0.023
 case "${1:-}" in
   quick)
     sizes=10; tend=30; from=15
