@@ -22,7 +22,9 @@
      the plane joins the fluid's group, and a copy of it (the buffer's
      velocity, density and temperature) waits to enter at the buffer's back,
      one buffer length upstream; a fluid particle that has crossed the
-     outlet plane joins the buffer. What crossed is tallied.
+     outlet plane joins the buffer. What crossed is tallied, and so are
+     the momentum and heat the buffer gives the fluid through the pair
+     styles' forces and conduction across the plane.
    - At the next step's neighbour build (which the fix asks for) the copies
      are created, on the rank whose sub-domain holds them, and outlet
      particles past the buffer's back are deleted.
@@ -37,6 +39,7 @@
 #include "dump.h"
 #include "error.h"
 #include "fix_sph_materials.h"
+#include "force.h"
 #include "group.h"
 #include "modify.h"
 #include "neighbor.h"
@@ -59,7 +62,7 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 // the layout of the restart state: raise it when a value is added
-static constexpr int RESTART_VERSION = 1;
+static constexpr int RESTART_VERSION = 2;
 // an entering copy: x (3), v (3), type, mask, rho, esph, cv, mass
 static constexpr int RECORD = 12;
 
@@ -177,8 +180,9 @@ FixSPHOpen::FixSPHOpen(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR, "Illegal {} command: an inlet needs 'velocity'", cmd);
 
   for (double &value : crossed) value = 0.0;
+  for (double &value : start_half) value = 0.0;
   vector_flag = 1;
-  size_vector = 6;
+  size_vector = NTALLY;
   extvector = 0;
   global_freq = 1;
   restart_global = 1;
@@ -405,6 +409,9 @@ void FixSPHOpen::setup(int /*vflag*/)
 
 void FixSPHOpen::initial_integrate(int /*vflag*/)
 {
+  // the fluid's half step now applies the last forces and heat rates
+  for (double &value : start_half) value = 0.0;
+  add_buffer_half_step(start_half);
   const double dtv = update->dt;
   double **x = atom->x, **v = atom->v;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -506,8 +513,11 @@ void FixSPHOpen::end_of_step()
   double *const *const x = atom->x;
   double *const *const v = atom->v;
   int *const mask = atom->mask;
-  // atoms, mass, momentum, energy crossed; then the atoms to create or delete
-  double local[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  // atoms, mass, momentum, energy crossed; the atoms to create or delete;
+  // the buffer's force and heat over the step's two halves
+  double local[11] = {0.0};
+  for (int k = 0; k < 4; k++) local[7 + k] = start_half[k];
+  add_buffer_half_step(local + 7);
   for (int i = 0; i < atom->nlocal; i++) {
     const double s = downstream_of_plane(x[i]);
     int crosses = 0;
@@ -540,10 +550,40 @@ void FixSPHOpen::end_of_step()
     for (int k = 0; k < 3; k++) local[2 + k] += m * v[i][k];
     local[5] += m * atom->esph[i];
   }
-  double all[7];
-  MPI_Allreduce(local, all, 7, MPI_DOUBLE, MPI_SUM, world);
+  double all[11];
+  MPI_Allreduce(local, all, 11, MPI_DOUBLE, MPI_SUM, world);
   for (int k = 0; k < 6; k++) crossed[k] += all[k];
+  // what the buffer took from the rest the fluid gave up (the pair styles
+  // conserve momentum and energy pair by pair): into the fluid at an
+  // inlet, out of it at an outlet
+  const double sign = (kind == INLET) ? -1.0 : 1.0;
+  for (int k = 0; k < 3; k++) crossed[FORCE_MOMENTUM + k] += sign * all[7 + k];
+  crossed[CONDUCTED_HEAT] += sign * all[10];
   if (all[6] > 0.0) next_reneighbor = update->ntimestep + 1;
+}
+
+/* ----------------------------------------------------------------------
+   fix sph moves the fluid by half steps, v += dt/2 f / m and
+   esph += dt/2 desph, at the step's start with the last forces and at its
+   end with the new ones, for the atoms of the fluid group at that time.
+   The buffer's atoms at those times get none: their force and heat rate
+   (from every pair with the fluid, the walls and other buffers, the last
+   two summing to zero over a step) are what the fluid gave up across the
+   plane
+------------------------------------------------------------------------- */
+
+void FixSPHOpen::add_buffer_half_step(double *half) const
+{
+  const SPHParticles particles(atom);
+  const double dt_half = 0.5 * update->dt * force->ftm2v;
+  const int *const mask = atom->mask;
+  const double *const *const f = atom->f;
+  const double *const desph = atom->desph;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    for (int k = 0; k < 3; k++) half[k] += dt_half * f[i][k];
+    half[3] += dt_half * particles.mass(i) * desph[i];
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -646,9 +686,10 @@ void FixSPHOpen::delete_passed()
 }
 
 /* ----------------------------------------------------------------------
-   1 atoms, 2 mass, 3-5 momentum, 6 thermal energy (m esph) that crossed
-   the plane since the first run: into the fluid at an inlet, out of it
-   at an outlet
+   since the first run, into the fluid at an inlet and out of it at an
+   outlet: 1 atoms, 2 mass, 3-5 momentum, 6 thermal energy (m esph) that
+   crossed the plane; 7-9 momentum by the forces across it (pressure and
+   viscous), 10 heat conducted across it
 ------------------------------------------------------------------------- */
 
 double FixSPHOpen::compute_vector(int n)
@@ -720,10 +761,11 @@ void FixSPHOpen::restart(char *buf)
   const double *state = SPHCheck::read_restart_state(lmp, FLERR, this, buf, RESTART_VERSION);
   length = state[0];
   spacing = state[1];
-  for (int k = 0; k < 6; k++) crossed[k] = state[2 + k];
-  extrapolated = (int) state[8];
-  const int nrecords = (int) state[9];
+  for (int k = 0; k < NTALLY; k++) crossed[k] = state[2 + k];
+  extrapolated = (int) state[2 + NTALLY];
+  const int nrecords = (int) state[3 + NTALLY];
   // rank 0 holds them; they are created at the next run's set-up
   pending.clear();
-  if (comm->me == 0) pending.assign(state + 10, state + 10 + (size_t) nrecords * RECORD);
+  const double *const records = state + 4 + NTALLY;
+  if (comm->me == 0) pending.assign(records, records + (size_t) nrecords * RECORD);
 }

@@ -81,11 +81,27 @@ class FixSPHOpen : public Fix {
   // as records of RECORD values
   std::vector<double> pending;
   int extrapolated;    // the buffer's quantities were found at a set-up before
-  // since the first run (kept in restart files): atoms, mass, momentum (3)
-  // and thermal energy that crossed the plane into the fluid (inlet) or out
-  // of it (outlet)
-  double crossed[6];
+  // since the first run (kept in restart files), into the fluid (inlet) or
+  // out of it (outlet): the atoms, mass, momentum (3) and thermal energy
+  // that crossed the plane; the momentum (3) and heat that the buffer's
+  // forces and conduction gave the fluid across it
+  enum {
+    CROSSED_ATOMS,
+    CROSSED_MASS,
+    CROSSED_MOMENTUM,
+    CROSSED_ENERGY = 5,
+    FORCE_MOMENTUM,
+    CONDUCTED_HEAT = 9,
+    NTALLY
+  };
+  double crossed[NTALLY];
+  // this rank's half-step of the buffer's force and heat rate taken at the
+  // step's start, reduced with the end of the step's
+  double start_half[4];
 
+  // add to 'half' (fx, fy, fz, heat) dt/2 times what the buffer's atoms
+  // take from the rest through forces and heat
+  void add_buffer_half_step(double *half) const;
   // signed distance of a point downstream of the plane
   double downstream_of_plane(const double *x) const { return direction * (x[axis] - position); }
   void inlet_velocity(const double *x, double *v) const;

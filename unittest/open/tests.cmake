@@ -7,6 +7,20 @@ foreach(inflow uniform parabolic)
   sphthermal_lammps_test(open.balance.${inflow} ${open_input}
     VARS check balance inflow ${inflow} LABELS validation PASS "balance: atoms in")
 endforeach()
+# energy and momentum through the planes: with the atoms that crossed and
+# the buffers' conduction and forces, the fluid's change to round-off
+# (unshifted and shifted, 1 and 2 ranks)
+set(flux_vars check flux scene stream inflow uniform push yes steps 1000)
+sphthermal_lammps_test(open.balance.flux ${open_input} VARS ${flux_vars}
+  LABELS unit PASS "flux: the fluid change")
+sphthermal_lammps_test(open.balance.flux_shifted ${open_input} VARS ${flux_vars} shift default
+  LABELS unit PASS "flux: the fluid change")
+sphthermal_test(open.mpi.balance_flux_np2 LABELS mpi PROCESSORS 2 PASS "flux: the fluid change"
+  FAIL ERROR WORKING_DIRECTORY ${CMAKE_CURRENT_LIST_DIR}
+  ENVIRONMENT OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
+  COMMAND ${MPIRUN} --oversubscribe -np 2 ${SPHTHERMAL_LMP} -in ${open_input}
+          -var plugin ${SPHTHERMAL_PLUGIN} -var check flux -var scene stream -var inflow uniform
+          -var push yes -var steps 1000 -log none)
 foreach(np 2 4)
   sphthermal_state_test(open.mpi.np${np} same ${open_input}
     ARGS --var check=state --var lo=-0.2 --var steps=600 NP ${np} RTOL 1e-10)
