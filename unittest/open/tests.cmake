@@ -44,4 +44,5 @@ sphthermal_python_test(open.dump_sort_id open/test_dump_sort.py LAMMPS LABELS un
 add_error_cases(open ${CMAKE_CURRENT_LIST_DIR}/errors.in)
 add_example_test(open.validation.channel_10 open-channel quick channel_10)
 add_example_test(open.validation.cylinder_10 open-cylinder quick cylinder_10)
+add_example_test(open.validation.shedding_10 open-cylinder shedding-quick shedding_10)
 sphthermal_python_test(open.reference.channel_entrance tools/test_channel_entrance.py LABELS unit)
