@@ -24,19 +24,13 @@ import sys
 
 import numpy as np
 
+# (beside this script: the error against an interval, as for test 2D-1)
+from analyse import interval_error
+
 BENCHMARK = {"St": (0.295, 0.305), "C_D,max": (3.22, 3.24), "C_L,max": (0.99, 1.01),
              "dp": (2.46, 2.50)}
 DIAMETER, SPEED = 0.1, 1.0
 HARMONICS = 3
-
-
-def interval_error(value, bounds):
-    """relative error (percent) against the nearest bound, 0 inside"""
-    lo, hi = bounds
-    if lo <= value <= hi:
-        return 0.0
-    bound = lo if value < lo else hi
-    return 100.0 * (value - bound) / bound
 
 
 def basis(t, f):
