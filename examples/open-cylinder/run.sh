@@ -29,6 +29,13 @@ here=$(cd "$(dirname "$0")" && pwd)
 # reference's results file (3.18844)
 NU_REF=$(awk '/^Nu *=/ {print $3}' "$root/tools/cylinder_heat_fe_results.txt")
 [ -n "$NU_REF" ] || { echo "no Nu in tools/cylinder_heat_fe_results.txt" >&2; exit 1; }
+# the cylinder's rings for <n> particles per diameter into <file> (the
+# half-spacing convention of the walls)
+cylinder_rings() {
+  "$PYTHON" "$root/tools/sph_boundary.py" disc --body --radius 0.05 --center 0.2,0.2 \
+    --dx "$("$PYTHON" -c "print(0.1 / $1)")" --layers 3 --fluid-layers 3 --section none \
+    -o "$2" 2> /dev/null
+}
 case "${1:-}" in
   shedding|shedding-quick)
     if [ "$1" = shedding ]; then
@@ -38,9 +45,7 @@ case "${1:-}" in
     fi
     for n in $sizes; do
       name=shedding_$n
-      "$PYTHON" "$root/tools/sph_boundary.py" disc --body --radius 0.05 --center 0.2,0.2 \
-        --dx "$("$PYTHON" -c "print(0.1 / $n)")" --layers 3 --fluid-layers 3 --section none \
-        -o $name.data 2> /dev/null
+      cylinder_rings $n $name.data
       $run "$LMP" -in "$here/in.cylinder" -var plugin "$PLUGIN" -var n $n -var re 100 \
         -var tend $tend -var data $name.data -var out $name -log log.$name > /dev/null
       echo "$n per diameter:"
@@ -66,10 +71,7 @@ case "${1:-}" in
 esac
 for n in $sizes; do
   name=cylinder_$n
-  # the cylinder's rings (the half-spacing convention of the walls)
-  "$PYTHON" "$root/tools/sph_boundary.py" disc --body --radius 0.05 --center 0.2,0.2 \
-    --dx "$("$PYTHON" -c "print(0.1 / $n)")" --layers 3 --fluid-layers 3 --section none \
-    -o $name.data 2> /dev/null
+  cylinder_rings $n $name.data
   $run "$LMP" -in "$here/in.cylinder" -var plugin "$PLUGIN" -var n $n -var tend $tend \
     -var data $name.data -var out $name -var heat yes -log log.$name > /dev/null
   echo "$n per diameter:"
