@@ -33,14 +33,15 @@
 #   noslip (surface: the walls' velocity from the fluid's across the
 #   plates; shepard: Adami's mean of the fluid near each wall particle).
 # settings = onset (unshifted) or convection: above onset, to a steady
-#   state (t = 0.8), the particles shifted and the flow pair's gradient
-#   corrected, as in the flagship cavity ('run.sh nu').
+#   state (t = 0.8), the particles shifted, with which the package corrects
+#   the flow pair's pressure gradient, as in the flagship cavity ('run.sh
+#   nu').
 
 variable plugin  index ../../build/sphthermalplugin.so
 variable settings index onset
 if "${settings} == convection" then &
   "variable tend index 0.8" "variable kemax index 1e30" "variable shift index yes" &
-  "variable flow index 'correction gradient'" "variable every index 200" &
+  "variable every index 200" &
 elif "${settings} != onset" &
   "print 'ERROR: settings ${settings}: onset or convection'" "quit 1"
 variable ra      index 3000

@@ -79,6 +79,9 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // (owned and ghost) B in sph_consistent.h's storage,
   // I where the support is incomplete and for wall particles
   int gradient_correction;
+  // the command's choice (-1: not given, the scene's default at init) and
+  // the default last logged
+  int gradient_request, gradient_logged;
   double **gradient_inverse;
   int nmax_gradient;
   // the density diffusion: Fourtakas's (Reece et al. 2024, eq 39) with the

@@ -28,6 +28,7 @@
 #include "sph_consistent.h"
 #include "sph_flow.h"
 #include "sph_hub.h"
+#include "sph_scene_defaults.h"
 #include "sph_support.h"
 #include "update.h"
 
@@ -85,7 +86,7 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
   heating = 0.0;        // Reece et al. 2024 and Ng et al. 2020 neglect it
   mean_pressure_held = 0;
   mean_pressure = 0.0;
-  gradient_correction = 0;
+  gradient_request = -1;    // the scene's default at init
   // Fourtakas's form equals Molteni's without gravity and keeps a column at
   // rest with it (examples/flow-hydrostatic): the default
   diffusion_form = DIFFUSION_BODY_FORCE;
@@ -146,9 +147,9 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
       mean_pressure = mean_pressure_held ? utils::numeric(FLERR, value, false, lmp) : 0.0;
     } else if (strcmp(arg[iarg], "correction") == 0) {
       if (strcmp(value, "gradient") == 0)
-        gradient_correction = 1;
+        gradient_request = 1;
       else if (strcmp(value, "none") == 0)
-        gradient_correction = 0;
+        gradient_request = 0;
       else
         error->all(FLERR, "Illegal {} command: unknown correction '{}' (none or gradient)", cmd,
                    value);
@@ -164,7 +165,7 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
                "Illegal {} command: xi is a factor of the cleary viscosity form only; viscosity {} "
                "does not use it",
                cmd, sphf_viscosity_name(viscosity_form));
-  if (gradient_correction && pressure_form != SPHF_P_AVERAGED)
+  if (gradient_request == 1 && pressure_form != SPHF_P_AVERAGED)
     error->all(FLERR,
                "Illegal {} command: correction gradient needs the averaged pressure form (the "
                "default), not pressure {}",
@@ -264,6 +265,16 @@ void PairSPHHarmonicVisc::init_style()
                                     "'diffusion fourtakas' (the default) reads it");
   }
 
+  // without 'correction' in the command, the scene's default (the
+  // correction is made for the averaged pressure form only)
+  if (gradient_request < 0 && pressure_form == SPHF_P_AVERAGED) {
+    const SPHSceneDefaults::Choice choice = SPHSceneDefaults::pressure_correction(lmp);
+    gradient_correction = choice.value;
+    SPHSceneDefaults::log(lmp, "Pair style sph/harmonic/visc", "correction",
+                          gradient_correction ? "gradient" : "none", choice, gradient_logged);
+  } else
+    gradient_correction = (gradient_request == 1);
+
   eta2 = init_kernel();
   eos_of.assign(atom->ntypes + 1, nullptr);
   for (int t = 1; t <= atom->ntypes; t++) eos_of[t] = materials->eos(t);
@@ -288,7 +299,7 @@ double PairSPHHarmonicVisc::init_one(int, int)
 void PairSPHHarmonicVisc::write_restart_settings(FILE *fp)
 {
   const int ints[6] = {kernel_kind,    pressure_form,      viscosity_form,
-                       diffusion_form, mean_pressure_held, gradient_correction};
+                       diffusion_form, mean_pressure_held, gradient_request};
   // xi_given only checks the command line
   const double doubles[9] = {cut_global, xi,         eta_factor, delta,        gravity[0],
                              gravity[1], gravity[2], heating,    mean_pressure};
@@ -322,7 +333,7 @@ void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
   heating = doubles[7];
   mean_pressure_held = ints[4];
   mean_pressure = doubles[8];
-  gradient_correction = ints[5];
+  gradient_request = ints[5];    // -1: the scene's default, again at init
 }
 
 /* ---------------------------------------------------------------------- */

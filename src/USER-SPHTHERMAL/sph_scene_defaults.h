@@ -31,6 +31,11 @@ namespace SPHSceneDefaults {
   // (SPHConductionWeights::Kind)
   Choice heat_correction(LAMMPS *lmp);
 
+  // 'correction' of pair sph/harmonic/visc (1: gradient, 0: none): the
+  // corrected pressure gradient in a buoyancy-driven flow of shifted
+  // particles, the plain one otherwise
+  Choice pressure_correction(LAMMPS *lmp);
+
   // 'eta' of pair sph/cleary/heat (number): 0.01 in a buoyancy-driven flow
   // of shifted particles, as the flow pair's, 0.1 (Cleary's) otherwise
   Choice heat_eta(LAMMPS *lmp);

@@ -4,8 +4,10 @@ sph/cleary/heat takes 'correction consistent', says so and applies it (the
 setup's count of corrected atoms), with or without fix sph/boussinesq;
 without shifting it takes none; a correction given in the command is kept
 and not called a default; after a restart without fix sph/boussinesq and
-fix sph/shift the default is taken again (none); the flow pair keeps its
-plain gradient (no scene default). The same for 'eta': 0.01 with buoyancy
+fix sph/shift the default is taken again (none). The flow pair's
+'correction': gradient with buoyancy and shifting, said and applied (the
+kinetic energy after the steps equals that of 'correction gradient' given
+and differs from 'correction none'), none otherwise. The same for 'eta': 0.01 with buoyancy
 and shifting, 0.1 otherwise, and applied: the fluid's energy after the step
 equals that of a run with 'eta 0.01' given, and differs from 'eta 0.1'.
 The background pressure of an equation of state that gives none: 0.1 rho0
@@ -25,6 +27,7 @@ from checks import finish, that
 from lammps_checks import lammps_arguments, run_input
 
 HEAT_DEFAULT = r"Pair style sph/cleary/heat: correction (\w+) \(the default ([^)]*)\)"
+FLOW_DEFAULT = r"Pair style sph/harmonic/visc: correction (\w+) \(the default ([^)]*)\)"
 FLOW_APPLIED = r"Pair style sph/harmonic/visc: correction gradient on \d+ fluid atoms"
 HEAT_APPLIED = r"Pair style sph/cleary/heat: correction consistent on \d+ of"
 ETA_DEFAULT = r"Pair style sph/cleary/heat: eta (\S+) \(the default ([^)]*)\)"
@@ -59,7 +62,16 @@ def main():
     that(taken(HEAT_DEFAULT, out) == ["consistent"] and re.search(HEAT_APPLIED, out) is not None,
          "with buoyancy and shifting the heat pair takes and applies correction consistent",
          str(taken(HEAT_DEFAULT, out)))
-    that(re.search(FLOW_APPLIED, out) is None, "the flow pair keeps the plain gradient")
+    ke_default = kinetic(out)
+    ke_given = kinetic(run(args, workdir, buoyant="yes", flow="correction gradient"))
+    plain = run(args, workdir, buoyant="yes", flow="correction none")
+    that(taken(FLOW_DEFAULT, out) == ["gradient"] and re.search(FLOW_APPLIED, out) is not None
+         and ke_default == ke_given and ke_default != kinetic(plain),
+         "with buoyancy and shifting the flow pair takes and applies correction gradient",
+         f"{taken(FLOW_DEFAULT, out)}: kinetic energy {ke_default!r}, given {ke_given!r}, "
+         f"none {kinetic(plain)!r}")
+    that(not taken(FLOW_DEFAULT, plain) and re.search(FLOW_APPLIED, plain) is None,
+         "the flow pair's correction given in the command is kept and not called a default")
     e_default = energy(out)
     e_small = energy(run(args, workdir, buoyant="yes", heat="eta 0.01"))
     e_cleary = energy(run(args, workdir, buoyant="yes", heat="eta 0.1"))
@@ -73,6 +85,9 @@ def main():
          "with buoyancy but no shifting the heat pair takes none", str(taken(HEAT_DEFAULT, out)))
     that(taken(ETA_DEFAULT, out) == ["0.1"], "with buoyancy but no shifting eta 0.1",
          str(taken(ETA_DEFAULT, out)))
+    that(taken(FLOW_DEFAULT, out) == ["none"] and re.search(FLOW_APPLIED, out) is None,
+         "with buoyancy but no shifting the flow pair takes the plain gradient",
+         str(taken(FLOW_DEFAULT, out)))
 
     out = run(args, workdir, buoyant="no", shift="no")
     that(taken(HEAT_DEFAULT, out) == ["none"] and re.search(HEAT_APPLIED, out) is None,
@@ -83,6 +98,9 @@ def main():
          and "the default with shifting, fix sph/shift shift" in out,
          "with shifting and no buoyancy (a driven flow) the heat pair takes and applies "
          "correction consistent", str(taken(HEAT_DEFAULT, out)))
+    that(taken(FLOW_DEFAULT, out) == ["none"] and re.search(FLOW_APPLIED, out) is None,
+         "with shifting and no buoyancy the flow pair takes the plain gradient",
+         str(taken(FLOW_DEFAULT, out)))
     e_default = energy(out)
     e_cleary = energy(run(args, workdir, buoyant="no", heat="eta 0.1"))
     that(taken(ETA_DEFAULT, out) == ["0.1"] and e_default == e_cleary,
@@ -130,6 +148,11 @@ def main():
          and taken(ETA_DEFAULT, after[1]) == ["0.1"],
          "the restart keeps eta's 'default', taken again without buoyancy (0.1)",
          str(taken(ETA_DEFAULT, after[-1])))
+    that(len(after) == 2 and taken(FLOW_DEFAULT, after[0]) == ["gradient"]
+         and taken(FLOW_DEFAULT, after[1]) == ["none"]
+         and re.search(FLOW_APPLIED, after[1]) is None,
+         "the restart keeps the flow pair's 'default', taken again without buoyancy (none)",
+         str(taken(FLOW_DEFAULT, after[-1])))
     finish()
 
 

@@ -62,7 +62,7 @@ sphthermal_python_test(convection.validation.rb_onset_20
   LABELS validation)
 # Rayleigh-Benard convection above onset (width 2H, 16 per H, Ra 1e4, to
 # t = 0.6, settings convection of in.rb: the package's defaults with fix
-# sph/shift and the flow pair's correction gradient): measured mean Nu
+# sph/shift, the flow pair's correction gradient among them): measured mean Nu
 # +0.35 % off the steady rolls of tools/rb_fv.py (+0.08 % at 20 per H to
 # t = 0.8, -1.90 % there without the gradient correction; +9.04 % at 16
 # per H with Adami's Shepard mean at the walls); checks that it stays
