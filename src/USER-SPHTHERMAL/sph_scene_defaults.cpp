@@ -9,7 +9,8 @@
    particles, and in the heated channel (Ng et al. 2020) it halves the
    downstream temperature error; on unshifted ones (the onset of
    Rayleigh-Benard convection) and on lattices the plain operator is the
-   closer one. The corrected pressure gradient in shifted buoyant flows:
+   closer one. The corrected pressure gradient in shifted buoyant flows
+   in 2-d:
    in the cavity it makes the velocity converge (the plain gradient's
    largest velocity stays 3.5-4 % low at Ra = 1e3 at every resolution) and
    with shifting and the consistent conduction keeps Nu within the
@@ -144,7 +145,16 @@ SPHSceneDefaults::Choice SPHSceneDefaults::heat_correction(LAMMPS *lmp)
 
 SPHSceneDefaults::Choice SPHSceneDefaults::pressure_correction(LAMMPS *lmp)
 {
-  return by_buoyant_shift(lmp, 0, 0.0, 1, 0.0);
+  const Choice buoyant = by_buoyant_shift(lmp, 0, 0.0, 1, 0.0);
+  // measured in 2-d only; in the 3-d cylindrical tank it made the flow lose
+  // its axisymmetry (rings of wall particles are not symmetric about every
+  // plane through the axis, and the corrected gradient follows them)
+  if (buoyant.value && lmp->domain->dimension == 3)
+    return {0,
+            "the default in 3-d, with buoyancy and shifting too: there the corrected gradient is "
+            "not validated (the cylindrical tank lost its axisymmetry with it)",
+            0.0};
+  return buoyant;
 }
 
 SPHSceneDefaults::Choice SPHSceneDefaults::heat_eta(LAMMPS *lmp)

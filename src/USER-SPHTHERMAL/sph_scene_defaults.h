@@ -33,7 +33,7 @@ namespace SPHSceneDefaults {
 
   // 'correction' of pair sph/harmonic/visc (1: gradient, 0: none): the
   // corrected pressure gradient in a buoyancy-driven flow of shifted
-  // particles, the plain one otherwise
+  // particles in 2-d, the plain one otherwise
   Choice pressure_correction(LAMMPS *lmp);
 
   // 'eta' of pair sph/cleary/heat (number): 0.01 in a buoyancy-driven flow
