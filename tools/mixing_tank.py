@@ -35,7 +35,7 @@ FIELDS = [("c_T", "T (K)"), ("c_rho", "rho (kg/m^3)"), ("c_mix[1]", "F (volume f
           ("c_mix[2]", "FTLE (1/s)"), ("c_mix[3]", "Robinson's M"), ("c_mix[4]", "VF-FTLE")]
 
 
-def write_tank_data(n, path):
+def write_tank_data(n, path, ring_multiple=1):
     """The particles of examples/mixing-tank-3d/in.tank3d, n spacings across
     the diameter and the height, written to path (tools/sph_boundary.py);
     returns the spacing. The wall surface lies half a spacing inside the
@@ -45,11 +45,12 @@ def write_tank_data(n, path):
     where the kernel's gradient is weak). The lids are the fluid's lattice,
     so that every column of fluid ends under a lid particle. n layers of
     fluid, the components split at mid-height; three wall layers fill the
-    Wendland support (4 dx) of the outermost fluid."""
+    Wendland support (4 dx) of the outermost fluid. ring_multiple: that of
+    sph_boundary.cylinder (4: the tank the same after a quarter turn)."""
     import sph_boundary
     dx = H / n
     tank = sph_boundary.cylinder(R + dx / 2, H + dx, dx, eps=0.99, layers=3, offset=(0.5, 0.5, 0.0),
-                                 z_split=(H + dx) / 2, lids="lattice")
+                                 z_split=(H + dx) / 2, lids="lattice", ring_multiple=ring_multiple)
     tank.write_data(path, rho=RHO0, cv=1006.0, T=T_COLD)
     return dx
 

@@ -550,7 +550,7 @@ def _ring(r, n, phase, z):
 
 
 def cylinder(radius, height, dx, eps=0.42, layers=1, offset=(0.5, 0.5, 0.5), center=(0.0, 0.0),
-             z_split=None, stagger=True, lids="rings"):
+             z_split=None, stagger=True, lids="rings", ring_multiple=1):
     """Closed cylindrical tank, axis along z through center = (cx, cy): the
     fluid fills r < radius, 0 < z < height. Cleary's rules in 3-d:
 
@@ -582,6 +582,11 @@ def cylinder(radius, height, dx, eps=0.42, layers=1, offset=(0.5, 0.5, 0.5), cen
 
     stagger: the rings of alternate planes (counted from the bottom through
     lids and curved wall alike) are turned by half their angular spacing.
+
+    ring_multiple: each ring's count rounded to a multiple of this instead
+    (4: with the interior's offsets (0.5, 0.5) the tank is the same after a
+    quarter turn about its axis; with 1, the default, a ring whose count is
+    not a multiple of 4 is symmetric about the plane y = 0 only).
     The data file always declares 6 atom types with a split, 5 without (types
     3 and 5 are empty with one layer)."""
     R, H, L = float(radius), float(height), int(layers)
@@ -608,10 +613,14 @@ def cylinder(radius, height, dx, eps=0.42, layers=1, offset=(0.5, 0.5, 0.5), cen
         lay.append(np.full(len(p), k))
         cur.append(np.full(len(p), c))
 
+    def ring_count(r):
+        q = int(ring_multiple)
+        return max(3, q * int(round(2.0 * math.pi * r / dx / q)))
+
     # curved wall: layer k on r = R + k dx, planes j = 1 .. m - 1 (vertical index v = j)
     for k in range(L):
         r = R + k * dx
-        n = max(3, int(round(2.0 * math.pi * r / dx)))
+        n = ring_count(r)
         for j in range(1, m):
             phi, p = _ring(r, n, phase(j, n), j * hz)
             add(p, np.column_stack([-np.cos(phi), -np.sin(phi), np.zeros(n)]), 2 if k == 0 else 3, k, 0)
@@ -646,7 +655,7 @@ def cylinder(radius, height, dx, eps=0.42, layers=1, offset=(0.5, 0.5, 0.5), cen
                 if r == 0.0:
                     p = np.array([[0.0, 0.0, z]])
                 else:
-                    n = max(3, int(round(2.0 * math.pi * r / dx)))
+                    n = ring_count(r)
                     p = _ring(r, n, phase(v, n), z)[1]
                 k = max(a, b)
                 add(p, np.tile([0.0, 0.0, -sign], (len(p), 1)), 4 if k == 0 else 5, k, c)

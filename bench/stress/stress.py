@@ -189,6 +189,64 @@ def analyse_tank3d(work, text, var):
             f"{t_spread:.1e} of theta_H - theta_C)"), finite
 
 
+def analyse_open_channel(work, text, var):
+    """examples/open-channel/analyse.py: the developed profile against
+    Poiseuille's in % of 1.5 U and -dp/dx against 12 mu U / H^2 (x >= 3 H,
+    from t = tend / 2), and at Re 20 the centre speed of the entrance
+    against tools/channel_entrance.py's."""
+    args = [os.path.join(EX, "open-channel", "analyse.py"), var["out"] + ".dump", "--re", var["re"],
+            "--c0", "2.0", "--n", var["n"], "--from", str(float(var["tend"]) / 2)]
+    if float(var["re"]) == 20.0:
+        args += ["--reference", os.path.join(EX, "open-channel", "entrance_re20.txt")]
+    out = run_analysis(work, args)
+    m = re.search(r"profile within (\S+) % of 1.5 U; .*\((\S+) %\)", out)
+    if not m:
+        return "analysis failed", False
+    profile, gradient = number(m.group(1)), number(m.group(2))
+    entrance = re.search(r"largest difference (\S+) of 1.5 U", out)
+    text_ = f"profile {profile:.2f} % of 1.5 U, -dp/dx {gradient:+.2f} % (Poiseuille)"
+    if entrance:
+        text_ += f"; entrance centre speed {entrance.group(1)} of 1.5 U (tools/channel_entrance.py)"
+    return text_, math.isfinite(profile) and math.isfinite(gradient)
+
+
+def analyse_open_cylinder(work, text, var):
+    """examples/open-cylinder/analyse.py: the mean C_D (from t = tend / 2)
+    against Schafer and Turek's interval at Re 20, and the heated
+    cylinder's Nu against tools/cylinder_heat_fe.py's."""
+    args = [os.path.join(EX, "open-cylinder", "analyse.py"), var["out"] + ".forces",
+            "--from", str(float(var["tend"]) / 2)]
+    with open(os.path.join(TOOLS, "cylinder_heat_fe_results.txt")) as f:
+        nu_ref = re.search(r"^Nu *= *(\S+)", f.read(), re.M).group(1)
+    reference = float(var["re"]) == 20.0
+    if reference:
+        args += ["--nu-ref", nu_ref]
+    out = run_analysis(work, args)
+    drag = re.search(r"^C_D +mean (\S+) .*?(?:error (\S+) %)?$", out, re.M)
+    nu = re.search(r"^Nu +mean (\S+) .*?(?:error (\S+) %)?$", out, re.M)
+    if not drag or not nu:
+        return "analysis failed", False
+    cd, nu_mean = number(drag.group(1)), number(nu.group(1))
+    finite = math.isfinite(cd) and math.isfinite(nu_mean)
+    if not reference:
+        return f"no reference (C_D {cd:.4f}, Nu {nu_mean:.4f})", finite
+    return (f"C_D {cd:.4f}, {drag.group(2)} % (Schafer and Turek); Nu {nu_mean:.4f}, "
+            f"{nu.group(2)} % (tools/cylinder_heat_fe.py)"), finite
+
+
+def cylinder_data(work, var):
+    """The cylinder's rings (tools/sph_boundary.py --body), as
+    examples/open-cylinder/run.sh makes them, n per diameter."""
+    var = dict(var)
+    data = os.path.join(work, "cylinder.data")
+    subprocess.run([sys.executable, os.path.join(TOOLS, "sph_boundary.py"), "disc", "--body",
+                    "--radius", "0.05", "--center", "0.2,0.2", "--dx", repr(0.1 / int(var["n"])),
+                    "--layers", "3", "--fluid-layers", "3", "--section", "none", "-o", data],
+                   check=True, capture_output=True, env=python_env())
+    var["data"] = data
+    return var
+
+
 def tank3d_data(work, var):
     """The particles of the 3-D tank (tools/mixing_tank.py), n across."""
     import mixing_tank
@@ -277,6 +335,25 @@ CASES = {
                   ("2x Re / 10x Ra", {}, "not applicable (the fluid's properties are fixed)")]
         + jitters(),
         analyse=analyse_tank3d),
+    "open-channel": dict(
+        input="open-channel/in.channel",
+        what="channel with an inlet and an outlet (fix sph/open), uniform inflow, Re 20, 10 across, "
+             "to t = 30 s",
+        base={"n": "10", "re": "20", "inflow": "uniform", "tend": "30", "every": "1",
+              "out": "channel"},
+        variants=[("base", {}, None), ("2x resolution", {"n": "20"}, None),
+                  ("2x Re", {"re": "40"}, None)] + jitters(),
+        analyse=analyse_open_channel),
+    "open-cylinder": dict(
+        input="open-cylinder/in.cylinder",
+        what="heated cylinder in a channel (Schafer and Turek 2D-1), Re 20, 10 per diameter, "
+             "to t = 4 s",
+        base={"n": "10", "re": "20", "tend": "4", "heat": "yes", "out": "cylinder"},
+        prepare=cylinder_data,
+        variants=[("base", {}, None),
+                  ("2x resolution", {"n": "20"}, COSTLY + ": 8 times the base)"),
+                  ("2x Re", {"re": "40"}, None)] + jitters(),
+        analyse=analyse_open_cylinder),
 }
 
 # the CI subset: short jittered runs (under 90 s in all)

@@ -68,6 +68,9 @@ def main():
     p.add_argument("dump")
     p.add_argument("--re", type=float, required=True)
     p.add_argument("--c0", type=float, required=True)
+    p.add_argument("--n", type=int, default=None,
+                   help="particles across H (default: from the rows of the first frame, a lattice; "
+                        "give it for a jittered start)")
     p.add_argument("--from", dest="t_from", type=float, default=0.0,
                    help="average the frames from this time on (default: the last frame only)")
     p.add_argument("--developed", type=float, default=3.0,
@@ -87,9 +90,12 @@ def main():
     times = frame_times(a.dump)
     chosen = [k for k, t in enumerate(times) if t >= a.t_from - 1e-9] if a.t_from > 0.0 else [-1]
     x, y, vx, rho = (np.concatenate([frames[k][name] for k in chosen]) for name in ("x", "y", "vx", "c_rho"))
-    # the spacing: the lattice's, from the rows of the first frame
-    rows = np.unique(np.round(frames[0]["y"], 9))
-    dx = float(np.min(np.diff(rows)))
+    # the spacing: H / n, or the lattice's, from the rows of the first frame
+    if a.n:
+        dx = H / a.n
+    else:
+        rows = np.unique(np.round(frames[0]["y"], 9))
+        dx = float(np.min(np.diff(rows)))
     length = round((x.max() + 0.5 * dx) / dx) * dx
     nu = U * H / a.re
     umax = 1.5 * U

@@ -31,6 +31,10 @@ Checks (each prints ok/FAIL and the value):
   data file  write_data / read_data round trip (positions, types, normals,
              masses rho dx^3, esph, a 3-d box around all particles); the
              command line writes the same particles as the module
+  rings      ring_multiple 4: each curved ring's count a multiple of 4, and
+             a quarter turn about the axis maps the tank (lattice lids,
+             interior offset dx/2) onto itself, type for type; with the
+             default 1 and counts not divisible by 4 it does not
   LAMMPS     (with --lmp and --plugin) read_data ... fix normals NULL Normals,
              run 0, write_dump: positions, types, masses and d_nx d_ny d_nz
              as written
@@ -280,5 +284,33 @@ that(np.array_equal(tl == 4, first) and np.array_equal(tl == 5, lidl & ~first),
      "lattice lids: type 4 the lid surfaces within r <= R, type 5 the rest")
 that(closest(xl[lidl]) >= dx * (1 - 1e-9) and closest(xl[sl.interior], xl[lidl]) >= eps * dx * (1 - 1e-12),
      "lattice lids: lid particles dx apart, at least eps dx from the interior")
+
+# ---------------------------------------------------------- ring_multiple
+def quarter_turn_misses(setup):
+    """Particles (of any type) that a quarter turn about the axis does not
+    put on a particle of the same type."""
+    p, t = setup.x, setup.type
+    turned = np.column_stack([-p[:, 1], p[:, 0], p[:, 2]])
+    key = {(round(a / dx * 1e6), round(b / dx * 1e6), round(c / dx * 1e6)): ty
+           for (a, b, c), ty in zip(p, t)}
+    return sum(key.get((round(a / dx * 1e6), round(b / dx * 1e6), round(c / dx * 1e6))) != ty
+               for (a, b, c), ty in zip(turned, t))
+
+
+for multiple in (1, 4):
+    sm = sb.cylinder(R, H, dx, eps=eps, layers=L, offset=(0.5, 0.5, 0.0), z_split=zs, lids="lattice",
+                     ring_multiple=multiple)
+    counts = [int(round(2.0 * math.pi * (R + k * dx) / dx / multiple)) * multiple for k in range(L)]
+    per_ring = [int(np.sum((sm.curve == 0) & (sm.layer == k)) // (round(H / dx) - 1)) for k in range(L)]
+    that(per_ring == counts, f"ring_multiple {multiple}: each curved ring holds its count rounded to a "
+         f"multiple of {multiple}", f"{per_ring}")
+    misses = quarter_turn_misses(sm)
+    if multiple == 4:
+        that(misses == 0, "ring_multiple 4: a quarter turn about the axis maps the tank onto itself",
+             f"{misses} particles missed")
+    else:
+        that(misses > 0 and any(c % 4 for c in counts),
+             "ring_multiple 1: rings of counts not divisible by 4 are not the same after a quarter turn",
+             f"counts {counts}, {misses} particles missed")
 
 finish()
