@@ -22,17 +22,14 @@ bench/convection/tank3d_pressure_correction.md), --dir (the runs'
 directories), --lmp, --plugin.
 """
 
-import argparse
 import os
-import re
 import subprocess
 
 import mixing_tank
 from sphthermal_tools.dump import read_frames
 from sphthermal_tools.log import thermo_tables
+from tank_pressure_correction import ROOT, arguments, loop_totals, write_table
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 SETTINGS = (("plain (default)", ""), ("corrected", "correction gradient"))
 
 
@@ -51,7 +48,7 @@ def run(args, rings, components, flow):
     if proc.returncode != 0:
         raise SystemExit(f"{' '.join(cmd)} failed in {work}:\n{proc.stdout[-2000:]}")
     log = open(os.path.join(work, "log.lammps")).read()
-    loops = re.findall(r"Loop time of (\S+) on \d+ procs for (\d+) steps", log)
+    steps, loop = loop_totals(log)
     last = read_frames(os.path.join(work, "tank.dump.final"))[-1][1]
     fluid = mixing_tank.fluid_of(last, 3)
     (spread, _), _ = mixing_tank.symmetry_3d({k: v[fluid] for k, v in last.items()}, dx)
@@ -59,17 +56,13 @@ def run(args, rings, components, flow):
     tables = [t for t in thermo_tables(log) if "c_vmax" in t]
     return {"spread": spread, "vmax": max(t["c_vmax"].max() for t in tables),
             "inside": f"{int(m['fluid_inside'].min())} of {int(fluid.sum())}",
-            "steps": sum(int(s) for _, s in loops), "loop": sum(float(t) for t, _ in loops)}
+            "steps": steps, "loop": loop}
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p = arguments(__doc__, "tank3d_pressure_correction.md", "tank3d_pressure_correction_runs")
     p.add_argument("--n", type=int, default=10)
     p.add_argument("--tend", type=float, default=1.0)
-    p.add_argument("--out", default=os.path.join(HERE, "tank3d_pressure_correction.md"))
-    p.add_argument("--dir", default="tank3d_pressure_correction_runs")
-    p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
-    p.add_argument("--plugin", default=os.path.join(ROOT, "build", "sphthermalplugin.so"))
     args = p.parse_args()
     args.dir = os.path.abspath(args.dir)
 
@@ -85,13 +78,12 @@ def main():
         for components in ("one", "two"):
             for name, flow in SETTINGS:
                 r = run(args, rings, components, flow)
-                lines.append(f"| {'round(2 pi r / dx)' if rings == 1 else 'a multiple of 4'} | {components} | {name} | "
+                counts = 'round(2 pi r / dx)' if rings == 1 else 'a multiple of 4'
+                lines.append(f"| {counts} | {components} | {name} | "
                              f"{r['spread']:.2e} | {r['vmax']:.4f} | {r['inside']} | {r['steps']} | "
                              f"{r['loop']:.0f} |")
                 print(lines[-1], flush=True)
-    with open(args.out, "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print(f"wrote {args.out}")
+    write_table(args.out, lines)
 
 
 if __name__ == "__main__":

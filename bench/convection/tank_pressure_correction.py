@@ -36,6 +36,28 @@ THETA_C, THETA_H = 283.0, 303.0
 SETTINGS = (("corrected (default)", ""), ("plain", "correction none"))
 
 
+def arguments(doc, out, runs):
+    """The parser of both tank comparisons with the options they share."""
+    p = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--out", default=os.path.join(HERE, out))
+    p.add_argument("--dir", default=runs)
+    p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
+    p.add_argument("--plugin", default=os.path.join(ROOT, "build", "sphthermalplugin.so"))
+    return p
+
+
+def loop_totals(log):
+    """The steps and the loop time (s) of every run of a LAMMPS log."""
+    loops = re.findall(r"Loop time of (\S+) on \d+ procs for (\d+) steps", log)
+    return sum(int(s) for _, s in loops), sum(float(t) for t, _ in loops)
+
+
+def write_table(path, lines):
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print(f"wrote {path}")
+
+
 def run(args, n, flow):
     work = os.path.join(args.dir, f"n{n}." + (flow.replace(" ", "_") or "default"))
     os.makedirs(work, exist_ok=True)
@@ -47,10 +69,10 @@ def run(args, n, flow):
     if proc.returncode != 0:
         raise SystemExit(f"{' '.join(cmd)} failed in {work}:\n{proc.stdout[-2000:]}")
     log = open(os.path.join(work, "log.lammps")).read()
-    loops = re.findall(r"Loop time of (\S+) on \d+ procs for (\d+) steps", log)
     tables = [t for t in thermo_tables(log) if "v_drho_min" in t]
     m = mixing_tank.read_mixing(os.path.join(work, "mixing.txt"))
-    row = {"steps": sum(int(s) for _, s in loops), "loop": sum(float(t) for t, _ in loops),
+    steps, loop = loop_totals(log)
+    row = {"steps": steps, "loop": loop,
            "drho": (min(t["v_drho_min"].min() for t in tables),
                     max(t["v_drho_max"].max() for t in tables)),
            "inside": int(m["fluid_inside"].min())}
@@ -61,14 +83,10 @@ def run(args, n, flow):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p = arguments(__doc__, "tank_pressure_correction.md", "tank_pressure_correction_runs")
     p.add_argument("--n", type=int, nargs="+", default=[16, 24, 32])
     p.add_argument("--tend", type=float, default=20.0)
     p.add_argument("--times", type=float, nargs="+", default=[2.0, 5.0, 10.0, 20.0])
-    p.add_argument("--out", default=os.path.join(HERE, "tank_pressure_correction.md"))
-    p.add_argument("--dir", default="tank_pressure_correction_runs")
-    p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
-    p.add_argument("--plugin", default=os.path.join(ROOT, "build", "sphthermalplugin.so"))
     args = p.parse_args()
     args.dir = os.path.abspath(args.dir)
 
@@ -90,9 +108,7 @@ def main():
                          f"{100 * r['drho'][1]:+.2f} | {r['inside']} of {n * n} | {r['steps']} | "
                          f"{r['loop']:.0f} |")
             print(lines[-1], flush=True)
-    with open(args.out, "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print(f"wrote {args.out}")
+    write_table(args.out, lines)
 
 
 if __name__ == "__main__":
