@@ -9,9 +9,8 @@
    particles, and in the heated channel (Ng et al. 2020) it halves the
    downstream temperature error; on unshifted ones (the onset of
    Rayleigh-Benard convection) and on lattices the plain operator is the
-   closer one. The corrected pressure gradient in shifted buoyant flows
-   in 2-d:
-   in the cavity it makes the velocity converge (the plain gradient's
+   closer one. The corrected pressure gradient in shifted buoyant flows in
+   2-d: in the cavity it makes the velocity converge (the plain gradient's
    largest velocity stays 3.5-4 % low at Ra = 1e3 at every resolution) and
    with shifting and the consistent conduction keeps Nu within the
    benchmark's bounds from Ra = 1e3 to 1e6; in the Rayleigh-Benard layer
