@@ -204,10 +204,10 @@ def analyse_open_channel(work, text, var):
         return "analysis failed", False
     profile, gradient = number(m.group(1)), number(m.group(2))
     entrance = re.search(r"largest difference (\S+) of 1.5 U", out)
-    text_ = f"profile {profile:.2f} % of 1.5 U, -dp/dx {gradient:+.2f} % (Poiseuille)"
+    result = f"profile {profile:.2f} % of 1.5 U, -dp/dx {gradient:+.2f} % (Poiseuille)"
     if entrance:
-        text_ += f"; entrance centre speed {entrance.group(1)} of 1.5 U (tools/channel_entrance.py)"
-    return text_, math.isfinite(profile) and math.isfinite(gradient)
+        result += f"; entrance centre speed {entrance.group(1)} of 1.5 U (tools/channel_entrance.py)"
+    return result, math.isfinite(profile) and math.isfinite(gradient)
 
 
 def analyse_open_cylinder(work, text, var):
@@ -235,14 +235,12 @@ def analyse_open_cylinder(work, text, var):
 
 
 def cylinder_data(work, var):
-    """The cylinder's rings (tools/sph_boundary.py --body), as
-    examples/open-cylinder/run.sh makes them, n per diameter."""
+    """The cylinder's rings (examples/open-cylinder/cylinder_rings.py), n
+    per diameter."""
     var = dict(var)
     data = os.path.join(work, "cylinder.data")
-    subprocess.run([sys.executable, os.path.join(TOOLS, "sph_boundary.py"), "disc", "--body",
-                    "--radius", "0.05", "--center", "0.2,0.2", "--dx", repr(0.1 / int(var["n"])),
-                    "--layers", "3", "--fluid-layers", "3", "--section", "none", "-o", data],
-                   check=True, capture_output=True, env=python_env())
+    subprocess.run([sys.executable, os.path.join(EX, "open-cylinder", "cylinder_rings.py"), var["n"],
+                    data], check=True, capture_output=True, env=python_env())
     var["data"] = data
     return var
 

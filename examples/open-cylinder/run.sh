@@ -29,12 +29,9 @@ here=$(cd "$(dirname "$0")" && pwd)
 # reference's results file (3.18844)
 NU_REF=$(awk '/^Nu *=/ {print $3}' "$root/tools/cylinder_heat_fe_results.txt")
 [ -n "$NU_REF" ] || { echo "no Nu in tools/cylinder_heat_fe_results.txt" >&2; exit 1; }
-# the cylinder's rings for <n> particles per diameter into <file> (the
-# half-spacing convention of the walls)
+# the cylinder's rings for <n> particles per diameter into <file>
 cylinder_rings() {
-  "$PYTHON" "$root/tools/sph_boundary.py" disc --body --radius 0.05 --center 0.2,0.2 \
-    --dx "$("$PYTHON" -c "print(0.1 / $1)")" --layers 3 --fluid-layers 3 --section none \
-    -o "$2" 2> /dev/null
+  "$PYTHON" "$here/cylinder_rings.py" "$1" "$2" 2> /dev/null
 }
 case "${1:-}" in
   shedding|shedding-quick)
