@@ -11,10 +11,11 @@ set -euo pipefail
 
 # liblapack-dev: LAMMPS's RHEO package (the bench's peer) needs LAPACK, which
 # Debian's repacked 4Feb2025 source does not bundle (no lib/linalg);
-# python3-docutils: the docs.rst tests (every page parses), left out without it
+# python3-docutils: the docs.rst tests (every page parses), left out without it;
+# libeigen3-dev: LAMMPS's MACHDYN package (the thermo-mechanical solids)
 packages="build-essential cmake ccache git dpkg-dev pkg-config libopenmpi-dev openmpi-bin
-  libfftw3-dev googletest libyaml-dev liblapack-dev python3-numpy python3-matplotlib python3-scipy
-  python3-docutils"
+  libfftw3-dev googletest libyaml-dev liblapack-dev libeigen3-dev python3-numpy python3-matplotlib
+  python3-scipy python3-docutils"
 
 missing=""
 for p in $packages; do

@@ -12,15 +12,17 @@
 
 #include "atom.h"
 #include "error.h"
+#include "memory.h"
 #include "sph_checks.h"
-#include "update.h"
 #include "sph_particle.h"
+#include "update.h"
 
 using namespace LAMMPS_NS;
 
 /* ---------------------------------------------------------------------- */
 
-ComputeSPHThermal::ComputeSPHThermal(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg)
+ComputeSPHThermal::ComputeSPHThermal(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), nmax(0), temperature(nullptr)
 {
   if (narg != 3)
     error->all(FLERR, "Illegal compute sph/thermal command: it takes no arguments after the style");
@@ -32,12 +34,15 @@ ComputeSPHThermal::ComputeSPHThermal(LAMMPS *lmp, int narg, char **arg) : Comput
   size_vector = 4;
   extvector = 0;    // intensive: thermo does not divide by the atom count
   vector = new double[size_vector];
+  peratom_flag = 1;    // the temperature of each atom (0 outside the group)
+  size_peratom_cols = 0;
   sums[0] = sums[1] = sums[2] = 0.0;
 }
 
 ComputeSPHThermal::~ComputeSPHThermal()
 {
   delete[] vector;
+  memory->destroy(temperature);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -69,14 +74,35 @@ void ComputeSPHThermal::compute_vector()
   double local[3] = {0.0, 0.0, 0.0};
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    const double m = particles.mass(i);
-    local[0] += m * atom->esph[i];
-    local[1] += m * atom->cv[i];
-    local[2] += m * atom->desph[i];
+    local[0] += particles.thermal_energy(i);
+    local[1] += particles.mass(i) * atom->cv[i];
+    local[2] += particles.heating_rate(i, atom->desph);
   }
   MPI_Allreduce(local, sums, 3, MPI_DOUBLE, MPI_SUM, world);
   vector[0] = sums[0];
   vector[1] = sums[1];
   vector[2] = (sums[1] > 0.0) ? sums[0] / sums[1] : 0.0;
   vector[3] = sums[2];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeSPHThermal::compute_peratom()
+{
+  invoked_peratom = update->ntimestep;
+  if (atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(temperature);
+    memory->create(temperature, nmax, "sph/thermal:temperature");
+    vector_atom = temperature;
+  }
+  const SPHParticles particles(atom);
+  const int *const mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++)
+    temperature[i] = (mask[i] & groupbit) ? particles.temperature(i) : 0.0;
+}
+
+double ComputeSPHThermal::memory_usage()
+{
+  return (double) nmax * sizeof(double);
 }

@@ -17,7 +17,9 @@ ComputeStyle(sph/thermal,ComputeSPHThermal);
 namespace LAMMPS_NS {
 
 // The thermal books of a group: its thermal energy, heat capacity,
-// heat-capacity-weighted mean temperature and heating rate, for thermo.
+// heat-capacity-weighted mean temperature and heating rate, for thermo;
+// and per atom its temperature, for dumps (sph_particle.h: MACHDYN solids
+// included, whose T is not esph / cv).
 class ComputeSPHThermal : public Compute {
  public:
   ComputeSPHThermal(class LAMMPS *, int, char **);
@@ -25,9 +27,13 @@ class ComputeSPHThermal : public Compute {
   void init() override;
   double compute_scalar() override;
   void compute_vector() override;
+  void compute_peratom() override;
+  double memory_usage() override;
 
  protected:
   double sums[3];    // sum m e, sum m cv, sum m de/dt over the group
+  int nmax;
+  double *temperature;    // per atom
 };
 
 }    // namespace LAMMPS_NS

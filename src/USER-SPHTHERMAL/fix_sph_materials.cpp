@@ -36,13 +36,15 @@ static const char cmd[] = "fix sph/materials";
 /* ---------------------------------------------------------------------- */
 
 FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), state(new SPHAtomState(lmp, this)), eos_type(nullptr), eos_set(nullptr),
-    cv_type(nullptr), rho0_type(nullptr), expansion_type(nullptr), c0_kind(nullptr),
+    Fix(lmp, narg, arg), state(new SPHAtomState(lmp, this)),
+    solids(new SPHMachdynSolids(lmp, this)), eos_type(nullptr), eos_set(nullptr), cv_type(nullptr),
+    rho0_type(nullptr), expansion_type(nullptr), tref_type(nullptr), c0_kind(nullptr),
     background_relative(nullptr), background_given(nullptr), background_logged(-1),
     speed_type(nullptr)
 {
   ntypes = atom->ntypes;
   conductivity_laws.resize(ntypes + 1);
+  energy_convention.assign(ntypes + 1, -1);
   viscosity_laws.resize(ntypes + 1);
   for (int i = 0; i <= ntypes; i++) {
     memset(&conductivity_laws[i].law, 0, sizeof(sphm_law));
@@ -56,6 +58,7 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
   memory->create(cv_type, ntypes + 1, "sph/materials:cv");
   memory->create(rho0_type, ntypes + 1, "sph/materials:rho0");
   memory->create(expansion_type, ntypes + 1, "sph/materials:expansion");
+  memory->create(tref_type, ntypes + 1, "sph/materials:tref");
   memory->create(c0_kind, ntypes + 1, "sph/materials:c0_kind");
   memory->create(background_relative, ntypes + 1, "sph/materials:background_relative");
   memory->create(background_given, ntypes + 1, "sph/materials:background_given");
@@ -68,6 +71,7 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
     speed_type[i] = 0.0;
     cv_type[i] = rho0_type[i] = -1.0;
     expansion_type[i] = 0.0;
+    tref_type[i] = NAN;
   }
 
   if (narg < 4)
@@ -145,11 +149,14 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
 FixSPHMaterials::~FixSPHMaterials()
 {
   delete state;
+  solids->delete_vector();
+  delete solids;
   delete[] eos_type;
   memory->destroy(eos_set);
   memory->destroy(cv_type);
   memory->destroy(rho0_type);
   memory->destroy(expansion_type);
+  memory->destroy(tref_type);
   memory->destroy(c0_kind);
   memory->destroy(background_relative);
   memory->destroy(background_given);
@@ -170,6 +177,7 @@ int FixSPHMaterials::setmask()
 void FixSPHMaterials::init()
 {
   state->init();
+  prepare_solids();
   for (int i = 0; i <= ntypes; i++) conductivity_laws[i].warned = viscosity_laws[i].warned = 0;
   default_background();
 }
@@ -206,6 +214,8 @@ void FixSPHMaterials::default_background()
 void FixSPHMaterials::setup_pre_force(int /*vflag*/)
 {
   state->stale();
+  solids->setup();
+  solids->mark();
   int pending = 0;
   for (int t = 1; t <= ntypes; t++) pending |= (c0_kind[t] == C0_PENDING);
   // fix sph/boussinesq derived its types' at its init; the rest from the flow
@@ -399,6 +409,13 @@ int FixSPHMaterials::parse_property(int ilo, int ihi, const std::vector<std::str
     return 2;
   }
 
+  if (name == "tref") {
+    if (left < 1) error->all(FLERR, "Illegal {}: missing value after '{}'", where, name);
+    const double value = utils::numeric(FLERR, words[iword + 1].c_str(), false, lmp);
+    for (int i = ilo; i <= ihi; i++) tref_type[i] = value;
+    return 2;
+  }
+
   if (name == "expansion") {
     if (left < 1) error->all(FLERR, "Illegal {}: missing value after '{}'", where, name);
     const double value = utils::numeric(FLERR, words[iword + 1].c_str(), false, lmp);
@@ -410,8 +427,8 @@ int FixSPHMaterials::parse_property(int ilo, int ihi, const std::vector<std::str
   if (name == "eos") return parse_eos(ilo, ihi, words, iword, where);
 
   error->all(FLERR,
-             "Illegal {}: unknown property '{}' (conductivity, viscosity, eos, cv, rho0 or "
-             "expansion)",
+             "Illegal {}: unknown property '{}' (conductivity, viscosity, eos, cv, rho0, "
+             "expansion or tref)",
              where, name);
   return 0;
 }

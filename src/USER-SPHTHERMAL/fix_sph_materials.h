@@ -15,6 +15,7 @@ FixStyle(sph/materials,FixSPHMaterials);
 #include "fix.h"
 #include "sph_atom_state.h"
 #include "sph_eos.h"
+#include "sph_machdyn.h"
 #include "sph_material_laws.h"
 
 #include <string>
@@ -29,6 +30,7 @@ class FixSPHMaterials : public Fix {
  public:
   FixSPHMaterials(class LAMMPS *, int, char **);
   ~FixSPHMaterials() override;
+  void post_constructor() override { solids->create_vector(); }
   int setmask() override;
   double compute_array(int, int) override;
   void *extract(const char *, int &) override;
@@ -57,7 +59,11 @@ class FixSPHMaterials : public Fix {
   // the per-atom state is stale before every force evaluation; at the
   // first, every 'auto' speed of sound of the run's types must be known
   void setup_pre_force(int) override;
-  void pre_force(int) override { state->stale(); }
+  void pre_force(int) override
+  {
+    state->stale();
+    solids->mark();
+  }
   void min_pre_force(int) override { state->stale(); }
   // the per-atom state the pair styles derive, filled once per force
   // evaluation (sph_atom_state.h)
@@ -78,6 +84,23 @@ class FixSPHMaterials : public Fix {
   double cv(int type) const { return cv_type[type]; }
   double rho0(int type) const { return rho0_type[type]; }
   double expansion(int type) const { return expansion_type[type]; }
+  // sph/set temperature gave the atoms of a type esph in the convention of a
+  // MACHDYN solid (1) or of atom style sph (0) (sph_particle.h)
+  void note_energy_convention(int type, int machdyn) { energy_convention[type] = machdyn; }
+  int energy_convention_of(int type) const { return energy_convention[type]; }
+  // reference temperature of a MACHDYN solid type (NaN when not given)
+  double tref(int type) const { return tref_type[type]; }
+  // the MACHDYN solids of the run (pair smd/tlsph's types)
+  const SPHMachdynSolids &machdyn() const { return *solids; }
+  // find the solids, give their atoms cv and rho and mark them (at this
+  // fix's init; a style that writes their energy at its own init calls it
+  // first, as the fixes' order is the input's)
+  void prepare_solids()
+  {
+    solids->init();
+    solids->setup();
+    solids->mark();
+  }
 
   // 'eos ... auto': the speed of sound of a type is found from the scene at
   // the first run (fix sph/boussinesq's buoyancy at its init, the flow's
@@ -102,10 +125,12 @@ class FixSPHMaterials : public Fix {
   };
   int ntypes;
   SPHAtomState *state;
+  SPHMachdynSolids *solids;
   std::vector<MaterialLaw> conductivity_laws, viscosity_laws;    // index: type
   sphe_eos *eos_type;
   int *eos_set;
-  double *cv_type, *rho0_type, *expansion_type;
+  double *cv_type, *rho0_type, *expansion_type, *tref_type;
+  std::vector<int> energy_convention;    // per type: -1 not set by sph/set, else machdyn
   enum { C0_GIVEN = 0, C0_PENDING, C0_FOUND };
   int *c0_kind;                   // per type: given, 'auto' pending or found
   double *background_relative;    // per type: 'background B relative' B, else NaN

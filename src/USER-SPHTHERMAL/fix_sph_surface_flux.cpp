@@ -18,8 +18,8 @@
 #include "force.h"
 #include "sph_checks.h"
 #include "sph_hub.h"
-#include "update.h"
 #include "sph_particle.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
@@ -39,8 +39,9 @@ FixSPHSurfaceFlux::FixSPHSurfaceFlux(LAMMPS *lmp, int narg, char **arg) :
   if (!atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Fix sph/surface/flux requires atom style sph (esph, desph, cv)");
   if (narg < 4)
-    error->all(FLERR,
-               "Illegal fix sph/surface/flux command: expected 'flux <q>' or 'convection <h> <T_inf>'");
+    error->all(
+        FLERR,
+        "Illegal fix sph/surface/flux command: expected 'flux <q>' or 'convection <h> <T_inf>'");
 
   int iarg = 3;
   if (strcmp(arg[iarg], "flux") == 0) {
@@ -55,7 +56,8 @@ FixSPHSurfaceFlux::FixSPHSurfaceFlux(LAMMPS *lmp, int narg, char **arg) :
     h_transfer = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     t_ambient = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
     if (h_transfer < 0.0)
-      error->all(FLERR, "Illegal fix sph/surface/flux command: heat transfer coefficient {} must be >= 0",
+      error->all(FLERR,
+                 "Illegal fix sph/surface/flux command: heat transfer coefficient {} must be >= 0",
                  arg[iarg + 1]);
     iarg += 3;
   } else
@@ -138,17 +140,20 @@ void FixSPHSurfaceFlux::add_flux(int first)
   const int *const mask = atom->mask;
   double *const desph = atom->desph;
 
-  double rate_local = 0.0;
+  // [0] into particles integrated as by fix sph (half steps), [1] into
+  // MACHDYN solids, whose fix smd/integrate_tlsph applies a step's rate
+  // once, for the whole step
+  double rate_local[2] = {0.0, 0.0};
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const double q = convective ? h_transfer * (t_ambient - particles.temperature(i)) : q_given;
-    desph[i] += q * area / particles.mass(i);
-    rate_local += q * area;
+    desph[i] += q * area / particles.mass(i) * particles.esph_per_specific(i);
+    rate_local[particles.machdyn(i) ? 1 : 0] += q * area;
   }
-  double rate;
-  MPI_Allreduce(&rate_local, &rate, 1, MPI_DOUBLE, MPI_SUM, world);
-  if (!first) energy += dt_half * (rate_previous + rate);
-  rate_previous = rate;
+  double rate[2];
+  MPI_Allreduce(rate_local, rate, 2, MPI_DOUBLE, MPI_SUM, world);
+  if (!first) energy += dt_half * (rate_previous + rate[0]) + update->dt * rate[1];
+  rate_previous = rate[0];
 }
 
 /* ---------------------------------------------------------------------- */

@@ -11,10 +11,12 @@
 
 #include "atom.h"
 #include "error.h"
+#include "fix_sph_materials.h"
 #include "fix_sph_wall_adiabatic.h"
 #include "fix_sph_wall_dirichlet.h"
 #include "sph_checks.h"
 #include "sph_hub.h"
+#include "sph_particle.h"
 
 #include <cstring>
 
@@ -65,11 +67,9 @@ void FixSPHWallIsothermal::init()
       false, true);
   SPHCheck::atom_state(lmp, FLERR, "Fix sph/wall/isothermal", groupbit, SPHCheck::CV);
   // the wall is at its temperature before the first force evaluation
-  const double *const cv = atom->cv;
-  const int *const mask = atom->mask;
-  double *const esph = atom->esph;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (mask[i] & groupbit) esph[i] = cv[i] * t_wall;
+  for (FixSPHMaterials *materials : SPHHub(lmp).fixes<FixSPHMaterials>())
+    materials->prepare_solids();
+  hold();
 }
 
 /* ---------------------------------------------------------------------- */
@@ -91,9 +91,18 @@ void FixSPHWallIsothermal::post_force(int /*vflag*/)
 void FixSPHWallIsothermal::hold_and_tally(int first)
 {
   tally(first, 1);
-  const double *const cv = atom->cv;
+  hold();
+}
+
+/* ----------------------------------------------------------------------
+   every atom of the group at the wall temperature
+------------------------------------------------------------------------- */
+
+void FixSPHWallIsothermal::hold()
+{
+  const SPHParticles particles(atom);
   const int *const mask = atom->mask;
   double *const esph = atom->esph;
   for (int i = 0; i < atom->nlocal; i++)
-    if (mask[i] & groupbit) esph[i] = cv[i] * t_wall;
+    if (mask[i] & groupbit) esph[i] = particles.energy_at(i, t_wall);
 }

@@ -25,9 +25,10 @@ class FixSPHWallIsothermal : public FixSPHWallTally {
   void post_force(int) override;
 
  protected:
-  double t_wall;            // the wall's temperature
+  double t_wall;    // the wall's temperature
 
   void hold_and_tally(int first);
+  void hold();
 };
 
 }    // namespace LAMMPS_NS

@@ -15,8 +15,8 @@
 #include "force.h"
 #include "memory.h"
 #include "sph_checks.h"
-#include "update.h"
 #include "sph_particle.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
@@ -29,8 +29,8 @@ static constexpr int RESTART_VERSION = 1;
 /* ---------------------------------------------------------------------- */
 
 FixSPHWallTally::FixSPHWallTally(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), spacing(0.0), rate_previous(0.0), rate(0.0), energy(0.0),
-    wall(nullptr), callbacks_added(0)
+    Fix(lmp, narg, arg), spacing(0.0), rate_previous(0.0), rate(0.0), energy(0.0), wall(nullptr),
+    callbacks_added(0)
 {
   scalar_flag = 1;
   vector_flag = 1;
@@ -90,20 +90,26 @@ void FixSPHWallTally::tally(int first, int zero_rates)
   // they have it)
   const double dt_half = 0.5 * update->dt * force->ftm2v;
 
-  double rate_local = 0.0;
+  // the energy taken up as the wall's integrator would have taken it: fix
+  // sph's two half steps, or for a MACHDYN solid the one whole step of fix
+  // smd/integrate_tlsph (sph_particle.h)
+  double local[2] = {0.0, 0.0};    // rate into particles of fix sph, into MACHDYN solids
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    const double rate_i = particles.mass(i) * desph[i];
-    if (!first) wall[i][1] += dt_half * (wall[i][0] + rate_i);
+    const double rate_i = particles.heating_rate(i, desph);
+    const bool solid = particles.machdyn(i);
+    if (!first) wall[i][1] += solid ? update->dt * rate_i : dt_half * (wall[i][0] + rate_i);
     wall[i][0] = rate_i;
     if (spacing > 0.0) wall[i][2] = rate_i / area;
-    rate_local += rate_i;
+    local[solid ? 1 : 0] += rate_i;
     if (zero_rates) desph[i] = 0.0;
   }
 
-  MPI_Allreduce(&rate_local, &rate, 1, MPI_DOUBLE, MPI_SUM, world);
-  if (!first) energy += dt_half * (rate_previous + rate);
-  rate_previous = rate;
+  double sums[2];
+  MPI_Allreduce(local, sums, 2, MPI_DOUBLE, MPI_SUM, world);
+  if (!first) energy += dt_half * (rate_previous + sums[0]) + update->dt * sums[1];
+  rate = sums[0] + sums[1];
+  rate_previous = sums[0];
 }
 
 /* ----------------------------------------------------------------------

@@ -27,6 +27,7 @@
 #include "sph_consistent.h"
 #include "sph_dispatch.h"
 #include "sph_hub.h"
+#include "sph_particle.h"
 #include "sph_scene_defaults.h"
 #include "sph_support.h"
 #include "update.h"
@@ -99,6 +100,7 @@ void PairSPHClearyHeat::begin_compute()
   refresh_pairs = (weights || interface) && !pairs_current();
   if (relax_wanted) zero_relax_rate();
   if (refresh_pairs) refresh_support();
+  begin_solid_rates();
 }
 
 /* ----------------------------------------------------------------------
@@ -153,10 +155,35 @@ void PairSPHClearyHeat::eval_pairs(int ifrom, int ito, double *desph, double *re
 
 void PairSPHClearyHeat::end_compute()
 {
+  end_solid_rates();
   check_rates(atom->desph, "desph");
   if (refresh_pairs && update->setupflag) report_setup();
   if (!flows.empty()) tally_flows();
   if (relax_wanted) finish_relax();
+}
+
+/* ----------------------------------------------------------------------
+   the rates of the MACHDYN solid atoms: the loop's per unit mass, esph's
+   per particle (sph_particle.h)
+------------------------------------------------------------------------- */
+
+void PairSPHClearyHeat::begin_solid_rates()
+{
+  solid_desph_before.clear();
+  if (!materials->machdyn().any()) return;
+  const int nlocal = atom->nlocal;
+  solid_desph_before.assign(atom->desph, atom->desph + nlocal);
+}
+
+void PairSPHClearyHeat::end_solid_rates()
+{
+  if (solid_desph_before.empty()) return;
+  const SPHParticles particles(atom);
+  double *const desph = atom->desph;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (particles.machdyn(i))
+      desph[i] = solid_desph_before[i] +
+          particles.esph_per_specific(i) * (desph[i] - solid_desph_before[i]);
 }
 
 /* ----------------------------------------------------------------------
@@ -388,7 +415,8 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
 void PairSPHClearyHeat::init_style()
 {
   if (!atom->esph_flag || !atom->cv_flag || !atom->rho_flag)
-    error->all(FLERR, "Pair style sph/cleary/heat requires atom style sph (esph, desph, cv, rho)");
+    error->all(FLERR, "Pair style sph/cleary/heat requires atom style sph (esph, desph, cv, rho){}",
+               atom->smd_flag ? "; with MACHDYN's solids, atom_style hybrid sph smd" : "");
 
   materials = FixSPHMaterials::find(lmp, "Pair style sph/cleary/heat");
   flows.clear();    // the fixes that want them ask again at their init

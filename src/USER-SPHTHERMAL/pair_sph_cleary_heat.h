@@ -110,6 +110,13 @@ class PairSPHClearyHeat : public PairSPHKernel {
   int relax_wanted;
   double *relax_rate;
   int nmax_relax;
+  // desph of the owned MACHDYN solid atoms before the pair loop: the loop
+  // adds rates per unit mass, which end_compute() turns into theirs
+  // (sph_particle.h; pair smd/tlsph needs newton pair off, so no ghost
+  // holds a share)
+  std::vector<double> solid_desph_before;
+  void begin_solid_rates();
+  void end_solid_rates();
   struct HeatFlow {
     int to, from;    // group bits
     double power;

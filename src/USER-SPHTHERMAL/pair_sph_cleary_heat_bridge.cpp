@@ -28,6 +28,7 @@
 #include "sph_conduction.h"
 #include "sph_consistent.h"
 #include "sph_hub.h"
+#include "sph_machdyn.h"
 #include "sph_particle.h"
 #include "sph_support.h"
 #include "update.h"
@@ -48,6 +49,8 @@ using namespace LAMMPS_NS;
 int PairSPHClearyHeat::flow_loop_possible()
 {
   if (loop_own || correct != SPHConductionWeights::NONE || mean == SPHC_INTERFACE) return 0;
+  // the solids' rates are made per particle after this style's own loop
+  if (!SPHMachdynSolids::tlsph_types(lmp).empty()) return 0;
   if (conductivity_varies && mean != SPHC_HARMONIC) return 0;
   // (the /omp styles too, named as such in the hybrid)
   SPHHub hub(lmp);

@@ -472,7 +472,8 @@ void SPHMirror::return_heat(const std::vector<double> &rate, Fix *owner)
   SPHCompat::reverse_comm(comm, owner);
   double *const desph = atom->desph;
   for (int j = 0; j < nlocal; j++)
-    if (returned[j] != 0.0) desph[j] += returned[j] / particles.mass(j);
+    if (returned[j] != 0.0)
+      desph[j] += returned[j] / particles.mass(j) * particles.esph_per_specific(j);
 }
 
 int SPHMirror::pack_reverse_comm(int n, int first, double *buf)

@@ -12,20 +12,72 @@ namespace LAMMPS_NS {
 
 // What an SPH particle's state derives from the atom style's arrays, defined
 // once for every style: its mass (per-atom rmass where the atom style has it,
-// per-type mass otherwise), temperature T = esph / cv and volume m / rho.
+// per-type mass otherwise), temperature and volume m / rho.
+//
+// The energy convention, here and nowhere else. Two kinds of particle hold
+// esph differently:
+//  - atom style sph (the fluids, the held solids): esph is the specific
+//    internal energy, T = esph / cv;
+//  - a MACHDYN solid (a type of pair smd/tlsph, in atom_style hybrid sph
+//    smd): esph is the particle's internal energy above its type's
+//    reference temperature T0, T = T0 + esph / (m cv), as MACHDYN's
+//    pair smd/tlsph adds the work of its stress to it and its Johnson-Cook
+//    model and equations of state read it.
+// fix sph/materials marks the MACHDYN solids: the per-atom vectors
+// 'sph_machdyn' (SOLID_VECTOR, 1 for their atoms, 0 for every other atom,
+// also for an atom made since the last marking) and 'sph_energy_t0'
+// (T0_VECTOR, their T0), for owned and ghost atoms alike (sph_machdyn.h);
+// a scene whose atom style is not smd (hybrid) has no such vectors.
 // A view of this step's arrays: make one where the arrays are read (they
 // move when atoms are added), for owned and ghost atoms alike.
 class SPHParticles {
  public:
-  explicit SPHParticles(const Atom *atom) :
+  static constexpr const char *SOLID_VECTOR = "sph_machdyn";
+  static constexpr const char *T0_VECTOR = "sph_energy_t0";
+
+  explicit SPHParticles(Atom *atom) :
       rmass((atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr), type_mass(atom->mass),
-      type(atom->type), esph(atom->esph), cv(atom->cv), rho(atom->rho)
+      type(atom->type), esph(atom->esph), cv(atom->cv), rho(atom->rho), solid(nullptr), t0(nullptr)
   {
+    if (!atom->smd_flag) return;
+    int flag, cols;
+    const int isolid = atom->find_custom(SOLID_VECTOR, flag, cols);
+    const int it0 = atom->find_custom(T0_VECTOR, flag, cols);
+    if (isolid < 0 || it0 < 0) return;
+    solid = atom->ivector[isolid];
+    t0 = atom->dvector[it0];
   }
 
   double mass(int i) const { return rmass ? rmass[i] : type_mass[type[i]]; }
-  double temperature(int i) const { return esph[i] / cv[i]; }
   double volume(int i) const { return mass(i) / rho[i]; }
+  // whether atom i holds its energy as a MACHDYN solid does
+  bool machdyn(int i) const { return solid && solid[i]; }
+  double temperature(int i) const
+  {
+    return machdyn(i) ? t0[i] + esph[i] / (mass(i) * cv[i]) : esph[i] / cv[i];
+  }
+  // the esph of atom i at temperature T
+  double energy_at(int i, double T) const
+  {
+    return machdyn(i) ? machdyn_energy(mass(i), cv[i], T, t0[i]) : cv[i] * T;
+  }
+  // a MACHDYN solid particle's esph: its energy above T0
+  static double machdyn_energy(double m, double cv, double T, double T0)
+  {
+    return m * cv * (T - T0);
+  }
+  // esph per unit of specific energy: a heating rate per unit mass times
+  // this is the rate of esph
+  double esph_per_specific(int i) const { return machdyn(i) ? mass(i) : 1.0; }
+  // the thermal energy m cv T of atom i and its rate of change
+  double thermal_energy(int i) const
+  {
+    return machdyn(i) ? esph[i] + mass(i) * cv[i] * t0[i] : mass(i) * esph[i];
+  }
+  double heating_rate(int i, const double *desph) const
+  {
+    return machdyn(i) ? desph[i] : mass(i) * desph[i];
+  }
 
   // the masses of atoms 0..n-1 into 'out'
   void masses(double *out, int n) const
@@ -37,13 +89,18 @@ class SPHParticles {
   }
   void temperatures(double *out, int n) const
   {
-    for (int i = 0; i < n; i++) out[i] = esph[i] / cv[i];
+    if (solid)
+      for (int i = 0; i < n; i++) out[i] = temperature(i);
+    else
+      for (int i = 0; i < n; i++) out[i] = esph[i] / cv[i];
   }
 
  private:
   const double *rmass, *type_mass;
   const int *type;
   const double *esph, *cv, *rho;
+  const int *solid;    // per atom: 1 for a MACHDYN solid
+  const double *t0;    // per atom: its T0
 };
 
 }    // namespace LAMMPS_NS

@@ -21,6 +21,8 @@
 #include "sph_checks.h"
 #include "sph_compat.h"
 #include "sph_eos.h"
+#include "sph_machdyn.h"
+#include "sph_particle.h"
 #include "sph_sound_speed.h"
 #include "variable.h"
 
@@ -44,9 +46,10 @@ void SPHSet::command(int narg, char **arg)
   if (!atom->rho_flag || !atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "{} command requires atom style sph (rho, esph, cv)", cmd);
   if (narg < 2)
-    error->all(FLERR,
-               "Illegal {} command: expected 'sph/set <group> materials|temperature|hydrostatic ...'",
-               cmd);
+    error->all(
+        FLERR,
+        "Illegal {} command: expected 'sph/set <group> materials|temperature|hydrostatic ...'",
+        cmd);
   const int igroup = group->find(arg[0]);
   if (igroup < 0) error->all(FLERR, "Illegal {} command: no group {}", cmd, arg[0]);
   groupbit = group->bitmask[igroup];
@@ -93,7 +96,8 @@ void SPHSet::command(int narg, char **arg)
       level = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       iarg += 2;
       if (iarg < narg && strcmp(arg[iarg], "move") == 0) {
-        if (iarg + 1 >= narg) error->all(FLERR, "Illegal {} command: missing value after 'move'", cmd);
+        if (iarg + 1 >= narg)
+          error->all(FLERR, "Illegal {} command: missing value after 'move'", cmd);
         move = SPHCompat::yes_no(error, FLERR, cmd, "move", arg[iarg + 1]);
         iarg += 2;
       }
@@ -135,9 +139,8 @@ void SPHSet::set_materials(double volume)
   types_in_group(present.data());
   for (int t = 1; t <= ntypes; t++)
     if (present[t] && !(materials->rho0(t) > 0.0))
-      error->all(FLERR,
-                 "{} materials: atom type {} (in group {}) has no rho0 in fix sph/materials", cmd,
-                 t, group_name);
+      error->all(FLERR, "{} materials: atom type {} (in group {}) has no rho0 in fix sph/materials",
+                 cmd, t, group_name);
 
   const int *const type = atom->type;
   const int *const mask = atom->mask;
@@ -147,6 +150,8 @@ void SPHSet::set_materials(double volume)
     atom->rho[i] = materials->rho0(t);
     if (materials->cv(t) > 0.0) atom->cv[i] = materials->cv(t);
     if (volume > 0.0 && atom->rmass_flag) atom->rmass[i] = materials->rho0(t) * volume;
+    // MACHDYN's particle volume (atom_style hybrid sph smd)
+    if (volume > 0.0 && atom->vfrac_flag) atom->vfrac[i] = volume;
   }
   if (volume > 0.0 && !atom->rmass_flag)
     for (int t = 1; t <= ntypes; t++)
@@ -167,7 +172,40 @@ void SPHSet::set_materials(double volume)
 }
 
 /* ----------------------------------------------------------------------
-   esph = cv T of each atom; T a number or an equal- or atom-style variable
+   per type: 1 for a MACHDYN solid (a type of pair smd/tlsph) in the group,
+   whose cv (the material's) and reference temperature are checked
+------------------------------------------------------------------------- */
+
+std::vector<int> SPHSet::machdyn_solid_types()
+{
+  std::vector<int> solid(atom->ntypes + 1, 0);
+  if (!atom->smd_flag) return solid;
+  const std::vector<int> tlsph = SPHMachdynSolids::tlsph_types(lmp);
+  std::vector<int> present(atom->ntypes + 1, 0);
+  types_in_group(present.data());
+  for (int t : tlsph) {
+    if (!present[t]) continue;
+    if (!(materials->cv(t) > 0.0) || !std::isfinite(materials->tref(t)))
+      error->all(FLERR,
+                 "{} temperature: type {} is a MACHDYN solid (pair smd/tlsph) and needs its cv "
+                 "and tref in fix sph/materials",
+                 cmd, t);
+    solid[t] = 1;
+  }
+  // the hub checks at each run that no type becomes a MACHDYN solid after
+  // its atoms were given the other convention
+  for (int t = 1; t <= atom->ntypes; t++)
+    if (present[t]) materials->note_energy_convention(t, solid[t]);
+  // their cv is the material's (fix sph/materials gives it to them at each run too)
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && solid[atom->type[i]])
+      atom->cv[i] = materials->cv(atom->type[i]);
+  return solid;
+}
+
+/* ----------------------------------------------------------------------
+   esph = cv T of each atom (of a MACHDYN solid: m cv (T - tref)); T a
+   number or an equal- or atom-style variable
 ------------------------------------------------------------------------- */
 
 void SPHSet::set_temperature(const std::string &value)
@@ -234,10 +272,16 @@ void SPHSet::set_temperature(const std::string &value)
                      "cv = 1 (give cv in fix sph/materials, or set sph/cv, if that is not meant)",
                      cmd, value, t);
 
+  // the MACHDYN solids hold their energy as MACHDYN does (sph_particle.h)
+  const std::vector<int> solid = machdyn_solid_types();
+  const SPHParticles particles(atom);
   double range[2] = {-INFINITY, -INFINITY};    // -(lowest T), highest T
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    atom->esph[i] = atom->cv[i] * temperature[i];
+    const int t = atom->type[i];
+    atom->esph[i] = solid[t] ? SPHParticles::machdyn_energy(particles.mass(i), atom->cv[i],
+                                                            temperature[i], materials->tref(t))
+                             : atom->cv[i] * temperature[i];
     range[0] = fmax(range[0], -temperature[i]);
     range[1] = fmax(range[1], temperature[i]);
   }
@@ -258,8 +302,7 @@ void SPHSet::set_temperature(const std::string &value)
 
 void SPHSet::set_hydrostatic(double level, bool move)
 {
-  const double *gvec =
-      SPHBodyForce::require(lmp, "sph/set hydrostatic", "the weight of the fluid");
+  const double *gvec = SPHBodyForce::require(lmp, "sph/set hydrostatic", "the weight of the fluid");
   const double g = sqrt(gvec[0] * gvec[0] + gvec[1] * gvec[1] + gvec[2] * gvec[2]);
   if (!(g > 0.0))
     error->all(FLERR, "{} hydrostatic: the body force of fix gravity is zero: no hydrostatic state",

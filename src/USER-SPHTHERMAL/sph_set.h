@@ -15,6 +15,7 @@ CommandStyle(sph/set,SPHSet);
 #include "command.h"
 
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -33,6 +34,7 @@ class SPHSet : public Command {
 
   void set_materials(double volume);
   void set_temperature(const std::string &value);
+  std::vector<int> machdyn_solid_types();
   void set_hydrostatic(double level, bool move);
   int types_in_group(int *present);
 };

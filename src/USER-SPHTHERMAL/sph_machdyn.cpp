@@ -1,0 +1,240 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   The MACHDYN solids of a run (sph_machdyn.h).
+------------------------------------------------------------------------- */
+
+#include "sph_machdyn.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "compute.h"
+#include "error.h"
+#include "fix.h"
+#include "fix_sph_materials.h"
+#include "force.h"
+#include "group.h"
+#include "modify.h"
+#include "pair.h"
+#include "sph_hub.h"
+#include "sph_particle.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+static const char who[] = "Fix sph/materials";
+
+std::vector<int> SPHMachdynSolids::tlsph_types(LAMMPS *lmp)
+{
+  std::vector<int> found;
+  Pair *tlsph = lmp->force->pair_match("^smd/tlsph", 0);
+  if (!tlsph || !tlsph->setflag) return found;
+  for (int t = 1; t <= lmp->atom->ntypes; t++)
+    if (tlsph->setflag[t][t]) found.push_back(t);
+  return found;
+}
+
+/* ----------------------------------------------------------------------
+   the per-atom vectors of the solids (sph_particle.h), held by an internal
+   fix property/atom that grows them with the atoms; made when the hub is, in a
+   scene of atom style smd (hybrid), as a fix cannot be added during init
+------------------------------------------------------------------------- */
+
+void SPHMachdynSolids::create_vector()
+{
+  if (!atom->smd_flag) return;
+  int flag, cols;
+  if (atom->find_custom(SPHParticles::SOLID_VECTOR, flag, cols) >= 0) return;
+  modify->add_fix(fmt::format("{} all property/atom i_{} d_{} ghost yes", VECTOR_FIX,
+                              SPHParticles::SOLID_VECTOR, SPHParticles::T0_VECTOR));
+  vector_fix_made = 1;
+}
+
+void SPHMachdynSolids::delete_vector()
+{
+  if (vector_fix_made && modify->nfix && modify->find_fix(VECTOR_FIX) >= 0)
+    modify->delete_fix(VECTOR_FIX);
+  vector_fix_made = 0;
+}
+
+std::string SPHMachdynSolids::type_list() const
+{
+  std::string text;
+  for (int t : types) text += (text.empty() ? "" : " ") + std::to_string(t);
+  return text;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void SPHMachdynSolids::init()
+{
+  types = tlsph_types(lmp);
+  solid_type.assign(atom->ntypes + 1, 0);
+  for (int t : types) solid_type[t] = 1;
+  if (types.empty()) return;
+
+  // atom style smd alone has neither cv nor rho: the conduction needs both
+  if (!atom->cv_flag || !atom->rho_flag || !atom->esph_flag || !atom->vfrac_flag ||
+      !atom->rmass_flag)
+    error->all(FLERR,
+               "{}: the MACHDYN solids of pair smd/tlsph (types {}) need atom_style hybrid sph "
+               "smd (the atom style has no {})",
+               who, type_list(),
+               !atom->cv_flag          ? "cv"
+                   : !atom->rho_flag   ? "rho"
+                   : !atom->esph_flag  ? "esph"
+                   : !atom->vfrac_flag ? "vfrac"
+                                       : "rmass");
+  for (int t : types) {
+    if (!(materials->cv(t) > 0.0))
+      error->all(FLERR,
+                 "{}: type {} is a MACHDYN solid (pair smd/tlsph) and needs its cv (specific "
+                 "heat) in fix sph/materials",
+                 who, t);
+    if (!(materials->rho0(t) > 0.0))
+      error->all(FLERR,
+                 "{}: type {} is a MACHDYN solid (pair smd/tlsph) and needs its rho0 (the "
+                 "reference density of its *COMMON) in fix sph/materials",
+                 who, t);
+    if (!std::isfinite(materials->tref(t)))
+      error->all(FLERR,
+                 "{}: type {} is a MACHDYN solid (pair smd/tlsph) and needs its reference "
+                 "temperature tref in fix sph/materials (its energy is m cv (T - tref), as "
+                 "MACHDYN's Johnson-Cook model reads it with its own T0)",
+                 who, t);
+    if (materials->energy_convention_of(t) == 0)
+      error->all(FLERR,
+                 "{}: type {} is a MACHDYN solid (pair smd/tlsph), but sph/set temperature gave "
+                 "its atoms esph = cv T before pair smd/tlsph was defined: define the pair "
+                 "first, so that they get MACHDYN's m cv (T - tref)",
+                 who, t);
+    if (materials->eos(t))
+      error->all(FLERR,
+                 "{}: type {} is a MACHDYN solid (pair smd/tlsph) and cannot have an equation "
+                 "of state in fix sph/materials (pair smd/tlsph gives its stress)",
+                 who, t);
+  }
+  int flag, cols;
+  // (made with the hub in every scene of atom style smd: create_vector())
+  if (atom->find_custom(SPHParticles::SOLID_VECTOR, flag, cols) < 0)
+    error->all(FLERR, "{}: no per-atom vector {} for the MACHDYN solids", who,
+               SPHParticles::SOLID_VECTOR);
+  check_styles();
+}
+
+/* ----------------------------------------------------------------------
+   the package's styles and LAMMPS's SPH styles that would act on the
+   solid atoms without knowing their energy convention or that they move
+------------------------------------------------------------------------- */
+
+void SPHMachdynSolids::check_styles()
+{
+  // the styles that take the solids as they are
+  static const char *const fixes_that_know[] = {"sph/materials", "sph/wall/isothermal",
+                                                "sph/surface/flux", "SPH/TIMESTEP/CHECK"};
+  static const char *const computes_that_know[] = {"sph/thermal", "sph/e/atom"};
+  const int nlocal = atom->nlocal;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  auto solid_atoms_in = [&](int groupbit) {
+    int local = 0, total = 0;
+    for (int i = 0; i < nlocal; i++)
+      if ((mask[i] & groupbit) && solid_type[type[i]]) local++;
+    MPI_Allreduce(&local, &total, 1, MPI_INT, MPI_SUM, world);
+    return total;
+  };
+  auto known = [](const char *style, const char *const *list, int n) {
+    for (int k = 0; k < n; k++)
+      if (strcmp(style, list[k]) == 0) return true;
+    return false;
+  };
+  const std::string supported =
+      "pair sph/cleary/heat, fix sph/wall/isothermal, fix sph/surface/flux and compute "
+      "sph/thermal";
+  for (int i = 0; i < modify->nfix; i++) {
+    Fix *fix = modify->fix[i];
+    const bool sph_style = SPHHub::ours(fix) || strcmp(fix->style, "sph") == 0 ||
+        strcmp(fix->style, "sph/stationary") == 0;
+    if (!sph_style || known(fix->style, fixes_that_know, 4)) continue;
+    const int n = solid_atoms_in(fix->groupbit);
+    if (n)
+      error->all(FLERR,
+                 "Fix {} ({}): its group {} holds {} atoms of the MACHDYN solid types {} of pair "
+                 "smd/tlsph, which fix smd/integrate_tlsph moves and whose energy is held as "
+                 "MACHDYN holds it; on them USER-SPHTHERMAL supports {}",
+                 fix->id, fix->style, group->names[fix->igroup], n, type_list(), supported);
+  }
+  for (int i = 0; i < modify->ncompute; i++) {
+    Compute *compute = modify->compute[i];
+    if (strncmp(compute->style, "sph/", 4) != 0 || known(compute->style, computes_that_know, 2))
+      continue;
+    const int n = solid_atoms_in(compute->groupbit);
+    if (n)
+      error->all(FLERR,
+                 "Compute {} ({}): its group {} holds {} atoms of the MACHDYN solid types {} of "
+                 "pair smd/tlsph, whose temperature is not esph / cv; on them USER-SPHTHERMAL "
+                 "supports {} (its per-atom temperature for dumps)",
+                 compute->id, compute->style, group->names[compute->igroup], n, type_list(),
+                 supported);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   m / vfrac of each solid atom is the rho0 of its type (MACHDYN's
+   'set ... smd/mass/density' and the *COMMON density give it)
+------------------------------------------------------------------------- */
+
+void SPHMachdynSolids::check_density()
+{
+  const int nlocal = atom->nlocal;
+  const int *const type = atom->type;
+  const double *const rmass = atom->rmass;
+  const double *const vfrac = atom->vfrac;
+  for (int i = 0; i < nlocal; i++) {
+    if (!solid_type[type[i]]) continue;
+    const double rho0 = materials->rho0(type[i]);
+    const double density = rmass[i] / vfrac[i];
+    if (!std::isfinite(density) || fabs(density - rho0) > 1e-6 * rho0)
+      error->one(FLERR,
+                 "{}: atom {} of the MACHDYN solid type {} has mass / volume {} (mass {}, volume "
+                 "{}), not the type's rho0 {} (set its mass with 'set ... smd/mass/density')",
+                 who, atom->tag[i], type[i], density, rmass[i], vfrac[i], rho0);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void SPHMachdynSolids::setup()
+{
+  if (types.empty()) return;
+  check_density();
+  const int nall = atom->nlocal + atom->nghost;
+  const int *const type = atom->type;
+  for (int i = 0; i < nall; i++) {
+    if (!solid_type[type[i]]) continue;
+    atom->cv[i] = materials->cv(type[i]);
+    atom->rho[i] = atom->rmass[i] / atom->vfrac[i];
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void SPHMachdynSolids::mark()
+{
+  int flag, cols;
+  const int isolid = atom->find_custom(SPHParticles::SOLID_VECTOR, flag, cols);
+  const int it0 = atom->find_custom(SPHParticles::T0_VECTOR, flag, cols);
+  if (isolid < 0 || it0 < 0) return;
+  int *const solid = atom->ivector[isolid];
+  double *const t0 = atom->dvector[it0];
+  const int nall = atom->nlocal + atom->nghost;
+  const int *const type = atom->type;
+  const int marked = !solid_type.empty();
+  for (int i = 0; i < nall; i++) {
+    solid[i] = marked ? solid_type[type[i]] : 0;
+    t0[i] = solid[i] ? materials->tref(type[i]) : 0.0;
+  }
+}

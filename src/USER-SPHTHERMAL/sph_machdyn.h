@@ -1,0 +1,66 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SPH_MACHDYN_H
+#define LMP_SPH_MACHDYN_H
+
+#include "pointers.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixSPHMaterials;
+
+// The MACHDYN solids of a run: the atom types of LAMMPS's pair smd/tlsph
+// (alone or in a hybrid), whose particles hold their energy as MACHDYN
+// does (the convention of sph_particle.h). Owned by the hub (fix
+// sph/materials), which gives their atoms, before the first force
+// evaluation, the solid's cv and reference density rho0 (m / vfrac, checked
+// against the type's rho0) and marks them with their type's T0 in the
+// per-atom vector SPHParticles::T0_VECTOR before every force evaluation,
+// owned and ghost atoms alike (an internal fix property/atom holds it).
+class SPHMachdynSolids : protected Pointers {
+ public:
+  SPHMachdynSolids(LAMMPS *lmp, FixSPHMaterials *materials) :
+      Pointers(lmp), materials(materials), vector_fix_made(0)
+  {
+  }
+
+  // the per-atom vectors of the solids, made with the hub (its post_constructor) and
+  // deleted with it
+  void create_vector();
+  void delete_vector();
+
+  // at the hub's init: the solid types, each checked (the atom style, its
+  // properties in fix sph/materials, the styles that act on its atoms)
+  void init();
+  bool any() const { return !types.empty(); }
+  // 1 for a MACHDYN solid type
+  int solid(int type) const { return solid_type.empty() ? 0 : solid_type[type]; }
+  // the solid types as text, e.g. "2 3", for messages
+  std::string type_list() const;
+  // before the first force evaluation: cv and rho of the solid atoms
+  void setup();
+  // before every force evaluation: every owned and ghost atom marked,
+  // MACHDYN solid or not, with its T0
+  void mark();
+
+  // the types of pair smd/tlsph (empty without one)
+  static std::vector<int> tlsph_types(LAMMPS *lmp);
+
+ private:
+  FixSPHMaterials *materials;
+  std::vector<int> types, solid_type;
+  int vector_fix_made;
+  static constexpr const char *VECTOR_FIX = "SPH_ENERGY_T0";
+  void check_styles();
+  void check_density();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

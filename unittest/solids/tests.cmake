@@ -1,0 +1,15 @@
+# MACHDYN solids: heat in LAMMPS's smd/tlsph solids (included by
+# unittest/CMakeLists.txt; helpers: cmake/sphthermal_tests.cmake)
+
+# Xu's bar against the exact series, held face and flux, and the MACHDYN
+# energy convention against atom style sph's (the same temperatures)
+add_example_test(solids.validation.bar solid-machdyn-bar quick solids-bar
+  PASS "bar: passed" FAIL "FAIL" "ERROR")
+# energy to round-off (the flux's heat, the held face's balance) and the
+# same temperatures on 1, 2 and 4 ranks
+foreach(np 1 2 4)
+  sphthermal_python_test(solids.mpi.bar_np${np} solids/test_bar.py LAMMPS
+    ARGS --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
+endforeach()
+set_tests_properties(solids.mpi.bar_np1 PROPERTIES LABELS unit)
+add_error_cases(solids ${CMAKE_CURRENT_LIST_DIR}/errors.in)
