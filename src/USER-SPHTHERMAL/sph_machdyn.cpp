@@ -120,8 +120,10 @@ void SPHMachdynSolids::init()
   int flag, cols;
   // (made with the hub in every scene of atom style smd: create_vector())
   if (atom->find_custom(SPHParticles::SOLID_VECTOR, flag, cols) < 0)
-    error->all(FLERR, "{}: no per-atom vector {} for the MACHDYN solids", who,
-               SPHParticles::SOLID_VECTOR);
+    error->all(FLERR,
+               "{}: no per-atom vector {} for the MACHDYN solids (its internal fix {} was "
+               "deleted: define fix sph/materials again)",
+               who, SPHParticles::SOLID_VECTOR, VECTOR_FIX);
   check_styles();
 }
 
