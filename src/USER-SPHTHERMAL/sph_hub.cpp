@@ -7,8 +7,13 @@
 
 #include "sph_hub.h"
 
+#include "compute.h"
 #include "error.h"
 #include "fix_sph_dt_reset.h"
+#include "fix_sph_materials.h"
+#include "fix_sph_surface_flux.h"
+#include "fix_sph_timestep_check.h"
+#include "fix_sph_wall_isothermal.h"
 #include "force.h"
 #include "pair.h"
 #include "pair_sph_cleary_heat.h"
@@ -111,8 +116,9 @@ int SPHHub::held_by_fix_sph_stationary() const
 Fix *SPHHub::timestep_resetter(const Fix *self) const
 {
   for (int i = 0; i < modify->nfix; i++)
-    if (modify->fix[i] != self && (dynamic_cast<FixSPHDtReset *>(modify->fix[i]) ||
-                                   strcmp(modify->fix[i]->style, "dt/reset") == 0))
+    if (modify->fix[i] != self &&
+        (dynamic_cast<FixSPHDtReset *>(modify->fix[i]) ||
+         strcmp(modify->fix[i]->style, "dt/reset") == 0))
       return modify->fix[i];
   return nullptr;
 }
@@ -130,4 +136,31 @@ bool SPHHub::moves_bodies(const Fix *fix) const
 bool SPHHub::adds_force(const Fix *fix) const
 {
   return utils::strmatch(fix->style, "^addforce");
+}
+
+/* ----------------------------------------------------------------------
+   MACHDYN's solids (sph_machdyn.h): LAMMPS's pair smd/tlsph by name; the
+   package's styles that follow the solids' energy convention by type
+------------------------------------------------------------------------- */
+
+Pair *SPHHub::machdyn_solids_pair() const
+{
+  return force->pair_match("^smd/tlsph", 0);
+}
+
+bool SPHHub::may_act_on_machdyn(const Fix *fix) const
+{
+  if (is_any<FixSPHMaterials, FixSPHWallIsothermal, FixSPHSurfaceFlux, FixSPHTimestepCheck>(fix))
+    return true;
+  return !(ours(fix) || fix_sph_moves(fix) || strcmp(fix->style, "sph/stationary") == 0);
+}
+
+bool SPHHub::may_act_on_machdyn(const Compute *compute) const
+{
+  // compute sph/thermal follows the convention; sph/e/atom and sph/rho/atom
+  // only show esph and rho
+  if (strcmp(compute->style, "sph/thermal") == 0 || strcmp(compute->style, "sph/e/atom") == 0 ||
+      strcmp(compute->style, "sph/rho/atom") == 0)
+    return true;
+  return !utils::strmatch(compute->style, "^sph/");
 }

@@ -14,6 +14,8 @@
 
 namespace LAMMPS_NS {
 
+class Compute;
+class Pair;
 class PairSPHKernel;
 class PairSPHClearyHeat;
 class PairSPHHarmonicVisc;
@@ -85,6 +87,14 @@ class SPHHub : protected Pointers {
   bool rigid(const Fix *fix) const;
   // fix addforce (a force that the pressure of a hydrostatic start cannot know)
   bool adds_force(const Fix *fix) const;
+  // pair smd/tlsph of LAMMPS's MACHDYN, alone or in a hybrid (nullptr without one)
+  Pair *machdyn_solids_pair() const;
+  // whether a fix or compute may act on the particles of MACHDYN solids:
+  // false for the package's styles that do not follow their energy
+  // convention (sph_particle.h) and for LAMMPS's SPH styles that integrate
+  // or read esph as atom style sph holds it; true for every other style
+  bool may_act_on_machdyn(const Fix *fix) const;
+  bool may_act_on_machdyn(const Compute *compute) const;
 
  private:
   template <class T> static bool is_any(const Fix *fix)

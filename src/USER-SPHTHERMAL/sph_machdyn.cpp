@@ -30,7 +30,7 @@ static const char who[] = "Fix sph/materials";
 std::vector<int> SPHMachdynSolids::tlsph_types(LAMMPS *lmp)
 {
   std::vector<int> found;
-  Pair *tlsph = lmp->force->pair_match("^smd/tlsph", 0);
+  Pair *tlsph = SPHHub(lmp).machdyn_solids_pair();
   if (!tlsph || !tlsph->setflag) return found;
   for (int t = 1; t <= lmp->atom->ntypes; t++)
     if (tlsph->setflag[t][t]) found.push_back(t);
@@ -134,10 +134,6 @@ void SPHMachdynSolids::init()
 
 void SPHMachdynSolids::check_styles()
 {
-  // the styles that take the solids as they are
-  static const char *const fixes_that_know[] = {"sph/materials", "sph/wall/isothermal",
-                                                "sph/surface/flux", "SPH/TIMESTEP/CHECK"};
-  static const char *const computes_that_know[] = {"sph/thermal", "sph/e/atom"};
   const int nlocal = atom->nlocal;
   const int *const type = atom->type;
   const int *const mask = atom->mask;
@@ -148,19 +144,13 @@ void SPHMachdynSolids::check_styles()
     MPI_Allreduce(&local, &total, 1, MPI_INT, MPI_SUM, world);
     return total;
   };
-  auto known = [](const char *style, const char *const *list, int n) {
-    for (int k = 0; k < n; k++)
-      if (strcmp(style, list[k]) == 0) return true;
-    return false;
-  };
   const std::string supported =
       "pair sph/cleary/heat, fix sph/wall/isothermal, fix sph/surface/flux and compute "
       "sph/thermal";
+  const SPHHub hub(lmp);
   for (int i = 0; i < modify->nfix; i++) {
     Fix *fix = modify->fix[i];
-    const bool sph_style = SPHHub::ours(fix) || strcmp(fix->style, "sph") == 0 ||
-        strcmp(fix->style, "sph/stationary") == 0;
-    if (!sph_style || known(fix->style, fixes_that_know, 4)) continue;
+    if (hub.may_act_on_machdyn(fix)) continue;
     const int n = solid_atoms_in(fix->groupbit);
     if (n)
       error->all(FLERR,
@@ -171,8 +161,7 @@ void SPHMachdynSolids::check_styles()
   }
   for (int i = 0; i < modify->ncompute; i++) {
     Compute *compute = modify->compute[i];
-    if (strncmp(compute->style, "sph/", 4) != 0 || known(compute->style, computes_that_know, 2))
-      continue;
+    if (hub.may_act_on_machdyn(compute)) continue;
     const int n = solid_atoms_in(compute->groupbit);
     if (n)
       error->all(FLERR,
