@@ -17,6 +17,7 @@
 #include "group.h"
 #include "modify.h"
 #include "pair.h"
+#include "sph_checks.h"
 #include "sph_hub.h"
 #include "sph_particle.h"
 
@@ -184,15 +185,22 @@ void SPHMachdynSolids::check_density()
   const int *const type = atom->type;
   const double *const rmass = atom->rmass;
   const double *const vfrac = atom->vfrac;
+  // every rank agrees on the lowest bad ID: a collective error names it
+  SPHCheck::FirstBad bad;    // type, mass, volume
   for (int i = 0; i < nlocal; i++) {
     if (!solid_type[type[i]]) continue;
     const double rho0 = materials->rho0(type[i]);
     const double density = rmass[i] / vfrac[i];
     if (!std::isfinite(density) || fabs(density - rho0) > 1e-6 * rho0)
-      error->one(FLERR,
-                 "{}: atom {} of the MACHDYN solid type {} has mass / volume {} (mass {}, volume "
-                 "{}), not the type's rho0 {} (set its mass with 'set ... smd/mass/density')",
-                 who, atom->tag[i], type[i], density, rmass[i], vfrac[i], rho0);
+      bad.consider(atom->tag[i], type[i], rmass[i], vfrac[i]);
+  }
+  if (bad.agree(lmp)) {
+    const int t = (int) bad.info[0];
+    error->all(FLERR,
+               "{}: atom {} of the MACHDYN solid type {} has mass / volume {} (mass {}, volume "
+               "{}), not the type's rho0 {} (set its mass with 'set ... smd/mass/density')",
+               who, bad.tag, t, bad.info[1] / bad.info[2], bad.info[1], bad.info[2],
+               materials->rho0(t));
   }
 }
 
