@@ -214,7 +214,7 @@ void FixSPHMaterials::default_background()
 void FixSPHMaterials::setup_pre_force(int /*vflag*/)
 {
   state->stale();
-  solids->setup();
+  // (the solids' cv and rho were given at init and travel with the atoms)
   solids->mark();
   int pending = 0;
   for (int t = 1; t <= ntypes; t++) pending |= (c0_kind[t] == C0_PENDING);

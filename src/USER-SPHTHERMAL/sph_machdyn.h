@@ -43,7 +43,7 @@ class SPHMachdynSolids : protected Pointers {
   int solid(int type) const { return solid_type.empty() ? 0 : solid_type[type]; }
   // the solid types as text, e.g. "2 3", for messages
   std::string type_list() const;
-  // before the first force evaluation: cv and rho of the solid atoms
+  // at init (fix sph/materials.prepare_solids): cv and rho of the solid atoms
   void setup();
   // before every force evaluation: every owned and ghost atom marked,
   // MACHDYN solid or not, with its T0
