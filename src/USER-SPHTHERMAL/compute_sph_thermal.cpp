@@ -72,9 +72,15 @@ void ComputeSPHThermal::compute_vector()
   invoked_vector = update->ntimestep;
   const int *const mask = atom->mask;
   double local[3] = {0.0, 0.0, 0.0};
+  const double half_step = 0.5 * update->dt;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    local[0] += particles.thermal_energy(i);
+    // fix smd/integrate_tlsph has applied the whole of this step's heating,
+    // fix sph half of it (the rest at the next step's start): the books count
+    // a MACHDYN particle at fix sph's stage, so that what the two kinds
+    // exchange sums to zero at every step
+    local[0] += particles.thermal_energy(i) -
+        (particles.machdyn(i) ? half_step * particles.heating_rate(i, atom->desph) : 0.0);
     local[1] += particles.mass(i) * atom->cv[i];
     local[2] += particles.heating_rate(i, atom->desph);
   }

@@ -10,6 +10,7 @@
 #include "atom.h"
 #include "comm.h"
 #include "compute.h"
+#include "domain.h"
 #include "error.h"
 #include "fix.h"
 #include "fix_sph_materials.h"
@@ -126,6 +127,28 @@ void SPHMachdynSolids::init()
                "deleted: define fix sph/materials again)",
                who, SPHParticles::SOLID_VECTOR, VECTOR_FIX);
   check_styles();
+  check_periodic();
+}
+
+/* ----------------------------------------------------------------------
+   pair smd/tlsph (ComputeForces of LAMMPS 29Sep2021 and 4Feb2025) takes the
+   minimum image of its reference distance before it sets it, once per step
+   on a value left on the stack: with LAMMPS 29Sep2021 a large one loops
+   there forever (seen on 2 ranks), later releases stop with 'Atoms have
+   moved too far apart'. Warned once: a periodic scene may still be meant.
+------------------------------------------------------------------------- */
+
+void SPHMachdynSolids::check_periodic()
+{
+  if (periodic_warned || !(domain->xperiodic || domain->yperiodic || domain->zperiodic)) return;
+  periodic_warned = 1;
+  if (comm->me == 0)
+    error->warning(FLERR,
+                   "{}: the MACHDYN solids (types {}) are in a periodic box: pair smd/tlsph "
+                   "reads an unset reference distance once per step there, so that a run can "
+                   "hang (LAMMPS 29Sep2021) or stop with 'Atoms have moved too far apart' "
+                   "(later releases); boundaries f, s or m avoid it",
+                   who, type_list());
 }
 
 /* ----------------------------------------------------------------------

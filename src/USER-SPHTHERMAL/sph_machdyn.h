@@ -26,7 +26,7 @@ class FixSPHMaterials;
 class SPHMachdynSolids : protected Pointers {
  public:
   SPHMachdynSolids(LAMMPS *lmp, FixSPHMaterials *materials) :
-      Pointers(lmp), materials(materials), vector_fix_made(0)
+      Pointers(lmp), materials(materials), vector_fix_made(0), periodic_warned(0)
   {
   }
 
@@ -55,9 +55,10 @@ class SPHMachdynSolids : protected Pointers {
  private:
   FixSPHMaterials *materials;
   std::vector<int> types, solid_type;
-  int vector_fix_made;
+  int vector_fix_made, periodic_warned;
   static constexpr const char *VECTOR_FIX = "SPH_ENERGY_T0";
   void check_styles();
+  void check_periodic();
   void check_density();
 };
 
