@@ -167,7 +167,7 @@ FixSPHMaterials::~FixSPHMaterials()
 
 int FixSPHMaterials::setmask()
 {
-  return PRE_FORCE | MIN_PRE_FORCE;
+  return PRE_FORCE | MIN_PRE_FORCE | END_OF_STEP;
 }
 
 /* ----------------------------------------------------------------------

@@ -65,6 +65,8 @@ class FixSPHMaterials : public Fix {
     solids->mark();
   }
   void min_pre_force(int) override { state->stale(); }
+  // the MACHDYN solids' density follows their deformation
+  void end_of_step() override { solids->follow_deformation(); }
   // the per-atom state the pair styles derive, filled once per force
   // evaluation (sph_atom_state.h)
   SPHAtomState &atom_state() { return *state; }

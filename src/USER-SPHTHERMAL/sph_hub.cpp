@@ -148,6 +148,13 @@ Pair *SPHHub::machdyn_solids_pair() const
   return force->pair_match("^smd/tlsph", 0);
 }
 
+const double *SPHHub::machdyn_deformation_det() const
+{
+  Pair *tlsph = machdyn_solids_pair();
+  int dim = 0;
+  return tlsph ? static_cast<const double *>(tlsph->extract("smd/tlsph/detF_ptr", dim)) : nullptr;
+}
+
 bool SPHHub::may_act_on_machdyn(const Fix *fix) const
 {
   if (is_any<FixSPHMaterials, FixSPHWallIsothermal, FixSPHSurfaceFlux, FixSPHTimestepCheck>(fix))

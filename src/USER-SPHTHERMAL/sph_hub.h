@@ -89,6 +89,9 @@ class SPHHub : protected Pointers {
   bool adds_force(const Fix *fix) const;
   // pair smd/tlsph of LAMMPS's MACHDYN, alone or in a hybrid (nullptr without one)
   Pair *machdyn_solids_pair() const;
+  // its determinant of the deformation gradient of each owned atom at the
+  // last force evaluation (nullptr without the pair)
+  const double *machdyn_deformation_det() const;
   // whether a fix or compute may act on the particles of MACHDYN solids:
   // false for the package's styles that do not follow their energy
   // convention (sph_particle.h) and for LAMMPS's SPH styles that integrate

@@ -21,6 +21,7 @@
 #include "sph_checks.h"
 #include "sph_hub.h"
 #include "sph_particle.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
@@ -232,14 +233,40 @@ void SPHMachdynSolids::check_density()
 void SPHMachdynSolids::setup()
 {
   if (types.empty()) return;
-  check_density();
+  // at step 0 the solids are in their reference configuration; later (a
+  // run after a run, a restart) rho is their deformed density, and vfrac
+  // is no longer m / rho0 once MACHDYN has updated the reference
+  const int reference = (update->ntimestep == 0);
+  if (reference) check_density();
   const int nall = atom->nlocal + atom->nghost;
   const int *const type = atom->type;
   for (int i = 0; i < nall; i++) {
     if (!solid_type[type[i]]) continue;
     atom->cv[i] = materials->cv(type[i]);
-    atom->rho[i] = atom->rmass[i] / atom->vfrac[i];
+    if (reference) atom->rho[i] = atom->rmass[i] / atom->vfrac[i];
   }
+}
+
+/* ----------------------------------------------------------------------
+   the current density of the solid atoms: their mass over their reference
+   volume (MACHDYN's vfrac) times det F of pair smd/tlsph's last force
+   evaluation (this step's positions). MACHDYN gives a failed atom det F = 0
+   and leaves it out of its stress: it keeps its last density. When fix
+   smd/integrate_tlsph's reference configuration is updated, MACHDYN sets
+   vfrac = m / rho from this density.
+------------------------------------------------------------------------- */
+
+void SPHMachdynSolids::follow_deformation()
+{
+  if (types.empty()) return;
+  const double *const det = SPHHub(lmp).machdyn_deformation_det();
+  if (!det) return;
+  const int *const type = atom->type;
+  const double *const rmass = atom->rmass;
+  const double *const vfrac = atom->vfrac;
+  double *const rho = atom->rho;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (solid_type[type[i]] && det[i] > 0.0) rho[i] = rmass[i] / (vfrac[i] * det[i]);
 }
 
 /* ---------------------------------------------------------------------- */

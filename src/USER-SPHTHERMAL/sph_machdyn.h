@@ -45,6 +45,9 @@ class SPHMachdynSolids : protected Pointers {
   std::string type_list() const;
   // at init (fix sph/materials.prepare_solids): cv and rho of the solid atoms
   void setup();
+  // at the end of each step: rho = m / (vfrac det F) of the owned solid atoms
+  // (the ghosts get it with the next step's communication of atom style sph)
+  void follow_deformation();
   // before every force evaluation: every owned and ghost atom marked,
   // MACHDYN solid or not, with its T0
   void mark();

@@ -12,4 +12,7 @@ foreach(np 1 2 4)
     ARGS --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
 endforeach()
 set_tests_properties(solids.mpi.bar_np1 PROPERTIES LABELS unit)
+# the conduction reads the solid's deformed density m / (vfrac det F)
+sphthermal_lammps_test(solids.density.stretch ${CMAKE_CURRENT_LIST_DIR}/in.stretch LABELS unit PASS "stretch: passed"
+  FAIL "FAIL" "ERROR")
 add_error_cases(solids ${CMAKE_CURRENT_LIST_DIR}/errors.in)
