@@ -15,4 +15,10 @@ set_tests_properties(solids.mpi.bar_np1 PROPERTIES LABELS unit)
 # the conduction reads the solid's deformed density m / (vfrac det F)
 sphthermal_lammps_test(solids.density.stretch ${CMAKE_CURRENT_LIST_DIR}/in.stretch LABELS unit PASS "stretch: passed"
   FAIL "FAIL" "ERROR")
+# a MACHDYN scene written and read back (on 1 and 2 ranks) continues as one run
+foreach(np 1 2)
+  sphthermal_python_test(solids.restart.bar_np${np} solids/test_restart.py LAMMPS
+    ARGS --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
+endforeach()
+set_tests_properties(solids.restart.bar_np1 PROPERTIES LABELS unit)
 add_error_cases(solids ${CMAKE_CURRENT_LIST_DIR}/errors.in)
