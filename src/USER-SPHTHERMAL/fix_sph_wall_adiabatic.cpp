@@ -27,6 +27,8 @@
 #include "fix_sph_wall_dirichlet.h"
 #include "fix_sph_wall_isothermal.h"
 #include "force.h"
+#include "group.h"
+#include "neighbor.h"
 #include "pair_sph_cleary_heat.h"
 #include "sph_checks.h"
 #include "sph_comm_stage.h"
@@ -46,8 +48,8 @@ static const char cmd[] = "fix sph/wall/adiabatic";
 /* ---------------------------------------------------------------------- */
 
 FixSPHWallAdiabatic::FixSPHWallAdiabatic(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), mirror(nullptr), conserve(1),
-    shepard_local(0), shepard_total(0), summed(0)
+    Fix(lmp, narg, arg), mirror(nullptr), conserve(1), deep_warned(0), shepard_local(0),
+    shepard_total(0), summed(0)
 {
   if (!atom->esph_flag || !atom->cv_flag || !atom->rho_flag)
     error->all(FLERR, "Fix sph/wall/adiabatic requires atom style sph (rho, esph, desph, cv)");
@@ -116,6 +118,60 @@ void FixSPHWallAdiabatic::init()
                                             FixSPHWallAdiabatic, FixSPHSurfaceFlux>(),
                           false, false);
   mirror->init(groupbit, kernel_kind, cutoff, id);
+
+  // a wall atom beyond the kernel's reach of the surface (deep in a thick
+  // wall, or at a corner) has no ghost point and keeps its temperature; its
+  // exchange with the wall atoms within reach is counted in what they take
+  // in, which 'conserve yes' charges to the medium: a leak, unless pairs of
+  // wall atoms are left out of the neighbour lists
+  if (conserve && !deep_warned && mirror->beyond_reach() > 0 && !wall_pairs_excluded()) {
+    deep_warned = 1;
+    if (comm->me == 0)
+      error->warning(FLERR,
+                     "Fix {} sph/wall/adiabatic: {} of its wall atoms (atom {} first) lie beyond "
+                     "the kernel's reach of surface {}: they keep their temperature, and the heat "
+                     "they exchange with the wall atoms within reach would be given to the "
+                     "medium ('conserve yes'): add 'neigh_modify exclude group {} {}' (or "
+                     "delete those atoms)",
+                     id, mirror->beyond_reach(), mirror->first_beyond_reach(), mirror->region_id(),
+                     group->names[igroup], group->names[igroup]);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   whether neigh_modify exclude leaves out every pair of this fix's wall
+   atoms: a group pair whose groups both hold the whole wall group, or type
+   pairs covering every pair of the wall group's types (collective)
+------------------------------------------------------------------------- */
+
+bool FixSPHWallAdiabatic::wall_pairs_excluded() const
+{
+  const int *const mask = atom->mask;
+  for (int k = 0; k < neighbor->nex_group; k++) {
+    const int both =
+        group->bitmask[neighbor->ex1_group[k]] & group->bitmask[neighbor->ex2_group[k]];
+    int outside_local = 0, outside = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((mask[i] & groupbit) && !((mask[i] & both) == both)) outside_local = 1;
+    MPI_Allreduce(&outside_local, &outside, 1, MPI_INT, MPI_MAX, world);
+    if (!outside) return true;
+  }
+  const std::vector<int> present = SPHCheck::group_types(lmp, groupbit);
+  auto excluded = [&](int t1, int t2) {
+    for (int k = 0; k < neighbor->nex_type; k++)
+      if ((neighbor->ex1_type[k] == t1 && neighbor->ex2_type[k] == t2) ||
+          (neighbor->ex1_type[k] == t2 && neighbor->ex2_type[k] == t1))
+        return true;
+    return false;
+  };
+  int any = 0;
+  for (int t1 = 1; t1 <= atom->ntypes; t1++) {
+    if (!present[t1]) continue;
+    any = 1;
+    for (int t2 = t1; t2 <= atom->ntypes; t2++)
+      if (present[t2] && !excluded(t1, t2)) return false;
+  }
+  return any;
 }
 
 /* ----------------------------------------------------------------------
@@ -195,7 +251,7 @@ double FixSPHWallAdiabatic::compute_vector(int n)
 /* ---------------------------------------------------------------------- */
 
 int FixSPHWallAdiabatic::pack_forward_comm(int n, int *send, double *buf, int /*pbc_flag*/,
-                                          int * /*pbc*/)
+                                           int * /*pbc*/)
 {
   return SPHCommStage().flat(atom->esph, 1).pack(n, send, buf);
 }

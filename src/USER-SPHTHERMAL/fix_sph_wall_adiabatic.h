@@ -41,7 +41,9 @@ class FixSPHWallAdiabatic : public Fix {
 
  protected:
   class SPHMirror *mirror;
-  int conserve;                  // 1: the heat the wall takes in goes back to the medium
+  int conserve;       // 1: the heat the wall takes in goes back to the medium
+  int deep_warned;    // the warning about wall atoms beyond reach was given
+  bool wall_pairs_excluded() const;
   std::vector<double> t_ghost, rate;
   std::vector<int> ghost_how;
   double taken_local[2], taken_total[2];    // heat rate taken in now: away from, at corners

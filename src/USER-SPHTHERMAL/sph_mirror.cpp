@@ -100,12 +100,17 @@ void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
   // kernel's reach sets how far the ghost points lie from their wall atoms
   double *const *const x = atom->x;
   double dmax_local = 0.0, dmin_local = INFINITY;
-  SPHCheck::FirstBad inside;
+  SPHCheck::FirstBad inside, deep;
+  bigint deep_local = 0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     double g[3];
     const int found = ghost_point(x[i], g);
     if (found < 0) inside.consider(atom->tag[i]);
+    if (found == 0) {
+      deep.consider(atom->tag[i]);
+      deep_local++;
+    }
     if (found > 0) {
       const double d = 0.5 *
           sqrt((g[0] - x[i][0]) * (g[0] - x[i][0]) + (g[1] - x[i][1]) * (g[1] - x[i][1]) +
@@ -120,6 +125,8 @@ void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
                "medium and its boundary is the wall surface, so wall atoms lie outside it (side "
                "in: outside its shape; side out, the medium around an obstacle: inside it)",
                command, inside.tag, region_name, region->interior ? "in" : "out");
+  MPI_Allreduce(&deep_local, &deep_count, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  deep_first = deep.agree(lmp) ? deep.tag : 0;
   double dmax = 0.0, dmin = INFINITY;
   MPI_Allreduce(&dmax_local, &dmax, 1, MPI_DOUBLE, MPI_MAX, world);
   MPI_Allreduce(&dmin_local, &dmin, 1, MPI_DOUBLE, MPI_MIN, world);
@@ -207,7 +214,9 @@ void SPHMirror::check_medium()
   };
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    cells.within(x, x[i], cutoff, [&](int j) { consider(j, x[i]); });
+    cells.within(x, x[i], cutoff, [&](int j) {
+      consider(j, x[i]);
+    });
     if (!has_ghost[i]) continue;
     const double *const g = &ghost_at[3 * (size_t) i];
     for (int n = first_candidate[i]; n < first_candidate[i + 1]; n++)
@@ -246,14 +255,23 @@ void SPHMirror::find_candidates()
   candidates_at = ghost_at;
   cells.near_points(
       x, nlocal, nall, reach,
-      [&](int i) { return has_ghost[i] ? &ghost_at[3 * (size_t) i] : nullptr; },
-      [&](int j) { return !(mask[j] & medium_exclude); }, first_candidate, candidates,
-      medium_atoms);
+      [&](int i) {
+        return has_ghost[i] ? &ghost_at[3 * (size_t) i] : nullptr;
+      },
+      [&](int j) {
+        return !(mask[j] & medium_exclude);
+      },
+      first_candidate, candidates, medium_atoms);
   // the particles of walls that hold a temperature near each wall particle
   cells.near_points(
       x, nlocal, nall, reach,
-      [&](int i) { return (held_walls && (mask[i] & groupbit)) ? x[i] : nullptr; },
-      [&](int j) { return (mask[j] & held_walls) != 0; }, first_held, held_near, held_atoms);
+      [&](int i) {
+        return (held_walls && (mask[i] & groupbit)) ? x[i] : nullptr;
+      },
+      [&](int j) {
+        return (mask[j] & held_walls) != 0;
+      },
+      first_held, held_near, held_atoms);
   candidates_valid = true;
 }
 

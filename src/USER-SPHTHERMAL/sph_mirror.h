@@ -63,6 +63,10 @@ class SPHMirror : protected Pointers {
   void interpolate_velocity(std::vector<double> &ghost_v, std::vector<int> &how);
   // this step's ghost point of owned atom i (after an interpolation)
   const double *ghost_point_of(int i) const { return &ghost_at[3 * (size_t) i]; }
+  // after init(): the number of wall atoms beyond the kernel's reach of the
+  // surface (no ghost point) and the lowest ID among them
+  bigint beyond_reach() const { return deep_count; }
+  tagint first_beyond_reach() const { return deep_first; }
 
   // after atoms were exchanged or sorted (the owner's pre_neighbor): the
   // candidates kept from the last neighbour build are stale
@@ -113,6 +117,8 @@ class SPHMirror : protected Pointers {
   // it (held_near indexes held_atoms)
   std::vector<int> first_held, held_near, held_atoms;
   std::vector<double> candidates_at;    // 3 per owned atom
+  bigint deep_count = 0;
+  tagint deep_first = 0;
   bool candidates_valid;
   bool medium_check_pending;    // check_medium() at the next interpolate()
   double medium_tolerance;      // how far past the surface a medium atom may be
@@ -138,7 +144,7 @@ class SPHMirror : protected Pointers {
   void interpolate_field(std::vector<double> &out, std::vector<int> &how,
                          std::vector<double> *depth);
   SPHSupport support;    // the candidates of one ghost point inside the support
-  struct PointsCall;    // interpolate_points for this run's settings (sph_dispatch.h)
+  struct PointsCall;     // interpolate_points for this run's settings (sph_dispatch.h)
   template <int DIM, int KERNEL>
   void interpolate_points(std::vector<double> &ghost, std::vector<int> &how,
                           const sphk_kernel &kernel);

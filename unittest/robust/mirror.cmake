@@ -8,3 +8,8 @@ endforeach()
 # a medium atom past the wall's surface: refused as set up, taken within a
 # tolerance at a later run's start (drift), refused beyond it
 sphthermal_python_test(robust.mirror.drift robust/test_mirror_drift.py LAMMPS LABELS unit)
+
+# wall atoms beyond the kernel's reach: a warning without an exclusion of
+# wall pairs (the energy drifts), none and energy to round-off with one
+sphthermal_python_test(robust.mirror.beyond_reach robust/test_mirror_deep.py LAMMPS
+  LABELS unit)
