@@ -38,9 +38,9 @@ static const char cmd[] = "fix sph/materials";
 FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), state(new SPHAtomState(lmp, this)),
     solids(new SPHMachdynSolids(lmp, this)), eos_type(nullptr), eos_set(nullptr), cv_type(nullptr),
-    rho0_type(nullptr), expansion_type(nullptr), tref_type(nullptr), c0_kind(nullptr),
-    background_relative(nullptr), background_given(nullptr), background_logged(-1),
-    speed_type(nullptr)
+    rho0_type(nullptr), expansion_type(nullptr), tref_type(nullptr), bulk_type(nullptr),
+    c0_kind(nullptr), background_relative(nullptr), background_given(nullptr),
+    background_logged(-1), speed_type(nullptr)
 {
   ntypes = atom->ntypes;
   conductivity_laws.resize(ntypes + 1);
@@ -59,6 +59,7 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
   memory->create(rho0_type, ntypes + 1, "sph/materials:rho0");
   memory->create(expansion_type, ntypes + 1, "sph/materials:expansion");
   memory->create(tref_type, ntypes + 1, "sph/materials:tref");
+  memory->create(bulk_type, ntypes + 1, "sph/materials:bulk");
   memory->create(c0_kind, ntypes + 1, "sph/materials:c0_kind");
   memory->create(background_relative, ntypes + 1, "sph/materials:background_relative");
   memory->create(background_given, ntypes + 1, "sph/materials:background_given");
@@ -72,6 +73,7 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
     cv_type[i] = rho0_type[i] = -1.0;
     expansion_type[i] = 0.0;
     tref_type[i] = NAN;
+    bulk_type[i] = 0.0;
   }
 
   if (narg < 4)
@@ -157,6 +159,7 @@ FixSPHMaterials::~FixSPHMaterials()
   memory->destroy(rho0_type);
   memory->destroy(expansion_type);
   memory->destroy(tref_type);
+  memory->destroy(bulk_type);
   memory->destroy(c0_kind);
   memory->destroy(background_relative);
   memory->destroy(background_given);
@@ -216,6 +219,7 @@ void FixSPHMaterials::setup_pre_force(int /*vflag*/)
   state->stale();
   // (the solids' cv and rho were given at init and travel with the atoms)
   solids->mark();
+  solids->thermal_stress();
   int pending = 0;
   for (int t = 1; t <= ntypes; t++) pending |= (c0_kind[t] == C0_PENDING);
   // fix sph/boussinesq derived its types' at its init; the rest from the flow
@@ -402,10 +406,11 @@ int FixSPHMaterials::parse_property(int ilo, int ihi, const std::vector<std::str
   const std::string &name = words[iword];
   const size_t left = words.size() - iword - 1;
 
-  if (name == "cv" || name == "rho0") {
+  if (name == "cv" || name == "rho0" || name == "bulk") {
     if (left < 1) error->all(FLERR, "Illegal {}: missing value after '{}'", where, name);
     const double value = positive(words[iword + 1], name, where, false);
-    for (int i = ilo; i <= ihi; i++) (name == "cv" ? cv_type : rho0_type)[i] = value;
+    double *const slot = (name == "cv") ? cv_type : (name == "rho0") ? rho0_type : bulk_type;
+    for (int i = ilo; i <= ihi; i++) slot[i] = value;
     return 2;
   }
 
@@ -428,7 +433,7 @@ int FixSPHMaterials::parse_property(int ilo, int ihi, const std::vector<std::str
 
   error->all(FLERR,
              "Illegal {}: unknown property '{}' (conductivity, viscosity, eos, cv, rho0, "
-             "expansion or tref)",
+             "expansion, tref or bulk)",
              where, name);
   return 0;
 }

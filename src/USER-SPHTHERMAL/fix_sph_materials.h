@@ -63,6 +63,7 @@ class FixSPHMaterials : public Fix {
   {
     state->stale();
     solids->mark();
+    solids->thermal_stress();
   }
   void min_pre_force(int) override { state->stale(); }
   // the MACHDYN solids' density follows their deformation
@@ -92,6 +93,8 @@ class FixSPHMaterials : public Fix {
   int energy_convention_of(int type) const { return energy_convention[type]; }
   // reference temperature of a MACHDYN solid type (NaN when not given)
   double tref(int type) const { return tref_type[type]; }
+  // bulk modulus of a MACHDYN solid type (its thermal stress), 0 when not given
+  double bulk(int type) const { return bulk_type[type]; }
   // the MACHDYN solids of the run (pair smd/tlsph's types)
   const SPHMachdynSolids &machdyn() const { return *solids; }
   // find the solids, give their atoms cv and rho and mark them (at this
@@ -131,7 +134,7 @@ class FixSPHMaterials : public Fix {
   std::vector<MaterialLaw> conductivity_laws, viscosity_laws;    // index: type
   sphe_eos *eos_type;
   int *eos_set;
-  double *cv_type, *rho0_type, *expansion_type, *tref_type;
+  double *cv_type, *rho0_type, *expansion_type, *tref_type, *bulk_type;
   std::vector<int> energy_convention;    // per type: -1 not set by sph/set, else machdyn
   enum { C0_GIVEN = 0, C0_PENDING, C0_FOUND };
   int *c0_kind;                   // per type: given, 'auto' pending or found

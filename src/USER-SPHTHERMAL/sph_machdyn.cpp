@@ -51,8 +51,9 @@ void SPHMachdynSolids::create_vector()
   if (!atom->smd_flag) return;
   int flag, cols;
   if (atom->find_custom(SPHParticles::SOLID_VECTOR, flag, cols) >= 0) return;
-  modify->add_fix(fmt::format("{} all property/atom i_{} d_{} ghost yes", VECTOR_FIX,
-                              SPHParticles::SOLID_VECTOR, SPHParticles::T0_VECTOR));
+  modify->add_fix(fmt::format("{} all property/atom i_{} d_{} d_{} ghost yes", VECTOR_FIX,
+                              SPHParticles::SOLID_VECTOR, SPHParticles::T0_VECTOR,
+                              SPHParticles::STRESS_T_VECTOR));
   vector_fix_made = 1;
 }
 
@@ -119,7 +120,15 @@ void SPHMachdynSolids::init()
                  "{}: type {} is a MACHDYN solid (pair smd/tlsph) and cannot have an equation "
                  "of state in fix sph/materials (pair smd/tlsph gives its stress)",
                  who, t);
+    if (materials->expansion(t) != 0.0 && !(materials->bulk(t) > 0.0))
+      error->all(FLERR,
+                 "{}: type {} is a MACHDYN solid with expansion {} and needs its bulk modulus "
+                 "(bulk K, as its *COMMON gives it: E / (3 (1 - 2 nu))) in fix sph/materials: its "
+                 "thermal stress is -K expansion (T - T_start)",
+                 who, t, materials->expansion(t));
   }
+  expanding = 0;
+  for (int t : types) expanding |= (materials->expansion(t) != 0.0);
   int flag, cols;
   // (made with the hub in every scene of atom style smd: create_vector())
   if (atom->find_custom(SPHParticles::SOLID_VECTOR, flag, cols) < 0)
@@ -245,6 +254,54 @@ void SPHMachdynSolids::setup()
     atom->cv[i] = materials->cv(type[i]);
     if (reference) atom->rho[i] = atom->rmass[i] / atom->vfrac[i];
   }
+  // the thermal stress counts from the temperature at the start of the
+  // first run from step 0 (a restart keeps the one in its file)
+  if (reference && expanding && !stress_started) {
+    stress_started = 1;
+    double *const last = stress_temperature();
+    const SPHParticles particles(atom);
+    for (int i = 0; i < atom->nlocal; i++)
+      if (solid_type[type[i]])
+        last[i] = particles.temperature_of_solid(i, materials->tref(type[i]));
+  }
+}
+
+/* ----------------------------------------------------------------------
+   thermal expansion in MACHDYN's constitutive update, without changing
+   LAMMPS: pair smd/tlsph integrates a rate form of the stress, held in the
+   per-atom state smd_stress (read and written back at each force
+   evaluation); before each one, the thermal part of the rate,
+   d sigma = -K beta dT I (beta the volumetric expansion), is added to that
+   state, so that sigma_dot = C (D - beta/3 T_dot I): a free solid expands,
+   a held one is stressed. The increment is this atom's temperature change
+   since the last one.
+------------------------------------------------------------------------- */
+
+void SPHMachdynSolids::thermal_stress()
+{
+  if (!expanding) return;
+  double *const last = stress_temperature();
+  double **const stress = atom->smd_stress;
+  const int *const type = atom->type;
+  const SPHParticles particles(atom);
+  for (int i = 0; i < atom->nlocal; i++) {
+    const int t = type[i];
+    if (!solid_type[t] || materials->expansion(t) == 0.0) continue;
+    const double T = particles.temperature_of_solid(i, materials->tref(t));
+    const double change = -materials->bulk(t) * materials->expansion(t) * (T - last[i]);
+    // (smd_stress: xx xy xz yy yz zz)
+    stress[i][0] += change;
+    stress[i][3] += change;
+    stress[i][5] += change;
+    last[i] = T;
+  }
+}
+
+double *SPHMachdynSolids::stress_temperature()
+{
+  // (the internal fix holds it with SOLID_VECTOR, whose presence init() checks)
+  int flag, cols;
+  return atom->dvector[atom->find_custom(SPHParticles::STRESS_T_VECTOR, flag, cols)];
 }
 
 /* ----------------------------------------------------------------------

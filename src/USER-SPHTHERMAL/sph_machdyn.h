@@ -48,6 +48,9 @@ class SPHMachdynSolids : protected Pointers {
   // at the end of each step: rho = m / (vfrac det F) of the owned solid atoms
   // (the ghosts get it with the next step's communication of atom style sph)
   void follow_deformation();
+  // before every force evaluation: the thermal part of the stress rate
+  // added to pair smd/tlsph's stress state (types with an expansion)
+  void thermal_stress();
   // before every force evaluation: every owned and ghost atom marked,
   // MACHDYN solid or not, with its T0
   void mark();
@@ -59,6 +62,9 @@ class SPHMachdynSolids : protected Pointers {
   FixSPHMaterials *materials;
   std::vector<int> types, solid_type;
   int vector_fix_made, periodic_warned;
+  int expanding = 0;         // some solid type has a thermal expansion
+  int stress_started = 0;    // the thermal stress's start temperatures were set
+  double *stress_temperature();
   static constexpr const char *VECTOR_FIX = "SPH_ENERGY_T0";
   void check_styles();
   void check_periodic();

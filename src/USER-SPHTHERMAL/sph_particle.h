@@ -34,6 +34,9 @@ class SPHParticles {
  public:
   static constexpr const char *SOLID_VECTOR = "sph_machdyn";
   static constexpr const char *T0_VECTOR = "sph_energy_t0";
+  // (owned MACHDYN atoms) the temperature their thermal stress was last
+  // brought to (sph_machdyn.h)
+  static constexpr const char *STRESS_T_VECTOR = "sph_stress_temperature";
 
   explicit SPHParticles(Atom *atom) :
       rmass((atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr), type_mass(atom->mass),
@@ -54,7 +57,13 @@ class SPHParticles {
   bool machdyn(int i) const { return solid && solid[i]; }
   double temperature(int i) const
   {
-    return machdyn(i) ? t0[i] + esph[i] / (mass(i) * cv[i]) : esph[i] / cv[i];
+    return machdyn(i) ? temperature_of_solid(i, t0[i]) : esph[i] / cv[i];
+  }
+  // the temperature of a MACHDYN solid atom whose type's T0 is t0_type
+  // (also before the atoms are marked)
+  double temperature_of_solid(int i, double t0_type) const
+  {
+    return t0_type + esph[i] / (mass(i) * cv[i]);
   }
   // the esph of atom i at temperature T
   double energy_at(int i, double T) const

@@ -21,4 +21,9 @@ foreach(np 1 2)
     ARGS --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
 endforeach()
 set_tests_properties(solids.restart.bar_np1 PROPERTIES LABELS unit)
+# thermal expansion: free strain and held stress against the exact values
+foreach(case free held)
+  sphthermal_lammps_test(solids.expansion.${case} ${CMAKE_CURRENT_LIST_DIR}/in.expansion
+    VARS case ${case} LABELS unit PASS "expansion: passed" FAIL "FAIL" "ERROR")
+endforeach()
 add_error_cases(solids ${CMAKE_CURRENT_LIST_DIR}/errors.in)
