@@ -53,7 +53,7 @@ void SPHMachdynSolids::create_vector()
   if (atom->find_custom(SPHParticles::SOLID_VECTOR, flag, cols) >= 0) return;
   modify->add_fix(fmt::format("{} all property/atom i_{} d_{} d_{} ghost yes", VECTOR_FIX,
                               SPHParticles::SOLID_VECTOR, SPHParticles::T0_VECTOR,
-                              SPHParticles::STRESS_T_VECTOR));
+                              STRESS_T_VECTOR));
   vector_fix_made = 1;
 }
 
@@ -301,7 +301,7 @@ double *SPHMachdynSolids::stress_temperature()
 {
   // (the internal fix holds it with SOLID_VECTOR, whose presence init() checks)
   int flag, cols;
-  return atom->dvector[atom->find_custom(SPHParticles::STRESS_T_VECTOR, flag, cols)];
+  return atom->dvector[atom->find_custom(STRESS_T_VECTOR, flag, cols)];
 }
 
 /* ----------------------------------------------------------------------

@@ -66,6 +66,8 @@ class SPHMachdynSolids : protected Pointers {
   int stress_started = 0;    // the thermal stress's start temperatures were set
   double *stress_temperature();
   static constexpr const char *VECTOR_FIX = "SPH_ENERGY_T0";
+  // (owned solid atoms) the temperature their thermal stress was last brought to
+  static constexpr const char *STRESS_T_VECTOR = "sph_stress_temperature";
   void check_styles();
   void check_periodic();
   void check_density();

@@ -34,9 +34,6 @@ class SPHParticles {
  public:
   static constexpr const char *SOLID_VECTOR = "sph_machdyn";
   static constexpr const char *T0_VECTOR = "sph_energy_t0";
-  // (owned MACHDYN atoms) the temperature their thermal stress was last
-  // brought to (sph_machdyn.h)
-  static constexpr const char *STRESS_T_VECTOR = "sph_stress_temperature";
 
   explicit SPHParticles(Atom *atom) :
       rmass((atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr), type_mass(atom->mass),
