@@ -12,4 +12,5 @@ tools/bootstrap.sh
 cmake -S cmake -B "$build" -D LAMMPS_RELEASE="$release" -D LAMMPS_SIZES="$sizes"
 cmake --build "$build" -j"$(nproc)"
 cd "$build"
-ctest --output-on-failure -j"$(nproc)" ${args[@]+"${args[@]}"}
+# one job more than cores: a LAMMPS start-up waits on I/O for much of its time
+ctest --output-on-failure -j"$(($(nproc) + 1))" ${args[@]+"${args[@]}"}
