@@ -39,7 +39,7 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), state(new SPHAtomState(lmp, this)),
     solids(new SPHMachdynSolids(lmp, this)), eos_type(nullptr), eos_set(nullptr), cv_type(nullptr),
     rho0_type(nullptr), expansion_type(nullptr), tref_type(nullptr), bulk_type(nullptr),
-    c0_kind(nullptr), background_relative(nullptr), background_given(nullptr),
+    fwork_type(nullptr), c0_kind(nullptr), background_relative(nullptr), background_given(nullptr),
     background_logged(-1), speed_type(nullptr)
 {
   ntypes = atom->ntypes;
@@ -60,6 +60,7 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
   memory->create(expansion_type, ntypes + 1, "sph/materials:expansion");
   memory->create(tref_type, ntypes + 1, "sph/materials:tref");
   memory->create(bulk_type, ntypes + 1, "sph/materials:bulk");
+  memory->create(fwork_type, ntypes + 1, "sph/materials:fwork");
   memory->create(c0_kind, ntypes + 1, "sph/materials:c0_kind");
   memory->create(background_relative, ntypes + 1, "sph/materials:background_relative");
   memory->create(background_given, ntypes + 1, "sph/materials:background_given");
@@ -74,6 +75,8 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
     expansion_type[i] = 0.0;
     tref_type[i] = NAN;
     bulk_type[i] = 0.0;
+    // Taylor and Quinney's fraction of plastic work that becomes heat
+    fwork_type[i] = 0.9;
   }
 
   if (narg < 4)
@@ -84,6 +87,10 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
   size_array_rows = ntypes;
   size_array_cols = 6;
   extarray = 0;
+  // global vector: the MACHDYN solids' work and the heat made from it
+  vector_flag = 1;
+  size_vector = 2;
+  extvector = 1;
   global_freq = 1;
 
   std::vector<std::string> words(arg + 3, arg + narg);
@@ -160,6 +167,7 @@ FixSPHMaterials::~FixSPHMaterials()
   memory->destroy(expansion_type);
   memory->destroy(tref_type);
   memory->destroy(bulk_type);
+  memory->destroy(fwork_type);
   memory->destroy(c0_kind);
   memory->destroy(background_relative);
   memory->destroy(background_given);
@@ -170,7 +178,7 @@ FixSPHMaterials::~FixSPHMaterials()
 
 int FixSPHMaterials::setmask()
 {
-  return PRE_FORCE | MIN_PRE_FORCE | END_OF_STEP;
+  return PRE_FORCE | MIN_PRE_FORCE | PRE_REVERSE | END_OF_STEP;
 }
 
 /* ----------------------------------------------------------------------
@@ -262,6 +270,16 @@ int FixSPHMaterials::apply_relative_background(int type)
   const sphe_eos &eos = eos_type[type];
   eos_type[type].p_background = background_relative[type] * eos.rho0 * eos.c0 * eos.c0;
   return 1;
+}
+
+/* ----------------------------------------------------------------------
+   [1] pair smd/tlsph's work on the MACHDYN solids since the first run,
+   [2] the heat made from their plastic work (SPHMachdynSolids::work_to_heat)
+------------------------------------------------------------------------- */
+
+double FixSPHMaterials::compute_vector(int n)
+{
+  return n == 0 ? solids->work_done() : solids->heat_from_work();
 }
 
 /* ----------------------------------------------------------------------
@@ -421,6 +439,16 @@ int FixSPHMaterials::parse_property(int ilo, int ihi, const std::vector<std::str
     return 2;
   }
 
+  if (name == "fwork") {
+    if (left < 1) error->all(FLERR, "Illegal {}: missing value after '{}'", where, name);
+    const double value = utils::numeric(FLERR, words[iword + 1].c_str(), false, lmp);
+    if (!(value >= 0.0 && value <= 1.0))
+      error->all(FLERR, "Illegal {}: fwork {} is not a fraction between 0 and 1", where,
+                 words[iword + 1]);
+    for (int i = ilo; i <= ihi; i++) fwork_type[i] = value;
+    return 2;
+  }
+
   if (name == "expansion") {
     if (left < 1) error->all(FLERR, "Illegal {}: missing value after '{}'", where, name);
     const double value = utils::numeric(FLERR, words[iword + 1].c_str(), false, lmp);
@@ -433,7 +461,7 @@ int FixSPHMaterials::parse_property(int ilo, int ihi, const std::vector<std::str
 
   error->all(FLERR,
              "Illegal {}: unknown property '{}' (conductivity, viscosity, eos, cv, rho0, "
-             "expansion, tref or bulk)",
+             "expansion, tref, bulk or fwork)",
              where, name);
   return 0;
 }

@@ -66,6 +66,11 @@ class FixSPHMaterials : public Fix {
     solids->thermal_stress();
   }
   void min_pre_force(int) override { state->stale(); }
+  // after the pairs: the MACHDYN solids' work to heat
+  void setup_pre_reverse(int, int) override { solids->work_to_heat(0); }
+  void pre_reverse(int, int) override { solids->work_to_heat(1); }
+  // the work-to-heat tallies
+  double compute_vector(int) override;
   // the MACHDYN solids' density follows their deformation
   void end_of_step() override { solids->follow_deformation(); }
   // the per-atom state the pair styles derive, filled once per force
@@ -95,6 +100,11 @@ class FixSPHMaterials : public Fix {
   double tref(int type) const { return tref_type[type]; }
   // bulk modulus of a MACHDYN solid type (its thermal stress), 0 when not given
   double bulk(int type) const { return bulk_type[type]; }
+  // fraction of a MACHDYN solid type's plastic work that becomes heat
+  double fwork(int type) const { return fwork_type[type]; }
+  // heat a style adds to an owned MACHDYN solid atom before the pairs are
+  // done (SPHMachdynSolids::note_heat)
+  void note_solid_heat(int i, double rate) { solids->note_heat(i, rate); }
   // the MACHDYN solids of the run (pair smd/tlsph's types)
   const SPHMachdynSolids &machdyn() const { return *solids; }
   // find the solids, give their atoms cv and rho and mark them (at this
@@ -134,7 +144,7 @@ class FixSPHMaterials : public Fix {
   std::vector<MaterialLaw> conductivity_laws, viscosity_laws;    // index: type
   sphe_eos *eos_type;
   int *eos_set;
-  double *cv_type, *rho0_type, *expansion_type, *tref_type, *bulk_type;
+  double *cv_type, *rho0_type, *expansion_type, *tref_type, *bulk_type, *fwork_type;
   std::vector<int> energy_convention;    // per type: -1 not set by sph/set, else machdyn
   enum { C0_GIVEN = 0, C0_PENDING, C0_FOUND };
   int *c0_kind;                   // per type: given, 'auto' pending or found

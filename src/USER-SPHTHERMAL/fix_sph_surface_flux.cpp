@@ -13,6 +13,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_sph_materials.h"
 #include "fix_sph_wall_adiabatic.h"
 #include "fix_sph_wall_dirichlet.h"
 #include "force.h"
@@ -34,7 +35,7 @@ static constexpr int RESTART_VERSION = 1;
 
 FixSPHSurfaceFlux::FixSPHSurfaceFlux(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), convective(0), q_given(0.0), h_transfer(0.0), t_ambient(0.0), area(0.0),
-    spacing(0.0), dt_half(0.0), rate_previous(0.0), energy(0.0)
+    spacing(0.0), dt_half(0.0), rate_previous(0.0), energy(0.0), materials(nullptr)
 {
   if (!atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "Fix sph/surface/flux requires atom style sph (esph, desph, cv)");
@@ -113,6 +114,9 @@ void FixSPHSurfaceFlux::init()
   SPHCheck::atom_state(lmp, FLERR, "Fix sph/surface/flux", groupbit, SPHCheck::CV | SPHCheck::ESPH);
   reset_dt();
   area = pow(spacing, domain->dimension - 1);
+  // (MACHDYN solids exist only with fix sph/materials, which hears of their heat)
+  const std::vector<FixSPHMaterials *> hubs = SPHHub(lmp).fixes<FixSPHMaterials>();
+  materials = hubs.empty() ? nullptr : hubs[0];
 }
 
 void FixSPHSurfaceFlux::setup_pre_force(int /*vflag*/)
@@ -147,8 +151,10 @@ void FixSPHSurfaceFlux::add_flux(int first)
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const double q = convective ? h_transfer * (t_ambient - particles.temperature(i)) : q_given;
-    desph[i] += q * area / particles.mass(i) * particles.esph_per_specific(i);
+    const double rate = q * area / particles.mass(i) * particles.esph_per_specific(i);
+    desph[i] += rate;
     rate_local[particles.machdyn(i) ? 1 : 0] += q * area;
+    if (particles.machdyn(i) && materials) materials->note_solid_heat(i, rate);
   }
   double rate[2];
   MPI_Allreduce(rate_local, rate, 2, MPI_DOUBLE, MPI_SUM, world);

@@ -29,14 +29,15 @@ class FixSPHSurfaceFlux : public Fix {
   void restart(char *) override;
 
  protected:
-  int convective;          // 0: q given; 1: q = h (T_inf - T)
-  double q_given;          // prescribed flux into the surface (power/area)
-  double h_transfer;       // heat transfer coefficient
-  double t_ambient;        // T_inf
-  double area;             // surface area per particle, spacing^(d-1)
+  int convective;       // 0: q given; 1: q = h (T_inf - T)
+  double q_given;       // prescribed flux into the surface (power/area)
+  double h_transfer;    // heat transfer coefficient
+  double t_ambient;     // T_inf
+  double area;          // surface area per particle, spacing^(d-1)
   double spacing;
   double dt_half;
   double rate_previous, energy;
+  class FixSPHMaterials *materials;    // the hub, when there is one
 
   void add_flux(int first);
 };

@@ -181,9 +181,12 @@ void PairSPHClearyHeat::end_solid_rates()
   const SPHParticles particles(atom);
   double *const desph = atom->desph;
   for (int i = 0; i < atom->nlocal; i++)
-    if (particles.machdyn(i))
-      desph[i] = solid_desph_before[i] +
-          particles.esph_per_specific(i) * (desph[i] - solid_desph_before[i]);
+    if (particles.machdyn(i)) {
+      const double rate = particles.esph_per_specific(i) * (desph[i] - solid_desph_before[i]);
+      desph[i] = solid_desph_before[i] + rate;
+      // (the rest of desph is pair smd/tlsph's work, made heat by the hub)
+      materials->note_solid_heat(i, rate);
+    }
 }
 
 /* ----------------------------------------------------------------------

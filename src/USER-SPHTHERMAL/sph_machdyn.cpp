@@ -51,9 +51,9 @@ void SPHMachdynSolids::create_vector()
   if (!atom->smd_flag) return;
   int flag, cols;
   if (atom->find_custom(SPHParticles::SOLID_VECTOR, flag, cols) >= 0) return;
-  modify->add_fix(fmt::format("{} all property/atom i_{} d_{} d_{} ghost yes", VECTOR_FIX,
-                              SPHParticles::SOLID_VECTOR, SPHParticles::T0_VECTOR,
-                              STRESS_T_VECTOR));
+  modify->add_fix(fmt::format("{} all property/atom i_{} d_{} d_{} d_{} ghost yes", VECTOR_FIX,
+                              SPHParticles::SOLID_VECTOR, SPHParticles::T0_VECTOR, STRESS_T_VECTOR,
+                              PLASTIC_VECTOR));
   vector_fix_made = 1;
 }
 
@@ -302,6 +302,94 @@ double *SPHMachdynSolids::stress_temperature()
   // (the internal fix holds it with SOLID_VECTOR, whose presence init() checks)
   int flag, cols;
   return atom->dvector[atom->find_custom(STRESS_T_VECTOR, flag, cols)];
+}
+
+double *SPHMachdynSolids::converted_strain()
+{
+  int flag, cols;
+  return atom->dvector[atom->find_custom(PLASTIC_VECTOR, flag, cols)];
+}
+
+/* ----------------------------------------------------------------------
+   work to heat (Xu, eq. 13: fwork w = rho c dT). Pair smd/tlsph adds
+   the work of the stress (elastic, plastic, its artificial viscosity and
+   hourglass control) to desph, as MACHDYN's esph is an internal energy.
+   Here esph is heat (sph_particle.h): that work is taken out again, and
+   fwork times the plastic work of the evaluation put in, sigma_eq
+   d(eps_p) V: MACHDYN's strength models return the deviatoric stress to
+   the yield surface, so its von Mises stress after the evaluation is the
+   flow stress that the plastic strain increment d(eps_p) was made at,
+   and V = vfrac det F the current volume. The work that stays out is the
+   stored elastic energy, the cold work (1 - fwork) and the dissipation of
+   the artificial terms.
+------------------------------------------------------------------------- */
+
+void SPHMachdynSolids::note_heat(int i, double rate)
+{
+  if (noted_step != update->ntimestep) {
+    // (a force evaluation without work_to_heat left its notes: dropped)
+    noted_heat.assign(noted_heat.size(), 0.0);
+    noted_step = update->ntimestep;
+  }
+  if ((int) noted_heat.size() <= i) noted_heat.resize(atom->nmax, 0.0);
+  noted_heat[i] += rate;
+}
+
+void SPHMachdynSolids::work_to_heat(int step)
+{
+  if (types.empty()) return;
+  const int nlocal = atom->nlocal;
+  if (noted_step != update->ntimestep || (int) noted_heat.size() < nlocal)
+    noted_heat.assign(atom->nmax, 0.0);
+  double *const converted = converted_strain();
+  const double *const plastic = atom->eff_plastic_strain;
+  const int *const type = atom->type;
+  if (!plastic_started) {
+    for (int i = 0; i < nlocal; i++) converted[i] = plastic[i];
+    plastic_started = 1;
+  }
+  const double *const det = SPHHub(lmp).machdyn_deformation_det();
+  double **const stress = atom->smd_stress;
+  const double *const vfrac = atom->vfrac;
+  double *const desph = atom->desph;
+  const double dt = update->dt;
+  double work = 0.0, heat = 0.0;
+  for (int i = 0; i < nlocal; i++) {
+    const int t = type[i];
+    if (!solid_type[t]) continue;
+    const double *const s = stress[i];    // (xx xy xz yy yz zz)
+    const double p = (s[0] + s[3] + s[5]) / 3.0;
+    const double j2 =
+        0.5 * ((s[0] - p) * (s[0] - p) + (s[3] - p) * (s[3] - p) + (s[5] - p) * (s[5] - p)) +
+        s[1] * s[1] + s[2] * s[2] + s[4] * s[4];
+    const double volume = vfrac[i] * ((det && det[i] > 0.0) ? det[i] : 1.0);
+    const double plastic_work = sqrt(3.0 * j2) * (plastic[i] - converted[i]) * volume;
+    const double converted_rate = materials->fwork(t) * plastic_work / dt;
+    work += desph[i] - noted_heat[i];
+    heat += converted_rate;
+    desph[i] = noted_heat[i] + converted_rate;
+    if (step) converted[i] = plastic[i];
+  }
+  if (step) {
+    // fix smd/integrate_tlsph applies a step's rate once, over the whole step
+    work_local += dt * work;
+    heat_local += dt * heat;
+  }
+  noted_heat.assign(noted_heat.size(), 0.0);
+}
+
+double SPHMachdynSolids::work_done() const
+{
+  double sum = 0.0;
+  MPI_Allreduce(&work_local, &sum, 1, MPI_DOUBLE, MPI_SUM, world);
+  return sum;
+}
+
+double SPHMachdynSolids::heat_from_work() const
+{
+  double sum = 0.0;
+  MPI_Allreduce(&heat_local, &sum, 1, MPI_DOUBLE, MPI_SUM, world);
+  return sum;
 }
 
 /* ----------------------------------------------------------------------

@@ -54,6 +54,18 @@ class SPHMachdynSolids : protected Pointers {
   // before every force evaluation: every owned and ghost atom marked,
   // MACHDYN solid or not, with its T0
   void mark();
+  // heat that the package's styles add to owned solid atom i during a
+  // force evaluation before its pairs are done (a surface flux, the
+  // conduction), per particle: the rest of desph is pair smd/tlsph's work
+  void note_heat(int i, double rate);
+  // after the pairs of a force evaluation: pair smd/tlsph's work in desph
+  // replaced by fwork times the plastic work of the evaluation; 'step' (not
+  // at a run's set-up) takes the plastic strain as converted and tallies
+  void work_to_heat(int step);
+  // the tallies since the first run: pair smd/tlsph's work on the solids
+  // and the heat converted from their plastic work (sums over all ranks)
+  double work_done() const;
+  double heat_from_work() const;
 
   // the types of pair smd/tlsph (empty without one)
   static std::vector<int> tlsph_types(LAMMPS *lmp);
@@ -62,12 +74,19 @@ class SPHMachdynSolids : protected Pointers {
   FixSPHMaterials *materials;
   std::vector<int> types, solid_type;
   int vector_fix_made, periodic_warned;
-  int expanding = 0;         // some solid type has a thermal expansion
-  int stress_started = 0;    // the thermal stress's start temperatures were set
+  int expanding = 0;                            // some solid type has a thermal expansion
+  int stress_started = 0;                       // the thermal stress's start temperatures were set
+  int plastic_started = 0;                      // the converted plastic strains were set
+  std::vector<double> noted_heat;               // note_heat's rates, by owned atom
+  bigint noted_step = -1;                       // the step they were noted at
+  double work_local = 0.0, heat_local = 0.0;    // this rank's tallies
   double *stress_temperature();
+  double *converted_strain();
   static constexpr const char *VECTOR_FIX = "SPH_ENERGY_T0";
   // (owned solid atoms) the temperature their thermal stress was last brought to
   static constexpr const char *STRESS_T_VECTOR = "sph_stress_temperature";
+  // (owned solid atoms) the effective plastic strain whose work was made heat
+  static constexpr const char *PLASTIC_VECTOR = "sph_converted_plastic_strain";
   void check_styles();
   void check_periodic();
   void check_density();

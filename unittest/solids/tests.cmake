@@ -26,4 +26,9 @@ foreach(case free held)
   sphthermal_lammps_test(solids.expansion.${case} ${CMAKE_CURRENT_LIST_DIR}/in.expansion
     VARS case ${case} LABELS unit PASS "expansion: passed" FAIL "FAIL" "ERROR")
 endforeach()
+# work to heat: fwork of the plastic work becomes heat, none of the elastic
+foreach(case plastic elastic)
+  sphthermal_lammps_test(solids.work.${case} ${CMAKE_CURRENT_LIST_DIR}/in.work
+    VARS case ${case} LABELS unit PASS "work: passed" FAIL "FAIL" "ERROR")
+endforeach()
 add_error_cases(solids ${CMAKE_CURRENT_LIST_DIR}/errors.in)
