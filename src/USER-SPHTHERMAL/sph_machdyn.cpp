@@ -270,11 +270,14 @@ void SPHMachdynSolids::setup()
    thermal expansion in MACHDYN's constitutive update, without changing
    LAMMPS: pair smd/tlsph integrates a rate form of the stress, held in the
    per-atom state smd_stress (read and written back at each force
-   evaluation); before each one, the thermal part of the rate,
-   d sigma = -K beta dT I (beta the volumetric expansion), is added to that
-   state, so that sigma_dot = C (D - beta/3 T_dot I): a free solid expands,
-   a held one is stressed. The increment is this atom's temperature change
-   since the last one.
+   evaluation); before each one, the thermal part of the rate is added to
+   that state, so that sigma_dot = C (D - D_th): a free solid expands, a
+   held one is stressed. The thermal strain is beta_lin (T - T0) of the
+   length at T0 (beta_lin = beta / 3, T0 the type's tref), so the thermal
+   stretch from the atom's last temperature T_last to T is
+   (1 + beta_lin (T - T0)) / (1 + beta_lin (T_last - T0)), and the rate
+   form, whose pressure follows ln J, gets -3 K ln(stretch) on the
+   diagonal (-K beta dT for small changes).
 ------------------------------------------------------------------------- */
 
 void SPHMachdynSolids::thermal_stress()
@@ -287,8 +290,17 @@ void SPHMachdynSolids::thermal_stress()
   for (int i = 0; i < atom->nlocal; i++) {
     const int t = type[i];
     if (!solid_type[t] || materials->expansion(t) == 0.0) continue;
-    const double T = particles.temperature_of_solid(i, materials->tref(t));
-    const double change = -materials->bulk(t) * materials->expansion(t) * (T - last[i]);
+    const double t0 = materials->tref(t);
+    const double T = particles.temperature_of_solid(i, t0);
+    const double linear = materials->expansion(t) / 3.0;
+    const double length = 1.0 + linear * (T - t0), length_last = 1.0 + linear * (last[i] - t0);
+    if (!(length > 0.0))
+      SPHCheck::stop(
+          lmp, FLERR,
+          fmt::format("{}: atom {} of MACHDYN solid type {} at T = {} would have no "
+                      "length: its thermal strain expansion/3 (T - tref) is {}, below -1",
+                      who, atom->tag[i], t, T, linear * (T - t0)));
+    const double change = -3.0 * materials->bulk(t) * log(length / length_last);
     // (smd_stress: xx xy xz yy yz zz)
     stress[i][0] += change;
     stress[i][3] += change;
