@@ -5,6 +5,9 @@
 # energy convention against atom style sph's (the same temperatures)
 add_example_test(solids.validation.bar solid-machdyn-bar quick solids-bar
   PASS "bar: passed" FAIL "FAIL" "ERROR")
+# Xu's block heated uniformly, expanding freely, against the exact strain
+add_example_test(solids.validation.block solid-machdyn-block quick solids-block
+  PASS "block: passed" FAIL "FAIL" "ERROR")
 # energy to round-off (the flux's heat, the held face's balance) and the
 # same temperatures on 1, 2 and 4 ranks
 foreach(np 1 2 4)
