@@ -189,6 +189,8 @@ void FixSPHMaterials::init()
 {
   state->init();
   prepare_solids();
+  // the MACHDYN solids' work-to-heat tallies are kept in restart files
+  if (solids->any()) restart_global = 1;
   for (int i = 0; i <= ntypes; i++) conductivity_laws[i].warned = viscosity_laws[i].warned = 0;
   default_background();
 }
@@ -284,28 +286,37 @@ double FixSPHMaterials::compute_vector(int n)
 
 /* ----------------------------------------------------------------------
    restart state: the speed of sound of each type found from the scene (0
-   for the others); a pending 'auto' type takes it back, so a restarted
-   run goes on at the speed it started with
+   for the others), so that a pending 'auto' type takes it back and a
+   restarted run goes on at the speed it started with; then the MACHDYN
+   solids' work-to-heat tallies. Version 1 (before the tallies) is read too.
 ------------------------------------------------------------------------- */
 
-static constexpr int RESTART_VERSION = 1;
+static constexpr int RESTART_VERSION = 2;
 
 void FixSPHMaterials::write_restart(FILE *fp)
 {
+  // (every rank calls it: the tallies are sums over the ranks)
+  const double work = solids->work_done(), heat = solids->heat_from_work();
   if (comm->me != 0) return;
   std::vector<double> state(ntypes + 1, 0.0);    // the number of types, each one's c0
   state[0] = ntypes;
   for (int t = 1; t <= ntypes; t++)
     if (c0_kind[t] == C0_FOUND) state[t] = eos_type[t].c0;
-  SPHCheck::write_restart_state(fp, RESTART_VERSION, state.data(), ntypes + 1);
+  state.push_back(work);
+  state.push_back(heat);
+  SPHCheck::write_restart_state(fp, RESTART_VERSION, state.data(), state.size());
 }
 
 void FixSPHMaterials::restart(char *buf)
 {
-  const double *state = SPHCheck::read_restart_state(lmp, FLERR, this, buf, RESTART_VERSION);
+  int head[2];
+  memcpy(head, buf, sizeof(head));
+  const int version = (head[1] == 1) ? 1 : RESTART_VERSION;
+  const double *state = SPHCheck::read_restart_state(lmp, FLERR, this, buf, version);
   const int n = (int) state[0];
   for (int t = 1; t <= ntypes && t <= n; t++)
     if (state[t] > 0.0) set_sound_speed(t, state[t], "auto, from the restart file");
+  if (version >= 2) solids->restore_tallies(state[n + 1], state[n + 2]);
 }
 
 /* ----------------------------------------------------------------------

@@ -264,6 +264,12 @@ void SPHMachdynSolids::setup()
       if (solid_type[type[i]])
         last[i] = particles.temperature_of_solid(i, materials->tref(type[i]));
   }
+  // the work to heat likewise counts from the plastic strain at that start
+  if (reference && !plastic_started) {
+    plastic_started = 1;
+    double *const converted = converted_strain();
+    for (int i = 0; i < atom->nlocal; i++) converted[i] = atom->eff_plastic_strain[i];
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -356,10 +362,6 @@ void SPHMachdynSolids::work_to_heat(int step)
   double *const converted = converted_strain();
   const double *const plastic = atom->eff_plastic_strain;
   const int *const type = atom->type;
-  if (!plastic_started) {
-    for (int i = 0; i < nlocal; i++) converted[i] = plastic[i];
-    plastic_started = 1;
-  }
   const double *const det = SPHHub(lmp).machdyn_deformation_det();
   double **const stress = atom->smd_stress;
   const double *const vfrac = atom->vfrac;
@@ -388,6 +390,13 @@ void SPHMachdynSolids::work_to_heat(int step)
     heat_local += dt * heat;
   }
   noted_heat.assign(noted_heat.size(), 0.0);
+}
+
+void SPHMachdynSolids::restore_tallies(double work, double heat)
+{
+  // (the sums over the ranks are the totals)
+  work_local = comm->me == 0 ? work : 0.0;
+  heat_local = comm->me == 0 ? heat : 0.0;
 }
 
 double SPHMachdynSolids::work_done() const

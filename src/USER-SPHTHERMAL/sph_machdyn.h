@@ -66,6 +66,8 @@ class SPHMachdynSolids : protected Pointers {
   // and the heat converted from their plastic work (sums over all ranks)
   double work_done() const;
   double heat_from_work() const;
+  // the tallies read back from a restart file
+  void restore_tallies(double work, double heat);
 
   // the types of pair smd/tlsph (empty without one)
   static std::vector<int> tlsph_types(LAMMPS *lmp);

@@ -24,6 +24,12 @@ foreach(np 1 2)
     ARGS --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
 endforeach()
 set_tests_properties(solids.restart.bar_np1 PROPERTIES LABELS unit)
+# the work-to-heat tallies continue across a restart (1 and 2 ranks)
+foreach(np 1 2)
+  sphthermal_python_test(solids.restart.work_np${np} solids/test_work_restart.py LAMMPS
+    ARGS --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
+endforeach()
+set_tests_properties(solids.restart.work_np1 PROPERTIES LABELS unit)
 # thermal expansion: free strain and held stress against the exact values
 foreach(case free held)
   sphthermal_lammps_test(solids.expansion.${case} ${CMAKE_CURRENT_LIST_DIR}/in.expansion
