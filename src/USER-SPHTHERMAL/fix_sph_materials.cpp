@@ -75,8 +75,7 @@ FixSPHMaterials::FixSPHMaterials(LAMMPS *lmp, int narg, char **arg) :
     expansion_type[i] = 0.0;
     tref_type[i] = NAN;
     bulk_type[i] = 0.0;
-    // Taylor and Quinney's fraction of plastic work that becomes heat
-    fwork_type[i] = 0.9;
+    fwork_type[i] = NAN;
   }
 
   if (narg < 4)
@@ -288,7 +287,7 @@ double FixSPHMaterials::compute_vector(int n)
    restart state: the speed of sound of each type found from the scene (0
    for the others), so that a pending 'auto' type takes it back and a
    restarted run goes on at the speed it started with; then the MACHDYN
-   solids' work-to-heat tallies. Version 1 (before the tallies) is read too.
+   solids' work-to-heat tallies.
 ------------------------------------------------------------------------- */
 
 static constexpr int RESTART_VERSION = 2;
@@ -309,14 +308,11 @@ void FixSPHMaterials::write_restart(FILE *fp)
 
 void FixSPHMaterials::restart(char *buf)
 {
-  int head[2];
-  memcpy(head, buf, sizeof(head));
-  const int version = (head[1] == 1) ? 1 : RESTART_VERSION;
-  const double *state = SPHCheck::read_restart_state(lmp, FLERR, this, buf, version);
+  const double *state = SPHCheck::read_restart_state(lmp, FLERR, this, buf, RESTART_VERSION);
   const int n = (int) state[0];
   for (int t = 1; t <= ntypes && t <= n; t++)
     if (state[t] > 0.0) set_sound_speed(t, state[t], "auto, from the restart file");
-  if (version >= 2) solids->restore_tallies(state[n + 1], state[n + 2]);
+  solids->restore_tallies(state[n + 1], state[n + 2]);
 }
 
 /* ----------------------------------------------------------------------

@@ -18,6 +18,7 @@ FixStyle(sph/materials,FixSPHMaterials);
 #include "sph_machdyn.h"
 #include "sph_material_laws.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -101,7 +102,13 @@ class FixSPHMaterials : public Fix {
   // bulk modulus of a MACHDYN solid type (its thermal stress), 0 when not given
   double bulk(int type) const { return bulk_type[type]; }
   // fraction of a MACHDYN solid type's plastic work that becomes heat
-  double fwork(int type) const { return fwork_type[type]; }
+  // (Taylor and Quinney's 0.9 when not given)
+  double fwork(int type) const { return std::isnan(fwork_type[type]) ? 0.9 : fwork_type[type]; }
+  // 1 when a type was given a property that only MACHDYN solids use
+  int solid_property_given(int type) const
+  {
+    return std::isfinite(tref_type[type]) || bulk_type[type] > 0.0 || !std::isnan(fwork_type[type]);
+  }
   // heat a style adds to an owned MACHDYN solid atom before the pairs are
   // done (SPHMachdynSolids::note_heat)
   void note_solid_heat(int i, double rate) { solids->note_heat(i, rate); }

@@ -78,6 +78,14 @@ void SPHMachdynSolids::init()
   types = tlsph_types(lmp);
   solid_type.assign(atom->ntypes + 1, 0);
   for (int t : types) solid_type[t] = 1;
+  for (int t = 1; t <= atom->ntypes; t++)
+    if (!solid_type[t] && materials->solid_property_given(t) && !unused_warned) {
+      error->warning(FLERR,
+                     "{}: type {} has tref, bulk or fwork, which only MACHDYN solids use, but "
+                     "pair smd/tlsph has no coefficients for it: they are ignored",
+                     who, t);
+      unused_warned = 1;
+    }
   if (types.empty()) return;
 
   // atom style smd alone has neither cv nor rho: the conduction needs both
@@ -124,7 +132,7 @@ void SPHMachdynSolids::init()
       error->all(FLERR,
                  "{}: type {} is a MACHDYN solid with expansion {} and needs its bulk modulus "
                  "(bulk K, as its *COMMON gives it: E / (3 (1 - 2 nu))) in fix sph/materials: its "
-                 "thermal stress is -K expansion (T - T_start)",
+                 "thermal stress is about -K expansion (T - T_start)",
                  who, t, materials->expansion(t));
   }
   expanding = 0;

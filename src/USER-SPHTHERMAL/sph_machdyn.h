@@ -76,6 +76,7 @@ class SPHMachdynSolids : protected Pointers {
   FixSPHMaterials *materials;
   std::vector<int> types, solid_type;
   int vector_fix_made, periodic_warned;
+  int unused_warned = 0;                        // a type not a solid has properties of solids
   int expanding = 0;                            // some solid type has a thermal expansion
   int stress_started = 0;                       // the thermal stress's start temperatures were set
   int plastic_started = 0;                      // the converted plastic strains were set
