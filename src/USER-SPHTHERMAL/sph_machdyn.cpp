@@ -23,6 +23,7 @@
 #include "sph_particle.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -353,7 +354,8 @@ double *SPHMachdynSolids::converted_strain()
 void SPHMachdynSolids::note_heat(int i, double rate)
 {
   if (noted_step != update->ntimestep) {
-    // (a force evaluation without work_to_heat left its notes: dropped)
+    // the first note of this force evaluation (earlier notes were used or,
+    // from an evaluation without work_to_heat, are dropped)
     noted_heat.assign(noted_heat.size(), 0.0);
     noted_step = update->ntimestep;
   }
@@ -365,8 +367,9 @@ void SPHMachdynSolids::work_to_heat(int step)
 {
   if (types.empty()) return;
   const int nlocal = atom->nlocal;
-  if (noted_step != update->ntimestep || (int) noted_heat.size() < nlocal)
-    noted_heat.assign(atom->nmax, 0.0);
+  // no note in this evaluation: no package style heated a solid atom
+  if (noted_step != update->ntimestep) noted_heat.clear();
+  noted_heat.resize(std::max((int) noted_heat.size(), nlocal), 0.0);
   double *const converted = converted_strain();
   const double *const plastic = atom->eff_plastic_strain;
   const int *const type = atom->type;
@@ -397,7 +400,7 @@ void SPHMachdynSolids::work_to_heat(int step)
     work_local += dt * work;
     heat_local += dt * heat;
   }
-  noted_heat.assign(noted_heat.size(), 0.0);
+  noted_step = -1;    // (the notes are used)
 }
 
 void SPHMachdynSolids::restore_tallies(double work, double heat)
