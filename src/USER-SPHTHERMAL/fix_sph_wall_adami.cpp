@@ -40,12 +40,14 @@
 #include "sph_hub.h"
 #include "sph_interpolation.h"
 #include "sph_kernels.h"
+#include "sph_machdyn.h"
 #include "sph_mirror.h"
 #include "sph_particle.h"
 #include "update.h"
 
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -143,14 +145,15 @@ void FixSPHWallAdami::init()
     if ((atom->mask[i] & groupbit) && solid_type[atom->type[i]]) {
       local_solid = 1;
       if (!(materials->rho0(atom->type[i]) > 0.0))
-        SPHCheck::stop(lmp, FLERR, fmt::format("Fix sph/wall/adami: atom type {} of wall atom {} has no "
-                                        "equation of state, so it is a solid, but no rho0 in fix "
-                                        "sph/materials",
-                                        atom->type[i], atom->tag[i]));
+        SPHCheck::stop(lmp, FLERR,
+                       fmt::format("Fix sph/wall/adami: atom type {} of wall atom {} has no "
+                                   "equation of state, so it is a solid, but no rho0 in fix "
+                                   "sph/materials",
+                                   atom->type[i], atom->tag[i]));
     }
   MPI_Allreduce(&local_solid, &any_solid, 1, MPI_INT, MPI_MAX, world);
-  // rho and vest, and with solids their pressure, density and viscosity
-  comm_forward = any_solid ? 8 : 4;
+  // rho and vest, and with solids their state as the flow sees it
+  comm_forward = any_solid ? 4 + SOLID_STATE_SIZE : 4;
   // (the solids' rho: pair sph/harmonic/visc, which this fix requires, has
   // checked every atom's at its init, which comes before the fixes')
   // with thermal expansion the wall's density follows its temperature (the
@@ -171,6 +174,11 @@ void FixSPHWallAdami::init()
   moving = moving_keyword;
   if (moving < 0) {
     int local = 0, any = 0;
+    // MACHDYN solids (the types of pair smd/tlsph) move and deform with fix smd/integrate_tlsph
+    std::vector<int> deforming(atom->ntypes + 1, 0);
+    for (int t : SPHMachdynSolids::tlsph_types(lmp)) deforming[t] = 1;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & groupbit) && deforming[atom->type[i]]) local = 1;
     for (int ifix = 0; ifix < modify->nfix; ifix++) {
       Fix *other = modify->fix[ifix];
       if (!hub.moves_bodies(other)) continue;
@@ -207,8 +215,14 @@ void FixSPHWallAdami::find_fluid_near()
   const double reach = cutoff + neighbor->skin;
   cells.bin(x, mask, nall, wall_groupbit, reach);
   cells.near_points(
-      x, atom->nlocal, nall, reach, [&](int i) { return (mask[i] & groupbit) ? x[i] : nullptr; },
-      [](int) { return true; }, first_fluid, fluid_near, fluid_atoms);
+      x, atom->nlocal, nall, reach,
+      [&](int i) {
+        return (mask[i] & groupbit) ? x[i] : nullptr;
+      },
+      [](int) {
+        return true;
+      },
+      first_fluid, fluid_near, fluid_atoms);
   fluid_near_valid = true;
 }
 
@@ -284,7 +298,7 @@ void FixSPHWallAdami::pre_force_walls()
   if (any_solid && atom->nmax > nmax) {
     nmax = atom->nmax;
     memory->destroy(solid_state);
-    memory->create(solid_state, nmax, 4, "sph/wall/adami:solid_state");
+    memory->create(solid_state, nmax, SOLID_STATE_SIZE, "sph/wall/adami:solid_state");
   }
   const int ntypes = atom->ntypes;
 
@@ -301,8 +315,8 @@ void FixSPHWallAdami::pre_force_walls()
     fluid_pressure[m] = sphe_pressure_at(materials->eos(type[j]), rho[j],
                                          thermal_expansion ? particles.temperature(j) : 0.0);
     if (buoyancy)
-      fluid_pressure[m] += materials->eos(type[j])->rho0 *
-          SPHBodyForce::potential_of(buoyancy, mask[j], j);
+      fluid_pressure[m] +=
+          materials->eos(type[j])->rho0 * SPHBodyForce::potential_of(buoyancy, mask[j], j);
     double accel[3];
     SPHBodyForce::acceleration(body, buoyancy, mask[j], type[j],
                                buoyancy ? particles.temperature(j) : 0.0, atom->x[j], accel);
@@ -313,7 +327,7 @@ void FixSPHWallAdami::pre_force_walls()
     const int is_solid = solid_type[type[i]];
     double weight = 0.0, weighted_p = 0.0, hydrostatic = 0.0;
     double weighted_rho_r[3] = {0.0, 0.0, 0.0};    // moving walls: sum_f rho_f r_wf W_wf
-    double weighted_mu = 0.0;    // solids only; and the weight of each fluid type
+    double weighted_mu = 0.0;                      // solids only; and the weight of each fluid type
     if (is_solid)
       for (int t = 1; t <= ntypes; t++) fluid_weight[t] = 0.0;
     double weighted_v[3] = {0.0, 0.0, 0.0};
@@ -337,7 +351,8 @@ void FixSPHWallAdami::pre_force_walls()
       for (int k = 0; k < 3; k++) weighted_v[k] += w * v[j][k];
       if (is_solid) {
         fluid_weight[type[j]] += w;
-        weighted_mu += w * materials->viscosity_at(type[j], particles.temperature(j), "Fix sph/wall/adami");
+        weighted_mu +=
+            w * materials->viscosity_at(type[j], particles.temperature(j), "Fix sph/wall/adami");
       }
     }
     // the wall's own acceleration: P_w gets -a_w . sum_f rho_f r_wf W_wf
@@ -372,6 +387,8 @@ void FixSPHWallAdami::pre_force_walls()
                               : sphe_density_at(eos, eos->p_background, t_wall);
       if (weight > 0.0 && rho[i] <= 0.0) below_eos++;
     }
+    // the no-slip velocity: a solid keeps it apart from its own vest
+    double *const no_slip = is_solid ? &solid_state[i][SOLID_VELOCITY] : vest[i];
     const int how = mirror ? ghost_how[i] : SPHI_NONE;
     if (how == SPHI_CORRECTED) {
       // the quadratic through the wall's v at the surface and the fluid's v
@@ -385,15 +402,15 @@ void FixSPHWallAdami::pre_force_walls()
       double normal_excess = 0.0;
       for (int k = 0; k < 3; k++) {
         const double *const grad = &fluid[3 + 3 * k];
-        vest[i][k] = v[i][k] - 3.0 * (fluid[k] - v[i][k]) + grad[0] * span[0] + grad[1] * span[1] +
+        no_slip[k] = v[i][k] - 3.0 * (fluid[k] - v[i][k]) + grad[0] * span[0] + grad[1] * span[1] +
             grad[2] * span[2];
-        normal_excess += (vest[i][k] - (2.0 * v[i][k] - fluid[k])) * span[k];
+        normal_excess += (no_slip[k] - (2.0 * v[i][k] - fluid[k])) * span[k];
       }
       // along the normal, the mirror image 2 v_w - v(g): the quadratic
       // amplifies the particles' noise threefold there, which broke up a
       // jittered channel flow; the shear lies in the tangential part
       if (span_sq > 0.0)
-        for (int k = 0; k < 3; k++) vest[i][k] -= normal_excess * span[k] / span_sq;
+        for (int k = 0; k < 3; k++) no_slip[k] -= normal_excess * span[k] / span_sq;
     } else {
       // the image of the fluid's velocity: at the mirror point where the
       // fluid there is too thin for the fit, else Adami's Shepard mean
@@ -401,7 +418,7 @@ void FixSPHWallAdami::pre_force_walls()
         const double fluid = (how == SPHI_SHEPARD) ? ghost_velocity[12 * (size_t) i + k]
             : (weight > 0.0)                       ? weighted_v[k] / weight
                                                    : v[i][k];
-        vest[i][k] = 2.0 * v[i][k] - fluid;
+        no_slip[k] = 2.0 * v[i][k] - fluid;
       }
     }
   }
@@ -423,7 +440,7 @@ SPHCommStage FixSPHWallAdami::forward_fields() const
 {
   SPHCommStage stage;
   stage.flat(atom->rho, 1).rows(atom->vest, 3);
-  if (any_solid) stage.rows(solid_state, 4);
+  if (any_solid) stage.rows(solid_state, SOLID_STATE_SIZE);
   return stage;
 }
 
@@ -437,7 +454,7 @@ void FixSPHWallAdami::unpack_forward_comm(int n, int first, double *buf)
 {
   if (any_solid && atom->nmax > nmax) {
     nmax = atom->nmax;
-    memory->grow(solid_state, nmax, 4, "sph/wall/adami:solid_state");
+    memory->grow(solid_state, nmax, SOLID_STATE_SIZE, "sph/wall/adami:solid_state");
   }
   forward_fields().unpack_forward(n, first, buf);
 }
@@ -526,7 +543,8 @@ void FixSPHWallAdami::restart(char *buf)
 
 double FixSPHWallAdami::memory_usage()
 {
-  return 6.0 * atom->nmax * sizeof(double) + (any_solid ? 4.0 * nmax * sizeof(double) : 0.0);
+  return 6.0 * atom->nmax * sizeof(double) +
+      (any_solid ? (double) SOLID_STATE_SIZE * nmax * sizeof(double) : 0.0);
 }
 
 /* ----------------------------------------------------------------------

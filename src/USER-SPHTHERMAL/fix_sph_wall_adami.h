@@ -40,13 +40,16 @@ class FixSPHWallAdami : public Fix {
   // a solid wall particle (its type has no equation of state) keeps its own
   // density, mass and heat capacity for conduction; the flow sees it with
   // the pressure, density and viscosity extrapolated from the fluid, for
-  // owned and ghost atoms, valid after pre_force
+  // owned and ghost atoms, valid after pre_force; its no-slip velocity too,
+  // which is not written to vest (a MACHDYN solid's vest is its own
+  // velocity, which pair smd/tlsph reads)
   int has_solids() const { return any_solid; }
   int solid(int i) const { return solid_type[atom->type[i]]; }
   double pressure(int i) const { return solid_state[i][0]; }
   double fluid_density(int i) const { return solid_state[i][1]; }
   double viscosity(int i) const { return solid_state[i][2]; }
   double compression(int i) const { return solid_state[i][3]; }
+  const double *no_slip_velocity(int i) const { return &solid_state[i][SOLID_VELOCITY]; }
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
   // the velocity of the last sample travels and restarts with each atom
@@ -68,8 +71,8 @@ class FixSPHWallAdami : public Fix {
 
  protected:
   class SPHCommStage forward_fields() const;    // what the forward comm carries
-  double body[3];            // body acceleration of the fluid minus that of the wall
-  int body_given;            // 1: 'body' in the command; 0: the run's body force
+  double body[3];    // body acceleration of the fluid minus that of the wall
+  int body_given;    // 1: 'body' in the command; 0: the run's body force
   // moving walls: each particle's acceleration a_w, from its velocity at
   // successive force evaluations (fix rigid and fix move set v at the half
   // step, fix sph/wall/adami samples it in pre_force)
@@ -81,9 +84,9 @@ class FixSPHWallAdami : public Fix {
   int sampled;                 // 1 when v_sampled holds a sample of every wall atom
   void sample_acceleration(double half_dt);
   void pre_force_walls();
-  const double *body_force;  // the run's body force (fix gravity), nullptr when none
+  const double *body_force;    // the run's body force (fix gravity), nullptr when none
   const SPHBodyForce::Buoyancy *buoyancy;    // fix sph/boussinesq, nullptr when none
-  int wall_groupbit;      // particles of every sph/wall/adami fix
+  int wall_groupbit;                         // particles of every sph/wall/adami fix
   int kernel_kind;
   double cutoff;
   class FixSPHMaterials *materials;
@@ -97,10 +100,13 @@ class FixSPHWallAdami : public Fix {
   std::vector<double> fluid_pressure, fluid_rho_accel;
   bool fluid_near_valid;
   void find_fluid_near();
-  int *solid_type;          // per type: 1 when the type has no equation of state
-  double *fluid_weight;     // per type: kernel weight of its fluid around one solid particle
-  int any_solid;            // 1 when some wall particle of this fix is solid
-  double **solid_state;     // per atom (owned and ghost): P, rho, viscosity, rho0/rho seen by the flow
+  int *solid_type;         // per type: 1 when the type has no equation of state
+  double *fluid_weight;    // per type: kernel weight of its fluid around one solid particle
+  int any_solid;           // 1 when some wall particle of this fix is solid
+  // per atom (owned and ghost): P, rho, viscosity, rho0/rho and the no-slip
+  // velocity (3) seen by the flow
+  double **solid_state;
+  static constexpr int SOLID_VELOCITY = 4, SOLID_STATE_SIZE = 7;
   int nmax;
   // with 'surface': the mirror points, the fluid's velocity and its
   // gradient there (12 per owned atom, SPHMirror::interpolate_velocity) and

@@ -54,9 +54,10 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr), buoyancy(nullptr),
     pressure_buoyancy(nullptr), eta2(0.0), materials(nullptr), viscosity_varies(0),
     wall_groupbit(0), pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr),
-    density(nullptr), diffused_density(nullptr), diffusion_rho(nullptr), thermal_expansion(0),
-    nmax(0), heat(nullptr), shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0),
-    background_warned(0), soft_fluid_warned(0)
+    density(nullptr), diffused_density(nullptr), diffusion_rho(nullptr),
+    velocity_seen_store(nullptr), velocity_seen(nullptr), thermal_expansion(0), nmax(0),
+    heat(nullptr), shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0), background_warned(0),
+    soft_fluid_warned(0)
 {
   // the continuity equation and the viscous term need the velocities of
   // ghost atoms: turned on here, as comm_modify vel yes would
@@ -78,6 +79,7 @@ PairSPHHarmonicVisc::~PairSPHHarmonicVisc()
   memory->destroy(volume);
   memory->destroy(density);
   memory->destroy(diffused_density);
+  memory->destroy(velocity_seen_store);
   memory->destroy(shift_sum);
   memory->destroy(gradient_inverse);
   delete[] pvector;
@@ -221,7 +223,7 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
   const int newton_pair = force->newton_pair;
   const double *const *const x = atom->x;
   const double *const *const v = atom->v;
-  const double *const *const vest = atom->vest;
+  const double *const *const vest = velocity_seen;
   double *const *const f = rates.f;
   double *const drho = rates.drho;
   double *const desph = rates.desph;
@@ -447,7 +449,7 @@ void PairSPHHarmonicVisc::eval_heating(int ifrom, int ito, const Rates &rates)
   const int newton_pair = force->newton_pair;
   const double *const *const x = atom->x;
   const double *const *const v = atom->v;
-  const double *const *const vest = atom->vest;
+  const double *const *const vest = velocity_seen;
   double *const desph = rates.desph;
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;

@@ -113,6 +113,10 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // leaves the thermal density differences alone (else atom->rho)
   double *diffused_density;
   const double *diffusion_rho;
+  // the velocity the viscosity sees: atom->vest, or with solid wall particles
+  // a copy with their no-slip velocity from the wall (their own vest is left alone)
+  double **velocity_seen_store;
+  const double *const *velocity_seen;
   int thermal_expansion;    // some equation of state depends on T
   int nmax;
   // pair sph/cleary/heat, when its term is evaluated in this style's loop

@@ -46,7 +46,8 @@ void PairSPHHarmonicVisc::group_force(GroupForce &request) const
   const int newton_pair = force->newton_pair;
   const int dim3 = domain->dimension == 3;
   const double *const *const x = atom->x;
-  const double *const *const vest = atom->vest;
+  // (the velocity of the last evaluation's loop)
+  const double *const *const vest = velocity_seen ? velocity_seen : atom->vest;
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
   const double cutsq_kernel = cut_global * cut_global;

@@ -341,7 +341,8 @@ void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
 double PairSPHHarmonicVisc::memory_usage()
 {
   return Pair::memory_usage() +
-      (5.0 * nmax + 3.0 * nmax_shift + 6.0 * nmax_gradient) * sizeof(double);
+      ((velocity_seen_store ? 8.0 : 5.0) * nmax + 3.0 * nmax_shift + 6.0 * nmax_gradient) *
+      sizeof(double);
 }
 
 /* ----------------------------------------------------------------------

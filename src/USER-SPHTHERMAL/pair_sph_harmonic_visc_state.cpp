@@ -146,6 +146,10 @@ void PairSPHHarmonicVisc::update_atom_state()
                       : 0),
              "Pair style sph/harmonic/visc");
   const double *const temperature = state.temperature();
+  // the walls that hold solid particles (known after the walls' init)
+  std::vector<FixSPHWallAdami *> solid_walls;
+  for (auto wall : adami_walls)
+    if (wall->has_solids()) solid_walls.push_back(wall);
   if (atom->nmax > nmax) {
     nmax = atom->nmax;
     memory->destroy(pressure);
@@ -154,6 +158,7 @@ void PairSPHHarmonicVisc::update_atom_state()
     memory->destroy(volume);
     memory->destroy(density);
     memory->destroy(diffused_density);
+    memory->destroy(velocity_seen_store);
     memory->create(volume, nmax, "pair:volume");
     if (thermal_expansion) memory->create(diffused_density, nmax, "pair:diffused_density");
     memory->create(pressure, nmax, "pair:pressure");
@@ -161,20 +166,26 @@ void PairSPHHarmonicVisc::update_atom_state()
     memory->create(mass_of, nmax, "pair:mass_of");
     memory->create(density, nmax, "pair:density");
   }
+  if (!solid_walls.empty() && !velocity_seen_store)
+    memory->create(velocity_seen_store, nmax, 3, "pair:velocity_seen");
   const double *const rho = atom->rho;
   const int *const type = atom->type;
   const int *const mask = atom->mask;
   const int nall = atom->nlocal + atom->nghost;
   diffusion_rho = thermal_expansion ? diffused_density : rho;
   std::copy(state.mass(), state.mass() + nall, mass_of);
-  // the walls that hold solid particles (known after the walls' init)
-  std::vector<FixSPHWallAdami *> solid_walls;
-  for (auto wall : adami_walls)
-    if (wall->has_solids()) solid_walls.push_back(wall);
+  // the viscosity's velocity: vest, but the solid wall particles' no-slip one
+  double **const seen = solid_walls.empty() ? nullptr : velocity_seen_store;
+  velocity_seen = seen ? seen : atom->vest;
+  const double *const *const vest = atom->vest;
   for (int i = 0; i < nall; i++) {
     FixSPHWallAdami *solid = nullptr;
     for (auto wall : solid_walls)
       if ((mask[i] & wall->groupbit) && wall->solid(i)) solid = wall;
+    if (seen) {
+      const double *const from = solid ? solid->no_slip_velocity(i) : vest[i];
+      for (int k = 0; k < 3; k++) seen[i][k] = from[k];
+    }
     if (solid) {
       // its own volume, filled with the fluid as the wall extrapolates it and
       // compressed with it (so that wall and fluid particles keep their share)
@@ -214,8 +225,8 @@ void PairSPHHarmonicVisc::update_atom_state()
   if (hydrostatic) {
     body_accel.resize(3 * (size_t) nall);
     // the buoyancy that its potential balances does not stratify the density
-    const SPHBodyForce::Buoyancy *stratifying =
-        SPHBodyForce::has_potential(buoyancy) ? nullptr : buoyancy;
+    const SPHBodyForce::Buoyancy *stratifying = SPHBodyForce::has_potential(buoyancy) ? nullptr
+                                                                                      : buoyancy;
     for (int i = 0; i < nall; i++)
       SPHBodyForce::acceleration(gravity, stratifying, mask[i], type[i],
                                  buoyancy ? temperature[i] : 0.0, atom->x[i],

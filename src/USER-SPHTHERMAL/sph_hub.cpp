@@ -13,6 +13,7 @@
 #include "fix_sph_materials.h"
 #include "fix_sph_surface_flux.h"
 #include "fix_sph_timestep_check.h"
+#include "fix_sph_wall_adami.h"
 #include "fix_sph_wall_isothermal.h"
 #include "force.h"
 #include "pair.h"
@@ -157,7 +158,8 @@ const double *SPHHub::machdyn_deformation_det() const
 
 bool SPHHub::may_act_on_machdyn(const Fix *fix) const
 {
-  if (is_any<FixSPHMaterials, FixSPHWallIsothermal, FixSPHSurfaceFlux, FixSPHTimestepCheck>(fix))
+  if (is_any<FixSPHMaterials, FixSPHWallIsothermal, FixSPHSurfaceFlux, FixSPHTimestepCheck,
+             FixSPHWallAdami>(fix))
     return true;
   return !(ours(fix) || fix_sph_moves(fix) || strcmp(fix->style, "sph/stationary") == 0);
 }

@@ -17,6 +17,7 @@
 #include "force.h"
 #include "group.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "pair.h"
 #include "sph_checks.h"
 #include "sph_hub.h"
@@ -146,7 +147,49 @@ void SPHMachdynSolids::init()
                "deleted: define fix sph/materials again)",
                who, SPHParticles::SOLID_VECTOR, VECTOR_FIX);
   check_styles();
+  check_exclusions();
   check_periodic();
+}
+
+/* ----------------------------------------------------------------------
+   pair smd/tlsph takes each particle's partners from its neighbor list at
+   the first step and deletes the particles that have none (a message, no
+   error): a neigh_modify exclude of the solid's own pairs (as walls' pairs
+   are excluded) would silently take the solid apart
+------------------------------------------------------------------------- */
+
+void SPHMachdynSolids::check_exclusions()
+{
+  for (int k = 0; k < neighbor->nex_type; k++) {
+    const int t1 = neighbor->ex1_type[k], t2 = neighbor->ex2_type[k];
+    if (solid_type[t1] && solid_type[t2])
+      error->all(FLERR,
+                 "{}: neigh_modify exclude type {} {} leaves out pairs of the MACHDYN solid types "
+                 "{}: pair smd/tlsph finds each particle's partners in the neighbor list and "
+                 "deletes the particles that have none",
+                 who, t1, t2, type_list());
+  }
+  const int nlocal = atom->nlocal;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  for (int k = 0; k < neighbor->nex_group; k++) {
+    const int bit1 = group->bitmask[neighbor->ex1_group[k]];
+    const int bit2 = group->bitmask[neighbor->ex2_group[k]];
+    int local[2] = {0, 0}, all[2];
+    for (int i = 0; i < nlocal; i++)
+      if (solid_type[type[i]]) {
+        if (mask[i] & bit1) local[0] = 1;
+        if (mask[i] & bit2) local[1] = 1;
+      }
+    MPI_Allreduce(local, all, 2, MPI_INT, MPI_MAX, world);
+    if (all[0] && all[1])
+      error->all(FLERR,
+                 "{}: neigh_modify exclude group {} {} leaves out pairs of atoms of the MACHDYN "
+                 "solid types {}: pair smd/tlsph finds each particle's partners in the neighbor "
+                 "list and deletes the particles that have none",
+                 who, group->names[neighbor->ex1_group[k]], group->names[neighbor->ex2_group[k]],
+                 type_list());
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -188,8 +231,9 @@ void SPHMachdynSolids::check_styles()
     return total;
   };
   const std::string supported =
-      "pair sph/cleary/heat, fix sph/wall/isothermal, fix sph/surface/flux and compute "
-      "sph/thermal";
+      "pair sph/cleary/heat, fix sph/wall/isothermal, fix sph/surface/flux, fix "
+      "sph/wall/adami (the solid as a moving wall of pair sph/harmonic/visc's flow) and "
+      "compute sph/thermal";
   const SPHHub hub(lmp);
   for (int i = 0; i < modify->nfix; i++) {
     Fix *fix = modify->fix[i];

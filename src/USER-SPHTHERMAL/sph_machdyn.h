@@ -91,6 +91,7 @@ class SPHMachdynSolids : protected Pointers {
   // (owned solid atoms) the effective plastic strain whose work was made heat
   static constexpr const char *PLASTIC_VECTOR = "sph_converted_plastic_strain";
   void check_styles();
+  void check_exclusions();
   void check_periodic();
   void check_density();
 };

@@ -40,4 +40,11 @@ foreach(case plastic elastic)
   sphthermal_lammps_test(solids.work.${case} ${CMAKE_CURRENT_LIST_DIR}/in.work
     VARS case ${case} LABELS unit PASS "work: passed" FAIL "FAIL" "ERROR")
 endforeach()
+# a MACHDYN solid as a moving wall of a flowing fluid: the flow as around a
+# rigidly moved wall, momentum and thermal energy kept (1, 2 and 4 ranks)
+foreach(np 1 2 4)
+  sphthermal_python_test(solids.flow.np${np} solids/test_flow.py LAMMPS
+    ARGS --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
+endforeach()
+set_tests_properties(solids.flow.np1 PROPERTIES LABELS unit)
 add_error_cases(solids ${CMAKE_CURRENT_LIST_DIR}/errors.in)
