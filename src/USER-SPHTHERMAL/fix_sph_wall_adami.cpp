@@ -40,14 +40,12 @@
 #include "sph_hub.h"
 #include "sph_interpolation.h"
 #include "sph_kernels.h"
-#include "sph_machdyn.h"
 #include "sph_mirror.h"
 #include "sph_particle.h"
 #include "update.h"
 
 #include <cmath>
 #include <cstring>
-#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -174,11 +172,6 @@ void FixSPHWallAdami::init()
   moving = moving_keyword;
   if (moving < 0) {
     int local = 0, any = 0;
-    // MACHDYN solids (the types of pair smd/tlsph) move and deform with fix smd/integrate_tlsph
-    std::vector<int> deforming(atom->ntypes + 1, 0);
-    for (int t : SPHMachdynSolids::tlsph_types(lmp)) deforming[t] = 1;
-    for (int i = 0; i < atom->nlocal; i++)
-      if ((atom->mask[i] & groupbit) && deforming[atom->type[i]]) local = 1;
     for (int ifix = 0; ifix < modify->nfix; ifix++) {
       Fix *other = modify->fix[ifix];
       if (!hub.moves_bodies(other)) continue;

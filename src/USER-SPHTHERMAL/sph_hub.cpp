@@ -131,7 +131,9 @@ bool SPHHub::rigid(const Fix *fix) const
 
 bool SPHHub::moves_bodies(const Fix *fix) const
 {
-  return rigid(fix) || utils::strmatch(fix->style, "^move");
+  // (MACHDYN's integrators move and deform its solids)
+  return rigid(fix) || utils::strmatch(fix->style, "^move") ||
+      utils::strmatch(fix->style, "^smd/integrate");
 }
 
 bool SPHHub::adds_force(const Fix *fix) const

@@ -82,7 +82,8 @@ class SPHHub : protected Pointers {
   bool fix_sph_moves(const Fix *fix) const;
   // a fix other than 'self' that resets the timestep (dt/reset, sph/dt/reset)
   Fix *timestep_resetter(const Fix *self) const;
-  // fixes that move atoms as bodies or along a prescribed path (rigid*, move)
+  // fixes that move atoms as bodies, along a prescribed path or as MACHDYN
+  // solids (rigid*, move, smd/integrate_*)
   bool moves_bodies(const Fix *fix) const;
   bool rigid(const Fix *fix) const;
   // fix addforce (a force that the pressure of a hydrostatic start cannot know)
