@@ -377,8 +377,8 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
           const double g_r = 0.5 *
               ((a_i[0] + a_j[0]) * delx + (a_i[1] + a_j[1]) * dely +
                ((DIM == 3) ? (a_i[2] + a_j[2]) * delz : 0.0));
-          drho_ji -= sphe_density(eos_i, eos_i->p_background - eos_i->rho0 * g_r) - eos_i->rho0;
-          drho_ij -= sphe_density(eos_j, eos_j->p_background + eos_j->rho0 * g_r) - eos_j->rho0;
+          drho_ji -= sphe_hydrostatic_offset(eos_i, -eos_i->rho0 * g_r);
+          drho_ij -= sphe_hydrostatic_offset(eos_j, eos_j->rho0 * g_r);
         }
         // neither is a wall: their volumes are m / rho
         drho_i += sphf_diffusion_pair(delta_h_c0, b.vol, dwdr_r) * drho_ji;

@@ -53,6 +53,19 @@ static void check_eos(void)
       const double c = sphe_sound_speed(eos, rho);
       expect(near(c * c, c2, 1e-6), "c^2 = dP/drho", c * c, c2);
     }
+    /* the hydrostatic offset: density(P_b + dp) - rho0 against the exact
+       value in long double, over the pair-sized dp of the series (|x| <
+       1e-2, x = gamma dp / B) and the larger ones of pow, with no cancellation */
+    for (int n = 0; n < 200; n++) {
+      const double x = (n % 2 ? 1.0 : -1.0) * pow(10.0, uniform(-9.0, -0.5));
+      const double b = eos->rho0 * eos->c0 * eos->c0;
+      const double dp = (eos->kind == SPHE_TAIT) ? x * b / eos->gamma : x * b;
+      const long double exact = (eos->kind == SPHE_TAIT)
+          ? eos->rho0 * expm1l(log1pl((long double) x) / eos->gamma)
+          : (long double) dp / ((long double) eos->c0 * eos->c0);
+      expect(near(sphe_hydrostatic_offset(eos, dp), (double) exact, 1e-14), "hydrostatic offset",
+             sphe_hydrostatic_offset(eos, dp), (double) exact);
+    }
     /* the bulk modulus: the pressure per relative compression at rho0 */
     const double eps = 1e-6;
     const double k = (sphe_pressure(eos, eos->rho0 * (1 + eps)) -
