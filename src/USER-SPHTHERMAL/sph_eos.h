@@ -127,20 +127,26 @@ static inline double sphe_density(const sphe_eos *eos, double p)
    cancellation, by its binomial series for |x| < 1e-2 (eight terms, the
    next below 1e-16 of the sum), else expm1(log1p(x) / gamma). pow here took
    half of a Tait scene's step (bench/profile) */
-static inline double sphe_hydrostatic_offset(const sphe_eos *eos, double dp)
+static inline double sphe_tait_offset(const sphe_eos *eos, double dp)
 {
-  const double c2 = eos->c0 * eos->c0;
-  if (eos->kind != SPHE_TAIT) return dp / c2;
-  const double x = dp * eos->gamma / (eos->rho0 * c2);
+  static const double inverse[9] = {0.0, 1.0, 1.0 / 2, 1.0 / 3, 1.0 / 4, 1.0 / 5, 1.0 / 6, 1.0 / 7, 1.0 / 8};
+  const double x = dp * eos->gamma / (eos->rho0 * eos->c0 * eos->c0);
   if (x <= -1.0) return -eos->rho0;
   if (fabs(x) >= 1e-2) return eos->rho0 * expm1(log1p(x) / eos->gamma);
   const double a = 1.0 / eos->gamma;
   double term = 1.0, sum = 0.0;
   for (int k = 1; k <= 8; k++) {
-    term *= (a - (k - 1)) / k * x;
+    term *= (a - (k - 1)) * inverse[k] * x;
     sum += term;
   }
   return eos->rho0 * sum;
+}
+
+/* small enough to be inlined in the pair loop; the tait series is not */
+static inline double sphe_hydrostatic_offset(const sphe_eos *eos, double dp)
+{
+  if (eos->kind != SPHE_TAIT) return dp / (eos->c0 * eos->c0);
+  return sphe_tait_offset(eos, dp);
 }
 
 /* density at pressure P and temperature T */
