@@ -129,7 +129,8 @@ static inline double sphe_density(const sphe_eos *eos, double p)
    half of a Tait scene's step (bench/profile) */
 static inline double sphe_tait_offset(const sphe_eos *eos, double dp)
 {
-  static const double inverse[9] = {0.0, 1.0, 1.0 / 2, 1.0 / 3, 1.0 / 4, 1.0 / 5, 1.0 / 6, 1.0 / 7, 1.0 / 8};
+  static const double inverse[9] = {0.0,     1.0,     1.0 / 2, 1.0 / 3, 1.0 / 4,
+                                    1.0 / 5, 1.0 / 6, 1.0 / 7, 1.0 / 8};
   const double x = dp * eos->gamma / (eos->rho0 * eos->c0 * eos->c0);
   if (x <= -1.0) return -eos->rho0;
   if (fabs(x) >= 1e-2) return eos->rho0 * expm1(log1p(x) / eos->gamma);
