@@ -67,7 +67,7 @@ COMPONENTS = [
 
 
 def component(dso, symbol):
-    name = f"{symbol}" if not dso.startswith("libm") else f"libm {symbol}"
+    name = ("libm " if dso.startswith("libm") else "") + symbol
     for label, pattern in COMPONENTS:
         if re.search(pattern, name):
             return label
