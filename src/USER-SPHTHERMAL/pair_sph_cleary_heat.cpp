@@ -39,7 +39,7 @@
 using namespace LAMMPS_NS;
 
 // the layout of the restart settings: raise it when a setting is added
-static constexpr int RESTART_VERSION = 2;
+static constexpr int RESTART_VERSION = 3;
 
 /* ---------------------------------------------------------------------- */
 
@@ -49,9 +49,9 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     volume(nullptr), conductivity(nullptr), eta2(0.0), materials(nullptr), conductivity_varies(0),
     conductance(nullptr), loop_conductance(nullptr), relax_wanted(0), relax_rate(nullptr),
     nmax_relax(0), eta_request(-1.0), eta_logged(-1), correct_request(-1),
-    correct(SPHConductionWeights::NONE), correct_logged(-1), sweeps(5), weights(nullptr),
-    interface_types(nullptr), type_conductivity(nullptr), interface(nullptr), nmax_pairs(0),
-    pairs_x(nullptr), pairs_rho(nullptr), pairs_valid(0), refresh_pairs(0)
+    correct(SPHConductionWeights::NONE), correct_logged(-1), sweeps(5), warm_sweeps(0),
+    weights(nullptr), interface_types(nullptr), type_conductivity(nullptr), interface(nullptr),
+    nmax_pairs(0), pairs_x(nullptr), pairs_rho(nullptr), pairs_valid(0), refresh_pairs(0)
 {
   // S and the state of the correction; the interface's estimate; nu of 'correction second'
   comm_forward = SPHS_MAX;
@@ -317,7 +317,7 @@ void PairSPHClearyHeat::allocate()
 
 /* ----------------------------------------------------------------------
    pair_style sph/cleary/heat kernel cutoff [mean harmonic|arithmetic|interface] [distance d_name] [eta f]
-     [correction none|consistent|second] [sweeps n] [loop shared|own]
+     [correction none|consistent|second] [sweeps n] [warm m] [loop shared|own]
 ------------------------------------------------------------------------- */
 
 void PairSPHClearyHeat::settings(int narg, char **arg)
@@ -328,15 +328,17 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
   mean = SPHC_HARMONIC;
   correct_request = -1;
   sweeps = 5;
+  warm_sweeps = 0;
   distance_name.clear();
   loop_own = 0;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "eta") != 0 && strcmp(arg[iarg], "mean") != 0 &&
         strcmp(arg[iarg], "correction") != 0 && strcmp(arg[iarg], "sweeps") != 0 &&
-        strcmp(arg[iarg], "loop") != 0 && strcmp(arg[iarg], "distance") != 0)
+        strcmp(arg[iarg], "warm") != 0 && strcmp(arg[iarg], "loop") != 0 &&
+        strcmp(arg[iarg], "distance") != 0)
       error->all(FLERR,
                  "Illegal pair_style sph/cleary/heat command: unknown keyword '{}' (after the "
-                 "kernel and cutoff: eta, mean, distance, correction, sweeps or loop)",
+                 "kernel and cutoff: eta, mean, distance, correction, sweeps, warm or loop)",
                  arg[iarg]);
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal pair_style sph/cleary/heat command: missing value after '{}'",
@@ -391,6 +393,11 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
       sweeps = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
       if (sweeps < 1)
         error->all(FLERR, "Illegal pair_style sph/cleary/heat command: sweeps {} must be >= 1",
+                   arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "warm") == 0) {
+      warm_sweeps = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (warm_sweeps < 0)
+        error->all(FLERR, "Illegal pair_style sph/cleary/heat command: warm {} must be >= 0",
                    arg[iarg + 1]);
     } else if (strcmp(arg[iarg], "mean") == 0) {
       if (strcmp(arg[iarg + 1], "harmonic") == 0)
@@ -478,7 +485,7 @@ void PairSPHClearyHeat::init_style()
   eta2 = init_kernel();
   // (the per-atom states exist from here on, for compute sph/correction/atom)
   delete weights;
-  weights = SPHConductionWeights::create(lmp, correct, kernel.inv_h, sweeps);
+  weights = SPHConductionWeights::create(lmp, correct, kernel.inv_h, sweeps, warm_sweeps);
   for (int i = 0; i <= atom->ntypes; i++)
     for (int j = 0; j <= atom->ntypes; j++) loop_conductance[i][j] = 0.0;
   const int was_in_flow_loop = in_flow_loop;
@@ -515,6 +522,7 @@ void PairSPHClearyHeat::write_restart_settings(FILE *fp)
   fwrite(&eta_request, sizeof(double), 1, fp);
   fwrite(&correct_request, sizeof(int), 1, fp);
   fwrite(&sweeps, sizeof(int), 1, fp);
+  fwrite(&warm_sweeps, sizeof(int), 1, fp);
   fwrite(&loop_own, sizeof(int), 1, fp);
   const int length = (int) distance_name.size();
   fwrite(&length, sizeof(int), 1, fp);
@@ -532,6 +540,7 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &eta_request, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &correct_request, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &sweeps, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &warm_sweeps, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &loop_own, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &length, sizeof(int), 1, fp, nullptr, error);
   }
@@ -546,6 +555,7 @@ void PairSPHClearyHeat::read_restart_settings(FILE *fp)
   MPI_Bcast(&eta_request, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&correct_request, 1, MPI_INT, 0, world);
   MPI_Bcast(&sweeps, 1, MPI_INT, 0, world);
+  MPI_Bcast(&warm_sweeps, 1, MPI_INT, 0, world);
   MPI_Bcast(&loop_own, 1, MPI_INT, 0, world);
 }
 

@@ -124,7 +124,8 @@ class PairSPHClearyHeat : public PairSPHKernel {
   std::vector<HeatFlow> flows;
 
   // 'correction none', 'consistent' or 'second' (SPHConductionWeights::Kind)
-  // and the Jacobi sweeps of 'consistent'; their weights (nullptr for none).
+  // and the Jacobi sweeps of 'consistent' (from lambda = 0 at a neighbour
+  // build, and warm between builds); their weights (nullptr for none).
   // The command's request (-1: the scene's default, SPHSceneDefaults), what
   // init made of it, and the value last logged
   double eta_request;    // eta given in the command, -1: the scene's default
@@ -132,7 +133,7 @@ class PairSPHClearyHeat : public PairSPHKernel {
   int correct_request;
   int correct;
   int correct_logged;
-  int sweeps;
+  int sweeps, warm_sweeps;
   SPHConductionWeights *weights;
   // values per atom of the largest reverse communication but that of
   // 'correction second': the moments of the correction (6 and 3)

@@ -23,10 +23,11 @@
 
 using namespace LAMMPS_NS;
 
-SPHConductionWeights *SPHConductionWeights::create(LAMMPS *lmp, int kind, double inv_h, int sweeps)
+SPHConductionWeights *SPHConductionWeights::create(LAMMPS *lmp, int kind, double inv_h, int sweeps,
+                                                   int warm_sweeps)
 {
   SPHConductionWeights *made = nullptr;
-  if (kind == CONSISTENT) made = new SPHConsistentWeights(lmp, sweeps);
+  if (kind == CONSISTENT) made = new SPHConsistentWeights(lmp, sweeps, warm_sweeps);
   if (kind == SECOND) made = new SPHSecondWeights(lmp, inv_h);
   if (made) made->grow();
   return made;
@@ -104,13 +105,20 @@ void SPHConductionWeights::report() const
 }
 
 /* ----------------------------------------------------------------------
-   'correction consistent': S, then lambda from 'sweeps' Jacobi sweeps on
-   the first moment of the weights with S (sph_consistent.h)
+   'correction consistent': S, then lambda from Jacobi sweeps on the first
+   moment of the weights with S (sph_consistent.h): 'sweeps' of them from
+   lambda = 0 at a neighbour-list build, 'warm_sweeps' between builds from
+   the last step's lambda (the atoms keep their indices then, ghosts
+   included). The particles move little in a step, so the iteration goes on
+   where it stopped and, a few steps after a build, has had more sweeps
+   than a start from 0 would take. Builds fall on the same steps on any
+   number of ranks (the skin test is global), so the factors do not depend
+   on the ranks; a run's setup always starts from 0.
 ------------------------------------------------------------------------- */
 
-SPHConsistentWeights::SPHConsistentWeights(LAMMPS *lmp, int sweeps) :
-    SPHConductionWeights(lmp, CONSISTENT), sweeps(sweeps), kinv(nullptr), lambda(nullptr),
-    deficit(nullptr), coupling(nullptr)
+SPHConsistentWeights::SPHConsistentWeights(LAMMPS *lmp, int sweeps, int warm_sweeps) :
+    SPHConductionWeights(lmp, CONSISTENT), sweeps(sweeps), warm_sweeps(warm_sweeps), kinv(nullptr),
+    lambda(nullptr), deficit(nullptr), coupling(nullptr), lambda_step(-1), lambda_nall(-1)
 {
 }
 
@@ -134,6 +142,7 @@ void SPHConsistentWeights::grow_more()
   memory->create(lambda, nmax, 3, "sph/cleary/heat:correction_lambda");
   memory->create(deficit, nmax, 3, "sph/cleary/heat:correction_deficit");
   memory->create(coupling, nmax, 3, "sph/cleary/heat:correction_coupling");
+  lambda_step = -1;
 }
 
 double SPHConsistentWeights::memory_usage() const
@@ -150,66 +159,91 @@ void SPHConsistentWeights::refresh(SPHSupportPairs &pairs, const double *volume,
   const int dim = domain->dimension;
   const int newton = force->newton_pair;
   const int npairs = pairs.count();
+  const int *const pair_i = pairs.i.data();
+  const int *const pair_j = pairs.j.data();
+  const double *const pair_r = pairs.r.data();
+  const double *const distance = pairs.distance.data();
   double *const g = pairs.g.data();
   double *const weight = pairs.weight.data();
+  // the per-atom rows, flat (one load fewer per access)
+  const double *const s_flat = s[0];
+  double *const kinv_flat = kinv[0];
+  double *const lambda_flat = lambda[0];
+  double *const deficit_flat = deficit[0];
+  double *const coupling_flat = coupling[0];
+  const bool warm = warm_sweeps > 0 && !update->setupflag && lambda_step >= 0 &&
+      neighbor->ago > 0 && lambda_step >= neighbor->lastcall && lambda_nall == nall;
 
-  // the weights with S from here on; their first moments s and K
-  for (int q = 0; q < npairs; q++) {
-    const double *const r = pairs.r_of(q);
-    const double distance = pairs.distance[q];
-    const double e[3] = {r[0] / distance, r[1] / distance, r[2] / distance};
-    weight[q] = sphc_second_factor(s[pairs.i[q]], s[pairs.j[q]], e);
-    g[q] *= weight[q];
-  }
+  // the weights with S from here on, and their first moments s and K
   for (int i = 0; i < nall; i++) {
-    for (int k = 0; k < 6; k++) kinv[i][k] = 0.0;
-    for (int k = 0; k < 3; k++) deficit[i][k] = lambda[i][k] = 0.0;
+    for (int k = 0; k < 6; k++) kinv_flat[6 * i + k] = 0.0;
+    for (int k = 0; k < 3; k++) deficit_flat[3 * i + k] = 0.0;
   }
   for (int q = 0; q < npairs; q++) {
-    const int i = pairs.i[q], j = pairs.j[q];
-    const double *const r = pairs.r_of(q);
-    sphc_moment_add(kinv[i], g[q], r);
-    for (int k = 0; k < 3; k++) deficit[i][k] += g[q] * r[k];
+    const int i = pair_i[q], j = pair_j[q];
+    const double *const r = pair_r + 3 * q;
+    const double e[3] = {r[0] / distance[q], r[1] / distance[q], r[2] / distance[q]};
+    weight[q] = sphc_second_factor(s_flat + 6 * i, s_flat + 6 * j, e);
+    const double gq = g[q] * weight[q];
+    g[q] = gq;
+    sphc_moment_add(kinv_flat + 6 * i, gq, r);
+    for (int k = 0; k < 3; k++) deficit_flat[3 * i + k] += gq * r[k];
     if (newton || j < nlocal) {
-      sphc_moment_add(kinv[j], g[q], r);
-      for (int k = 0; k < 3; k++) deficit[j][k] -= g[q] * r[k];
+      sphc_moment_add(kinv_flat + 6 * j, gq, r);
+      for (int k = 0; k < 3; k++) deficit_flat[3 * j + k] -= gq * r[k];
     }
   }
   if (newton) exchange.reverse(SPHCommStage().rows(kinv, 6).rows(deficit, 3));
-  const double none[3] = {0.0, 0.0, 0.0};
   for (int i = 0; i < nlocal; i++) {
     double inverse[6];
-    if (state[i] == 0.0 || sphc_sym_inverse(dim, kinv[i], inverse) <= 0.0)
+    double *const kinv_i = kinv_flat + 6 * i;
+    if (state[i] == 0.0 || sphc_sym_inverse(dim, kinv_i, inverse) <= 0.0)
       for (int k = 0; k < 6; k++) inverse[k] = 0.0;    // lambda stays 0
-    for (int k = 0; k < 6; k++) kinv[i][k] = inverse[k];
-    sphc_first_update(kinv[i], none, deficit[i], lambda[i]);
+    for (int k = 0; k < 6; k++) kinv_i[k] = inverse[k];
+  }
+
+  // the first sweep from lambda = 0 (no coupling), or none on a warm start
+  int remaining = warm_sweeps;
+  if (!warm) {
+    const double none[3] = {0.0, 0.0, 0.0};
+    for (int i = 0; i < nall; i++)
+      for (int k = 0; k < 3; k++) lambda_flat[3 * i + k] = 0.0;
+    for (int i = 0; i < nlocal; i++)
+      sphc_first_update(kinv_flat + 6 * i, none, deficit_flat + 3 * i, lambda_flat + 3 * i);
+    remaining = sweeps - 1;
   }
 
   // Jacobi sweeps: each with the neighbours' lambda of the sweep before
+  // (on a warm start the ghosts' lambda is the last step's, as forwarded)
   const SPHCommStage lambda_stage = SPHCommStage().rows(lambda, 3);
-  for (int sweep = 1; sweep < sweeps; sweep++) {
-    exchange.forward(lambda_stage);
+  for (int sweep = 0; sweep < remaining; sweep++) {
+    if (sweep > 0 || !warm) exchange.forward(lambda_stage);
     for (int i = 0; i < nall; i++)
-      for (int k = 0; k < 3; k++) coupling[i][k] = 0.0;
+      for (int k = 0; k < 3; k++) coupling_flat[3 * i + k] = 0.0;
     for (int q = 0; q < npairs; q++) {
-      const int i = pairs.i[q], j = pairs.j[q];
-      const double *const r = pairs.r_of(q);
-      const double *const lambda_i = lambda[i];
-      const double *const lambda_j = lambda[j];
+      const int i = pair_i[q], j = pair_j[q];
+      const double *const r = pair_r + 3 * q;
+      const double *const lambda_i = lambda_flat + 3 * i;
+      const double *const lambda_j = lambda_flat + 3 * j;
       const double along_j = g[q] * (r[0] * lambda_j[0] + r[1] * lambda_j[1] + r[2] * lambda_j[2]);
-      for (int k = 0; k < 3; k++) coupling[i][k] += along_j * r[k];
+      for (int k = 0; k < 3; k++) coupling_flat[3 * i + k] += along_j * r[k];
       if (newton || j < nlocal) {
         const double along_i =
             g[q] * (r[0] * lambda_i[0] + r[1] * lambda_i[1] + r[2] * lambda_i[2]);
-        for (int k = 0; k < 3; k++) coupling[j][k] += along_i * r[k];
+        for (int k = 0; k < 3; k++) coupling_flat[3 * j + k] += along_i * r[k];
       }
     }
     if (newton) exchange.reverse(SPHCommStage().rows(coupling, 3));
-    for (int i = 0; i < nlocal; i++) sphc_first_update(kinv[i], coupling[i], deficit[i], lambda[i]);
+    for (int i = 0; i < nlocal; i++)
+      sphc_first_update(kinv_flat + 6 * i, coupling_flat + 3 * i, deficit_flat + 3 * i,
+                        lambda_flat + 3 * i);
   }
   exchange.forward(lambda_stage);
+  lambda_step = update->ntimestep;
+  lambda_nall = nall;
   for (int q = 0; q < npairs; q++)
-    weight[q] *= sphc_first_factor(lambda[pairs.i[q]], lambda[pairs.j[q]], pairs.r_of(q));
+    weight[q] *=
+        sphc_first_factor(lambda_flat + 3 * pair_i[q], lambda_flat + 3 * pair_j[q], pair_r + 3 * q);
 }
 
 double SPHConsistentWeights::factor(int i, int j, const double r_ij[3], double r) const

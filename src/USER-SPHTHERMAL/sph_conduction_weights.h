@@ -26,8 +26,11 @@ class SPHConductionWeights : protected Pointers {
  public:
   enum Kind { NONE = 0, CONSISTENT = 1, SECOND = 2 };
   // the weights of 'kind' (nullptr for NONE); inv_h the inverse of the
-  // kernel's smoothing length, sweeps the Jacobi sweeps of CONSISTENT
-  static SPHConductionWeights *create(LAMMPS *lmp, int kind, double inv_h, int sweeps);
+  // kernel's smoothing length; sweeps the Jacobi sweeps of CONSISTENT from
+  // lambda = 0 (at a neighbour-list build), warm_sweeps those that go on
+  // from the last step's lambda between builds (0: from lambda = 0 always)
+  static SPHConductionWeights *create(LAMMPS *lmp, int kind, double inv_h, int sweeps,
+                                      int warm_sweeps);
   ~SPHConductionWeights() override;
 
   // the factors of this step's pairs into pairs.weight (volume: m / rho of
@@ -64,15 +67,20 @@ class SPHConductionWeights : protected Pointers {
 // 'correction consistent': S and the first-moment vector lambda from Jacobi sweeps
 class SPHConsistentWeights : public SPHConductionWeights {
  public:
-  SPHConsistentWeights(LAMMPS *lmp, int sweeps);
+  SPHConsistentWeights(LAMMPS *lmp, int sweeps, int warm_sweeps);
   ~SPHConsistentWeights() override;
   void refresh(SPHSupportPairs &pairs, const double *volume, SPHExchange &exchange) override;
   double factor(int i, int j, const double r_ij[3], double r) const override;
   double memory_usage() const override;
 
  private:
-  const int sweeps;
+  const int sweeps, warm_sweeps;
   double **kinv, **lambda, **deficit, **coupling;
+  // lambda of every owned and ghost atom is the last step's, which a warm
+  // start may go on from: the step of the last refresh and the atom count
+  // then (-1: none since the arrays were made)
+  bigint lambda_step;
+  int lambda_nall;
   void grow_more() override;
   void release();
 };

@@ -145,7 +145,7 @@ static inline int sphi_solve(const sphi_point *p, double h, double *value, doubl
 
 typedef struct {
   int dim, nterms, nfields;
-  double h;
+  double h, inv_h;
   double a[SPHI_QUADRATIC_TERMS][SPHI_QUADRATIC_TERMS];
   double b[SPHI_QUADRATIC_FIELDS][SPHI_QUADRATIC_TERMS];
 } sphi_quadratic;
@@ -157,6 +157,7 @@ static inline void sphi_quadratic_begin(sphi_quadratic *q, int dim, int nfields,
   q->nterms = (dim == 3) ? 10 : 6;
   q->nfields = nfields;
   q->h = h;
+  q->inv_h = 1.0 / h;
   for (r = 0; r < SPHI_QUADRATIC_TERMS; r++) {
     for (c = 0; c < SPHI_QUADRATIC_TERMS; c++) q->a[r][c] = 0.0;
     for (c = 0; c < SPHI_QUADRATIC_FIELDS; c++) q->b[c][r] = 0.0;
@@ -166,7 +167,7 @@ static inline void sphi_quadratic_begin(sphi_quadratic *q, int dim, int nfields,
 /* the basis at d = r_j - r_p, scaled by h */
 static inline void sphi_quadratic_basis(const sphi_quadratic *q, const double d[3], double *basis)
 {
-  const double x = d[0] / q->h, y = d[1] / q->h, z = d[2] / q->h;
+  const double x = d[0] * q->inv_h, y = d[1] * q->inv_h, z = d[2] * q->inv_h;
   basis[0] = 1.0;
   basis[1] = x;
   basis[2] = y;
@@ -186,17 +187,32 @@ static inline void sphi_quadratic_basis(const sphi_quadratic *q, const double d[
 }
 
 /* one neighbour j: d = r_j - r_p, weight = V_j W_pj, f[nfields] its values */
+/* the sums of one neighbour, for nterms basis terms and nfields fields:
+   sphi_quadratic_add passes constants where it can, so that the loops
+   unroll (the mirror walls' fit, once per neighbour of every wall
+   particle and step, is that much cheaper) */
+static inline void sphi_quadratic_accumulate(sphi_quadratic *q, const double *basis, int nterms,
+                                             int nfields, double weight, const double *f)
+{
+  int r, c;
+  for (r = 0; r < nterms; r++) {
+    const double wr = weight * basis[r];
+    for (c = r; c < nterms; c++) q->a[r][c] += wr * basis[c];
+    for (c = 0; c < nfields; c++) q->b[c][r] += wr * f[c];
+  }
+}
+
 static inline void sphi_quadratic_add(sphi_quadratic *q, const double d[3], double weight,
                                       const double *f)
 {
   double basis[SPHI_QUADRATIC_TERMS];
-  int r, c;
   sphi_quadratic_basis(q, d, basis);
-  for (r = 0; r < q->nterms; r++) {
-    const double wr = weight * basis[r];
-    for (c = r; c < q->nterms; c++) q->a[r][c] += wr * basis[c];
-    for (c = 0; c < q->nfields; c++) q->b[c][r] += wr * f[c];
-  }
+  if (q->nterms == 6 && q->nfields == 2)
+    sphi_quadratic_accumulate(q, basis, 6, 2, weight, f);
+  else if (q->nterms == 10 && q->nfields == 3)
+    sphi_quadratic_accumulate(q, basis, 10, 3, weight, f);
+  else
+    sphi_quadratic_accumulate(q, basis, q->nterms, q->nfields, weight, f);
 }
 
 /* value[k] and grad[3 k .. 3 k + 2] of each field k; returns
