@@ -118,7 +118,7 @@ void SPHConductionWeights::report() const
 
 SPHConsistentWeights::SPHConsistentWeights(LAMMPS *lmp, int sweeps, int warm_sweeps) :
     SPHConductionWeights(lmp, CONSISTENT), sweeps(sweeps), warm_sweeps(warm_sweeps), kinv(nullptr),
-    lambda(nullptr), deficit(nullptr), coupling(nullptr), lambda_step(-1), lambda_nall(-1)
+    lambda(nullptr), deficit(nullptr), coupling(nullptr), lambda_step(-1)
 {
 }
 
@@ -171,8 +171,8 @@ void SPHConsistentWeights::refresh(SPHSupportPairs &pairs, const double *volume,
   double *const lambda_flat = lambda[0];
   double *const deficit_flat = deficit[0];
   double *const coupling_flat = coupling[0];
-  const bool warm = warm_sweeps > 0 && !update->setupflag && lambda_step >= 0 &&
-      neighbor->ago > 0 && lambda_step >= neighbor->lastcall && lambda_nall == nall;
+  // (no build since the last refresh: the atoms kept their indices)
+  const bool warm = warm_sweeps > 0 && !update->setupflag && lambda_step >= neighbor->lastcall;
 
   // the weights with S from here on, and their first moments s and K
   for (int i = 0; i < nall; i++) {
@@ -240,7 +240,6 @@ void SPHConsistentWeights::refresh(SPHSupportPairs &pairs, const double *volume,
   }
   exchange.forward(lambda_stage);
   lambda_step = update->ntimestep;
-  lambda_nall = nall;
   for (int q = 0; q < npairs; q++)
     weight[q] *=
         sphc_first_factor(lambda_flat + 3 * pair_i[q], lambda_flat + 3 * pair_j[q], pair_r + 3 * q);

@@ -76,11 +76,9 @@ class SPHConsistentWeights : public SPHConductionWeights {
  private:
   const int sweeps, warm_sweeps;
   double **kinv, **lambda, **deficit, **coupling;
-  // lambda of every owned and ghost atom is the last step's, which a warm
-  // start may go on from: the step of the last refresh and the atom count
-  // then (-1: none since the arrays were made)
+  // the step of the last refresh, whose lambda (owned and ghost atoms) a
+  // warm start goes on from (-1: none since the arrays were made)
   bigint lambda_step;
-  int lambda_nall;
   void grow_more() override;
   void release();
 };

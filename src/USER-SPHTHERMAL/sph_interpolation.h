@@ -186,7 +186,6 @@ static inline void sphi_quadratic_basis(const sphi_quadratic *q, const double d[
   }
 }
 
-/* one neighbour j: d = r_j - r_p, weight = V_j W_pj, f[nfields] its values */
 /* the sums of one neighbour, for nterms basis terms and nfields fields:
    sphi_quadratic_add passes constants where it can, so that the loops
    unroll (the mirror walls' fit, once per neighbour of every wall
@@ -202,6 +201,7 @@ static inline void sphi_quadratic_accumulate(sphi_quadratic *q, const double *ba
   }
 }
 
+/* one neighbour j: d = r_j - r_p, weight = V_j W_pj, f[nfields] its values */
 static inline void sphi_quadratic_add(sphi_quadratic *q, const double d[3], double weight,
                                       const double *f)
 {
