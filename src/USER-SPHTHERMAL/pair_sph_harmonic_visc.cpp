@@ -191,10 +191,15 @@ void PairSPHHarmonicVisc::eval_dimension(int ifrom, int ito, const Rates &rates)
   // the shift sums only with the default pressure form (else SHIFT is 0 and
   // both branches are the same instantiation)
   constexpr int SHIFT = (PRESSURE == SPHF_P_AVERAGED) ? SHIFT_SUMS : 0;
-  // likewise the corrected gradient (which fix sph/shift never asks to sum with)
+  // likewise the corrected gradient
   constexpr int CORRECTED = (PRESSURE == SPHF_P_AVERAGED) ? GRADIENT : 0;
   // 2-D: the z components are zero, and so are their terms
-  if (CORRECTED && gradient_correction) {
+  if (CORRECTED && gradient_correction && SHIFT && shift_sums_wanted) {
+    if (domain->dimension == 2)
+      eval<KERNEL, PRESSURE, VISCOSITY, TERMS | CORRECTED | SHIFT, 2>(ifrom, ito, rates);
+    else
+      eval<KERNEL, PRESSURE, VISCOSITY, TERMS | CORRECTED | SHIFT, 3>(ifrom, ito, rates);
+  } else if (CORRECTED && gradient_correction) {
     if (domain->dimension == 2)
       eval<KERNEL, PRESSURE, VISCOSITY, TERMS | CORRECTED, 2>(ifrom, ito, rates);
     else

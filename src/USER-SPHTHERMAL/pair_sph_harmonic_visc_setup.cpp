@@ -46,8 +46,8 @@ static constexpr int RESTART_VERSION = 1;
 
 bool PairSPHHarmonicVisc::provide_shift_sums(int groupbit)
 {
-  // the corrected loop does not make them (fix sph/shift then sums them itself)
-  if (pressure_form != SPHF_P_AVERAGED || gradient_correction) return false;
+  // only the averaged pressure form's loop makes them (fix sph/shift then sums them itself)
+  if (pressure_form != SPHF_P_AVERAGED) return false;
   const int ntypes = atom->ntypes;
   std::vector<int> group_type(ntypes + 1, 0), group_type_all(ntypes + 1, 0);
   int in_wall = 0, in_wall_any = 0;

@@ -24,8 +24,8 @@
             1e-10 of the change)
   shared    the skillen sums made in the pair loop of sph/harmonic/visc
             (loop shared) give the positions of the fix's own pass (loop
-            own) to round-off; with another pressure form it makes them
-            itself (on --np ranks)
+            own) to round-off, with the corrected pressure gradient too;
+            with another pressure form it makes them itself (on --np ranks)
   linear    with 'correct yes' the temperature of a linear field follows the
             shifted particles exactly (to 1e-10), next to walls too, and the
             fix's energy equals the change of sum m cv T of the group
@@ -195,17 +195,22 @@ write_dump      all custom {name}.dump id x y modify sort id format float %.17g
     own, own_line = run("own", "own")
     shared, shared_line = run("shared", "shared")
     other, other_line = run("other", "shared", "pressure sum")
+    # the loop with the corrected pressure gradient makes them too
+    corrected, corrected_line = run("corrected", "shared", "correction gradient")
     start = read_dump(os.path.join(work, "own_before.dump"))
     moved = np.hypot(own["x"] - start["x"], own["y"] - start["y"]).max()
     diff = max(np.abs(shared["x"] - own["x"]).max(), np.abs(shared["y"] - own["y"]).max())
     diff_other = max(np.abs(other["x"] - own["x"]).max(), np.abs(other["y"] - own["y"]).max())
-    ok = (moved > 1e-3 and diff < 1e-13 and diff_other < 1e-13 and shared_line and not own_line
-          and not other_line)
+    diff_corrected = max(np.abs(corrected["x"] - own["x"]).max(),
+                         np.abs(corrected["y"] - own["y"]).max())
+    ok = (moved > 1e-3 and diff < 1e-13 and diff_other < 1e-13 and diff_corrected < 1e-13
+          and shared_line and not own_line and not other_line and corrected_line)
     print(f"{'ok' if ok else 'FAIL'}: {a.form} on {a.np} rank(s): largest shift {moved:.2e} in 100 steps; "
           f"positions after them, "
-          f"sums from the pair loop against the fix's own pass: {diff:.2e}, with pressure sum "
+          f"sums from the pair loop against the fix's own pass: {diff:.2e}, with correction "
+          f"gradient {diff_corrected:.2e}, with pressure sum "
           f"(own pass taken) {diff_other:.2e} (limit 1e-13); log line: shared {shared_line}, own "
-          f"{own_line}, pressure sum {other_line}")
+          f"{own_line}, correction gradient {corrected_line}, pressure sum {other_line}")
     return ok
 
 

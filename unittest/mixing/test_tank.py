@@ -35,7 +35,11 @@ def run(args, example, variables, workdir):
                      log="log.lammps")
 
 
-def check_growth(m, names, least, what, fallback=1e-3):
+def check_growth(m, names, least, what, fallback=1e-2):
+    # the measures weight each particle's composition by its volume m/rho,
+    # which moves with the weakly compressible density (about 1 % at the
+    # tanks' Mach number): a sample may fall back by a few 1e-3 (1.3e-3 in
+    # 2-D, where a round-off change of the shifts moves the chaotic flow)
     for name in names:
         series = m[name]
         that(series[-1] >= least, f"{what}: {name} grows to {series[-1]:.4f} (at least {least})")
@@ -72,9 +76,8 @@ def check_tank3d(args, workdir):
     n_fluid = int(mixing_tank.fluid_of(frames[0][1], 3).sum())
     that(np.all(m["fluid_inside"] == n_fluid), f"3-D {args.components}: every fluid particle stays in the tank",
          f"{int(m['fluid_inside'].min())} of {n_fluid} at the least")
-    # in the first second the fluid's density still rings (no density
-    # diffusion): the volumes in F, and the entropies, move with it by a few 1e-3
-    check_growth(m, ["S*_A", "S*_B", "VF-FTLE"], 0.005, f"3-D {args.components}", fallback=1e-2)
+    # in the first second the fluid's density still rings (no density diffusion)
+    check_growth(m, ["S*_A", "S*_B", "VF-FTLE"], 0.005, f"3-D {args.components}")
     last = frames[-1][1]
     fluid = mixing_tank.fluid_of(last, 3)
     that(fluid.sum() == n_fluid, f"3-D {args.components}: the last dump holds every fluid particle")
