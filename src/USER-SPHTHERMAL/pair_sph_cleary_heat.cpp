@@ -49,7 +49,7 @@ PairSPHClearyHeat::PairSPHClearyHeat(LAMMPS *lmp) :
     volume(nullptr), conductivity(nullptr), eta2(0.0), materials(nullptr), conductivity_varies(0),
     conductance(nullptr), loop_conductance(nullptr), relax_wanted(0), relax_rate(nullptr),
     nmax_relax(0), eta_request(-1.0), eta_logged(-1), correct_request(-1),
-    correct(SPHConductionWeights::NONE), correct_logged(-1), sweeps(5), warm_sweeps(0),
+    correct(SPHConductionWeights::NONE), correct_logged(-1), sweeps(5), warm_sweeps(1),
     weights(nullptr), interface_types(nullptr), type_conductivity(nullptr), interface(nullptr),
     nmax_pairs(0), pairs_x(nullptr), pairs_rho(nullptr), pairs_valid(0), refresh_pairs(0)
 {
@@ -328,7 +328,7 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
   mean = SPHC_HARMONIC;
   correct_request = -1;
   sweeps = 5;
-  warm_sweeps = 0;
+  warm_sweeps = 1;
   distance_name.clear();
   loop_own = 0;
   while (iarg < narg) {
