@@ -253,6 +253,10 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
   const double delta_h_half = 0.5 * delta * kernel.h;
   const int hydrostatic = this->hydrostatic;
   const double *const body_accel = this->body_accel.data();
+  // the tait offsets' series, per type, of this step's EOS
+  std::vector<sphe_tait_series> series_of((TERMS & DIFFUSION) && hydrostatic ? atom->ntypes + 1 : 0);
+  for (int t = 1; t < (int) series_of.size(); t++)
+    if (eos_of[t] && eos_of[t]->kind == SPHE_TAIT) sphe_tait_series_of(eos_of[t], &series_of[t]);
   const PairSPHClearyHeat::FlowLoopTerm term = heat_term;
   double *const shift_sum = this->shift_sum;
   const double *const *const gradient_inverse = this->gradient_inverse;
@@ -382,8 +386,15 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
           const double g_r = 0.5 *
               ((a_i[0] + a_j[0]) * delx + (a_i[1] + a_j[1]) * dely +
                ((DIM == 3) ? (a_i[2] + a_j[2]) * delz : 0.0));
-          drho_ji -= sphe_hydrostatic_offset(eos_i, -eos_i->rho0 * g_r);
-          drho_ij -= sphe_hydrostatic_offset(eos_j, eos_j->rho0 * g_r);
+          if (eos_j == eos_i) {
+            double up, down;
+            sphe_hydrostatic_offsets(eos_i, &series_of[type[i]], eos_i->rho0 * g_r, &up, &down);
+            drho_ji -= down;
+            drho_ij -= up;
+          } else {
+            drho_ji -= sphe_hydrostatic_offset(eos_i, -eos_i->rho0 * g_r);
+            drho_ij -= sphe_hydrostatic_offset(eos_j, eos_j->rho0 * g_r);
+          }
         }
         // neither is a wall: their volumes are m / rho
         drho_i += sphf_diffusion_pair(delta_h_c0, b.vol, dwdr_r) * drho_ji;

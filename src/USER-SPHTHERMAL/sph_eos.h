@@ -150,6 +150,46 @@ static inline double sphe_hydrostatic_offset(const sphe_eos *eos, double dp)
   return sphe_tait_offset(eos, dp);
 }
 
+/* the offsets at +dp and at -dp together, as a pair of particles of one
+   material needs them: the tait series' odd and even parts summed once
+   (Horner in x^2), from coefficients made once per material and step (made
+   per call, their divisions took 34 % of a scene's step under gravity) */
+typedef struct {
+  double x_per_dp; /* gamma / B */
+  double c[9];     /* binomial(1 / gamma, k) */
+} sphe_tait_series;
+
+static inline void sphe_tait_series_of(const sphe_eos *eos, sphe_tait_series *s)
+{
+  s->x_per_dp = eos->gamma / (eos->rho0 * eos->c0 * eos->c0);
+  const double a = 1.0 / eos->gamma;
+  s->c[0] = 1.0;
+  for (int k = 1; k <= 8; k++) s->c[k] = s->c[k - 1] * (a - (k - 1)) / k;
+}
+
+/* series: sphe_tait_series_of(eos) for tait (unused for linear) */
+static inline void sphe_hydrostatic_offsets(const sphe_eos *eos, const sphe_tait_series *series,
+                                            double dp, double *up, double *down)
+{
+  if (eos->kind != SPHE_TAIT) {
+    *up = dp / (eos->c0 * eos->c0);
+    *down = -*up;
+    return;
+  }
+  const double x = dp * series->x_per_dp;
+  if (fabs(x) >= 1e-2) {
+    *up = sphe_tait_offset(eos, dp);
+    *down = sphe_tait_offset(eos, -dp);
+    return;
+  }
+  const double *const c = series->c;
+  const double x2 = x * x;
+  const double odd = x * (c[1] + x2 * (c[3] + x2 * (c[5] + x2 * c[7])));
+  const double even = x2 * (c[2] + x2 * (c[4] + x2 * (c[6] + x2 * c[8])));
+  *up = eos->rho0 * (even + odd);
+  *down = eos->rho0 * (even - odd);
+}
+
 /* density at pressure P and temperature T */
 static inline double sphe_density_at(const sphe_eos *eos, double p, double t)
 {

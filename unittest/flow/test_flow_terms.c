@@ -65,6 +65,17 @@ static void check_eos(void)
           : (long double) dp / ((long double) eos->c0 * eos->c0);
       expect(near(sphe_hydrostatic_offset(eos, dp), (double) exact, 1e-14), "hydrostatic offset",
              sphe_hydrostatic_offset(eos, dp), (double) exact);
+      /* both signs at once (a pair of one material) */
+      const long double exact_down = (eos->kind == SPHE_TAIT)
+          ? eos->rho0 * expm1l(log1pl(-(long double) x) / eos->gamma)
+          : -(long double) dp / ((long double) eos->c0 * eos->c0);
+      double up, down;
+      sphe_tait_series series;
+      sphe_tait_series_of(eos, &series);
+      sphe_hydrostatic_offsets(eos, &series, dp, &up, &down);
+      expect(near(up, (double) exact, 1e-14), "hydrostatic offsets, +dp", up, (double) exact);
+      expect(near(down, (double) exact_down, 1e-14), "hydrostatic offsets, -dp", down,
+             (double) exact_down);
     }
     /* the bulk modulus: the pressure per relative compression at rho0 */
     const double eps = 1e-6;
