@@ -254,8 +254,9 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
   const int hydrostatic = this->hydrostatic;
   const double *const body_accel = this->body_accel.data();
   // the tait offsets' series, per type, of this step's EOS
-  std::vector<sphe_tait_series> series_of((TERMS & DIFFUSION) && hydrostatic ? atom->ntypes + 1 : 0);
-  for (int t = 1; t < (int) series_of.size(); t++)
+  const int nseries = ((TERMS & DIFFUSION) && hydrostatic) ? atom->ntypes + 1 : 0;
+  std::vector<sphe_tait_series> series_of(nseries);
+  for (int t = 1; t < nseries; t++)
     if (eos_of[t] && eos_of[t]->kind == SPHE_TAIT) sphe_tait_series_of(eos_of[t], &series_of[t]);
   const PairSPHClearyHeat::FlowLoopTerm term = heat_term;
   double *const shift_sum = this->shift_sum;
