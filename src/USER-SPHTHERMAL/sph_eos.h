@@ -196,10 +196,12 @@ static inline double sphe_density_at(const sphe_eos *eos, double p, double t)
   return sphe_density_ref(eos, p, sphe_reference_density(eos, t));
 }
 
-/* speed of sound sqrt(dP/drho) at rho */
+/* speed of sound sqrt(dP/drho) at rho (every atom every step, for the
+   timestep: gamma = 7 takes the cube by multiplication) */
 static inline double sphe_sound_speed(const sphe_eos *eos, double rho)
 {
-  if (eos->kind == SPHE_TAIT) return eos->c0 * pow(rho / eos->rho0, 0.5 * (eos->gamma - 1.0));
+  if (eos->kind == SPHE_TAIT)
+    return eos->c0 * sphe_power(rho / eos->rho0, 0.5 * (eos->gamma - 1.0));
   return eos->c0;
 }
 

@@ -1,0 +1,139 @@
+#!/usr/bin/env python3
+"""What a whole scene costs beyond its physics: each scene of the speed
+issue is run for a short stretch of its flow, and its loop time per
+particle-step is set against the bare shared thermal-flow loop (pair
+sph/harmonic/visc + sph/cleary/heat, loop shared, fix sph; no walls,
+corrections, shifting or density diffusion) on a periodic box of about as
+many particles, at the scene's kernel, h / dx and dimension
+(bench/flow/in.bench). The ratio is the overhead of everything else: the
+corrections, walls, shifting, other fixes, neighbour lists.
+
+The same box with LAMMPS's own styles (sph/taitwater/morris +
+sph/heatconduction, Lucy kernel, h = 2.6 dx, LAMMPS's example setting)
+against ours on the same particles gives the whole-step ratio (loop time,
+not the pair's share).
+
+  overhead.py [--lmp build/lmp] [--plugin build/sphthermalplugin.so]
+              [--scenes cavity air channel tank3d bodies] [--repeat 3]
+              [--out bench/profile/out] [--results bench/profile/overhead.md]
+
+Serial, one thread; each figure the fastest of --repeat runs (the scenes
+one run each unless --repeat-scenes). Run on an otherwise idle machine.
+"""
+
+import argparse
+import os
+import re
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+EXAMPLES = os.path.join(ROOT, "examples")
+BOX = os.path.join(ROOT, "bench", "flow", "in.bench")
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+
+# name: (input, variables for a short stretch, kernel, h / dx, dimension),
+# the kernels and h / dx as in the inputs
+SCENES = {
+    "cavity": ("convection-cavity/in.cavity", {"tend": 0.05}, "wendland", 2.0, 2),
+    "air": ("convection-cavity/in.air", {"n": 154, "seconds": 0.1, "every": 100000}, "wendland", 2.0, 2),
+    "channel": ("forced-channel/in.channel", {"tend": 1.0}, "quintic", 1.3, 2),
+    "tank3d": ("mixing-tank-3d/in.tank3d", {"data": "tank.data", "tend": 0.1, "dumpdt": 100.0},
+               "wendland", 2.0, 3),
+    "bodies": ("coupling-hot-bodies/in.bodies", {"tend": 0.2}, "wendland", 1.3, 2),
+}
+
+
+def loop_cost(cmd, workdir):
+    """Loop time per particle-step (s) of the last run with steps, and its atoms."""
+    out = subprocess.run(cmd, cwd=workdir, capture_output=True, text=True,
+                         env=dict(os.environ, OMP_NUM_THREADS="1"))
+    if out.returncode != 0:
+        sys.exit(f"overhead.py: {' '.join(cmd)} failed:\n{out.stdout[-2000:]}{out.stderr[-2000:]}")
+    runs = [(float(t), int(s), int(a)) for t, s, a in re.findall(
+        r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) atoms", out.stdout)
+        if int(s) > 0]
+    time, steps, atoms = runs[-1]
+    return time / (steps * atoms), steps, atoms
+
+
+def scene_cost(args, scene):
+    path, variables, _, _, _ = SCENES[scene]
+    work = os.path.join(args.out, scene)
+    os.makedirs(work, exist_ok=True)
+    if scene == "tank3d":
+        import mixing_tank
+        variables = dict(variables, dx=mixing_tank.write_tank_data(16, os.path.join(work, "tank.data")))
+    cmd = [args.lmp, "-in", os.path.join(EXAMPLES, path), "-var", "plugin", args.plugin, "-log", "none"]
+    for k, v in variables.items():
+        cmd += ["-var", k, str(v)]
+    runs = [loop_cost(cmd, work) for _ in range(args.repeat_scenes)]
+    return min(runs)
+
+
+def box_cost(args, pair, kernel, hdx, dim, atoms, steps):
+    n = max(10, round(atoms ** (1.0 / dim)))
+    work = os.path.join(args.out, "box")
+    os.makedirs(work, exist_ok=True)
+    cmd = [args.lmp, "-in", BOX, "-var", "plugin", args.plugin, "-log", "none", "-var", "pair", pair,
+           "-var", "kernel", kernel, "-var", "hdx", str(hdx), "-var", "dim", str(dim), "-var", "n", str(n),
+           "-var", "steps", str(steps)]
+    return min(loop_cost(cmd, work) for _ in range(args.repeat))
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
+    p.add_argument("--plugin", default=os.path.join(ROOT, "build", "sphthermalplugin.so"))
+    p.add_argument("--scenes", nargs="+", choices=list(SCENES), default=list(SCENES))
+    p.add_argument("--repeat", type=int, default=3, help="runs of each box, the fastest kept (default 3)")
+    p.add_argument("--repeat-scenes", type=int, default=1, help="runs of each scene (default 1)")
+    p.add_argument("--out", default=os.path.join(HERE, "out"))
+    p.add_argument("--results", default=os.path.join(HERE, "overhead.md"))
+    args = p.parse_args()
+    args.lmp, args.plugin, args.out = (os.path.abspath(a) for a in (args.lmp, args.plugin, args.out))
+
+    rows = []
+    for scene in args.scenes:
+        _, _, kernel, hdx, dim = SCENES[scene]
+        cost, steps, atoms = scene_cost(args, scene)
+        bare, _, box_atoms = box_cost(args, "ours", kernel, hdx, dim, atoms, 200)
+        rows.append((scene, kernel, hdx, dim, atoms, steps, cost, box_atoms, bare))
+        print(f"{scene}: {cost * 1e6:.3f} us per particle-step ({atoms} atoms, {steps} steps); "
+              f"bare loop {bare * 1e6:.3f} us ({box_atoms} atoms): {cost / bare:.2f}", flush=True)
+    whole = {}
+    for n in (60, 120):
+        ours, _, atoms = box_cost(args, "ours", "lucy", 2.6, 2, n * n, 200)
+        lammps, _, _ = box_cost(args, "lammps", "lucy", 2.6, 2, n * n, 200)
+        whole[atoms] = (ours, lammps)
+        print(f"box {atoms} atoms, Lucy, h = 2.6 dx: ours {ours * 1e6:.3f} us, LAMMPS's {lammps * 1e6:.3f} us: "
+              f"{ours / lammps:.2f}", flush=True)
+
+    lines = ["# Whole scenes against the bare thermal-flow loop", "",
+             "Written by `bench/profile/overhead.py` (do not edit). Loop time per",
+             "particle-step (LAMMPS's loop time over steps and atoms, walls included),",
+             "serial, one thread; the scenes one run each of a short stretch of their",
+             f"flow, the boxes the fastest of {args.repeat} runs of 200 steps",
+             "(bench/flow/in.bench: jittered periodic box, the shared loop of",
+             "sph/harmonic/visc + sph/cleary/heat, no density diffusion, no walls,",
+             "corrections or shifting) at the scene's kernel, h / dx and dimension,",
+             "about as many particles.", "",
+             "| scene | kernel, h / dx, dim | atoms | steps | scene (us) | bare loop (us) | scene / bare |",
+             "|---|---|---|---|---|---|---|"]
+    for scene, kernel, hdx, dim, atoms, steps, cost, box_atoms, bare in rows:
+        lines.append(f"| {scene} | {kernel}, {hdx:g}, {dim}-d | {atoms} | {steps} | {cost * 1e6:.3f} | "
+                     f"{bare * 1e6:.3f} ({box_atoms} atoms) | {cost / bare:.2f} |")
+    lines += ["", "The whole thermal-flow step against LAMMPS's styles (sph/taitwater/morris +",
+              "sph/heatconduction, hybrid/overlay) on the same particles, Lucy kernel,",
+              "h = 2.6 dx, loop time per particle-step:", "",
+              "| atoms | ours (us) | LAMMPS's (us) | ours / LAMMPS's |", "|---|---|---|---|"]
+    for atoms, (ours, lammps) in whole.items():
+        lines.append(f"| {atoms} | {ours * 1e6:.3f} | {lammps * 1e6:.3f} | {ours / lammps:.2f} |")
+    with open(args.results, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print(f"wrote {args.results}")
+
+
+if __name__ == "__main__":
+    main()
