@@ -21,7 +21,7 @@ Serial, one thread; each figure the fastest of --repeat runs (the scenes
 one run each unless --repeat-scenes). Run on an otherwise idle machine.
 """
 
-import argparse
+import importlib.util
 import os
 import re
 import subprocess
@@ -29,9 +29,13 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-EXAMPLES = os.path.join(ROOT, "examples")
 BOX = os.path.join(ROOT, "bench", "flow", "in.bench")
 sys.path.insert(0, os.path.join(ROOT, "tools"))
+# this directory's profile.py (the scenes' command lines), by its path: the
+# standard library has a module of that name
+_spec = importlib.util.spec_from_file_location("scene_profile", os.path.join(HERE, "profile.py"))
+profile = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(profile)
 
 # name: (input, variables for a short stretch, kernel, h / dx, dimension),
 # the kernels and h / dx as in the inputs
@@ -60,14 +64,7 @@ def loop_cost(cmd, workdir):
 
 def scene_cost(args, scene):
     path, variables, _, _, _ = SCENES[scene]
-    work = os.path.join(args.out, scene)
-    os.makedirs(work, exist_ok=True)
-    if scene == "tank3d":
-        import mixing_tank
-        variables = dict(variables, dx=mixing_tank.write_tank_data(16, os.path.join(work, "tank.data")))
-    cmd = [args.lmp, "-in", os.path.join(EXAMPLES, path), "-var", "plugin", args.plugin, "-log", "none"]
-    for k, v in variables.items():
-        cmd += ["-var", k, str(v)]
+    work, cmd = profile.scene_command(args, scene, path, variables)
     runs = [loop_cost(cmd, work) for _ in range(args.repeat_scenes)]
     return min(runs)
 
@@ -83,14 +80,9 @@ def box_cost(args, pair, kernel, hdx, dim, atoms, steps):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
-    p.add_argument("--plugin", default=os.path.join(ROOT, "build", "sphthermalplugin.so"))
-    p.add_argument("--scenes", nargs="+", choices=list(SCENES), default=list(SCENES))
+    p = profile.scene_arguments(__doc__, SCENES, "overhead.md")
     p.add_argument("--repeat", type=int, default=3, help="runs of each box, the fastest kept (default 3)")
     p.add_argument("--repeat-scenes", type=int, default=1, help="runs of each scene (default 1)")
-    p.add_argument("--out", default=os.path.join(HERE, "out"))
-    p.add_argument("--results", default=os.path.join(HERE, "overhead.md"))
     args = p.parse_args()
     args.lmp, args.plugin, args.out = (os.path.abspath(a) for a in (args.lmp, args.plugin, args.out))
 

@@ -74,8 +74,9 @@ def component(dso, symbol):
     return "other"
 
 
-def record(args, scene):
-    path, variables, delay = SCENES[scene]
+def scene_command(args, scene, path, variables):
+    """The scene's working directory (made, with the 3-d tank's particles)
+    and its LAMMPS command line (also bench/profile/overhead.py)."""
     work = os.path.join(args.out, scene)
     os.makedirs(work, exist_ok=True)
     if scene == "tank3d":
@@ -84,6 +85,23 @@ def record(args, scene):
     cmd = [args.lmp, "-in", os.path.join(EXAMPLES, path), "-var", "plugin", args.plugin, "-log", "none"]
     for k, v in variables.items():
         cmd += ["-var", k, str(v)]
+    return work, cmd
+
+
+def scene_arguments(doc, scenes, results):
+    """The options both scripts take; more may be added before parse_args."""
+    p = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
+    p.add_argument("--plugin", default=os.path.join(ROOT, "build", "sphthermalplugin.so"))
+    p.add_argument("--scenes", nargs="+", choices=list(scenes), default=list(scenes))
+    p.add_argument("--out", default=os.path.join(HERE, "out"))
+    p.add_argument("--results", default=os.path.join(HERE, results))
+    return p
+
+
+def record(args, scene):
+    path, variables, delay = SCENES[scene]
+    work, cmd = scene_command(args, scene, path, variables)
     data = os.path.join(work, "perf.data")
     perf = ["perf", "record", "-F", "499", "--delay", str(1000 * delay), "-o", data, "--"] + cmd
     env = dict(os.environ, OMP_NUM_THREADS="1")
@@ -132,14 +150,9 @@ def write_results(args, profiles):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--lmp", default=os.path.join(ROOT, "build", "lmp"))
-    p.add_argument("--plugin", default=os.path.join(ROOT, "build", "sphthermalplugin.so"))
-    p.add_argument("--scenes", nargs="+", choices=list(SCENES), default=list(SCENES))
+    p = scene_arguments(__doc__, SCENES, "results.md")
     p.add_argument("--window", type=float, default=20.0, help="seconds of the time loop recorded (default 20)")
     p.add_argument("--top", type=int, default=12, help="functions listed per scene (default 12)")
-    p.add_argument("--out", default=os.path.join(HERE, "out"))
-    p.add_argument("--results", default=os.path.join(HERE, "results.md"))
     args = p.parse_args()
     if shutil.which("perf") is None:
         sys.exit("profile.py: needs perf (Debian: apt install linux-perf)")
