@@ -23,6 +23,8 @@ import re
 import subprocess
 import tempfile
 
+from sphthermal_tools.log import loop_runs
+
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.join(here, "..", "..")
 run_sh = os.path.join(root, "examples", "convection-cavity", "run.sh")
@@ -38,8 +40,7 @@ def run_case(lmp, plugin, workdir, sweeps):
                           text=True).stdout
     log = open(os.path.join(out, "log.cavity")).read()
     # the time loop: the run with the most steps
-    runs = re.findall(r"Loop time of (\S+) on \d+ procs for (\d+) steps", log)
-    loop, steps = max(((float(t), int(n)) for t, n in runs), key=lambda r: r[1])
+    loop, steps, _ = max(loop_runs(log), key=lambda run: run[1])
     pairs = [float(p) for p in re.findall(r"^Pair\s+\|\s+(\S+)", log, re.M)]
     l2 = re.search(r"L2 errors on y = 0.5 .*: theta (\S+), v (\S+); on x = 0.5: theta (\S+), u (\S+)",
                    text)

@@ -23,7 +23,6 @@ one run each unless --repeat-scenes). Run on an otherwise idle machine.
 
 import importlib.util
 import os
-import re
 import subprocess
 import sys
 
@@ -31,6 +30,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 BOX = os.path.join(ROOT, "bench", "flow", "in.bench")
 sys.path.insert(0, os.path.join(ROOT, "tools"))
+from sphthermal_tools.log import loop_runs  # noqa: E402
 # this directory's profile.py (the scenes' command lines), by its path: the
 # standard library has a module of that name
 _spec = importlib.util.spec_from_file_location("scene_profile", os.path.join(HERE, "profile.py"))
@@ -55,10 +55,7 @@ def loop_cost(cmd, workdir):
                          env=dict(os.environ, OMP_NUM_THREADS="1"))
     if out.returncode != 0:
         sys.exit(f"overhead.py: {' '.join(cmd)} failed:\n{out.stdout[-2000:]}{out.stderr[-2000:]}")
-    runs = [(float(t), int(s), int(a)) for t, s, a in re.findall(
-        r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) atoms", out.stdout)
-        if int(s) > 0]
-    time, steps, atoms = runs[-1]
+    time, steps, atoms = [run for run in loop_runs(out.stdout) if run[1] > 0][-1]
     return time / (steps * atoms), steps, atoms
 
 

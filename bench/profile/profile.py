@@ -50,7 +50,7 @@ SCENES = {
 # a component: the first pattern that matches the function's name (or its library)
 COMPONENTS = [
     ("pressure-gradient correction", r"update_gradient_correction"),
-    ("flow pair (its density diffusion too)", r"PairSPHHarmonicVisc::eval|sphf_|sphe_tait_offset|sphe_hydrostatic"),
+    ("flow pair (its density diffusion too)", r"PairSPHHarmonicVisc::eval|sphf_|sphe_tait|sphe_hydrostatic"),
     ("consistent conduction's factors", r"SPHConsistentWeights|SPHConductionWeights|PairSPHClearyHeat::update_pairs"),
     ("conduction pair", r"PairSPHClearyHeat::eval|sphc_"),
     ("per-atom state (density, pressure, volume)", r"sphe_|update_state|PairSPHHarmonicVisc::"),

@@ -193,23 +193,23 @@ void PairSPHHarmonicVisc::eval_dimension(int ifrom, int ito, const Rates &rates)
   constexpr int SHIFT = (PRESSURE == SPHF_P_AVERAGED) ? SHIFT_SUMS : 0;
   // likewise the corrected gradient
   constexpr int CORRECTED = (PRESSURE == SPHF_P_AVERAGED) ? GRADIENT : 0;
-  // 2-D: the z components are zero, and so are their terms
-  if (CORRECTED && gradient_correction && SHIFT && shift_sums_wanted) {
-    if (domain->dimension == 2)
-      eval<KERNEL, PRESSURE, VISCOSITY, TERMS | CORRECTED | SHIFT, 2>(ifrom, ito, rates);
-    else
-      eval<KERNEL, PRESSURE, VISCOSITY, TERMS | CORRECTED | SHIFT, 3>(ifrom, ito, rates);
-  } else if (CORRECTED && gradient_correction) {
-    if (domain->dimension == 2)
-      eval<KERNEL, PRESSURE, VISCOSITY, TERMS | CORRECTED, 2>(ifrom, ito, rates);
-    else
-      eval<KERNEL, PRESSURE, VISCOSITY, TERMS | CORRECTED, 3>(ifrom, ito, rates);
-  } else if (SHIFT && shift_sums_wanted) {
-    if (domain->dimension == 2)
-      eval<KERNEL, PRESSURE, VISCOSITY, TERMS | SHIFT, 2>(ifrom, ito, rates);
-    else
-      eval<KERNEL, PRESSURE, VISCOSITY, TERMS | SHIFT, 3>(ifrom, ito, rates);
-  } else if (domain->dimension == 2)
+  const bool corrected = CORRECTED && gradient_correction;
+  const bool shift = SHIFT && shift_sums_wanted;
+  if (corrected && shift)
+    eval_in_dimension<KERNEL, PRESSURE, VISCOSITY, TERMS | CORRECTED | SHIFT>(ifrom, ito, rates);
+  else if (corrected)
+    eval_in_dimension<KERNEL, PRESSURE, VISCOSITY, TERMS | CORRECTED>(ifrom, ito, rates);
+  else if (shift)
+    eval_in_dimension<KERNEL, PRESSURE, VISCOSITY, TERMS | SHIFT>(ifrom, ito, rates);
+  else
+    eval_in_dimension<KERNEL, PRESSURE, VISCOSITY, TERMS>(ifrom, ito, rates);
+}
+
+// 2-D: the z components are zero, and so are their terms
+template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS>
+void PairSPHHarmonicVisc::eval_in_dimension(int ifrom, int ito, const Rates &rates)
+{
+  if (domain->dimension == 2)
     eval<KERNEL, PRESSURE, VISCOSITY, TERMS, 2>(ifrom, ito, rates);
   else
     eval<KERNEL, PRESSURE, VISCOSITY, TERMS, 3>(ifrom, ito, rates);
@@ -387,15 +387,13 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
           const double g_r = 0.5 *
               ((a_i[0] + a_j[0]) * delx + (a_i[1] + a_j[1]) * dely +
                ((DIM == 3) ? (a_i[2] + a_j[2]) * delz : 0.0));
-          if (eos_j == eos_i) {
-            double up, down;
-            sphe_hydrostatic_offsets(eos_i, &series_of[type[i]], eos_i->rho0 * g_r, &up, &down);
-            drho_ji -= down;
-            drho_ij -= up;
-          } else {
-            drho_ji -= sphe_hydrostatic_offset(eos_i, -eos_i->rho0 * g_r);
-            drho_ij -= sphe_hydrostatic_offset(eos_j, eos_j->rho0 * g_r);
-          }
+          // i's at -dp and j's at +dp (one evaluation where i and j share the EOS)
+          double up, down;
+          sphe_hydrostatic_offsets(eos_i, &series_of[type[i]], eos_i->rho0 * g_r, &up, &down);
+          drho_ji -= down;
+          if (eos_j != eos_i)
+            sphe_hydrostatic_offsets(eos_j, &series_of[type[j]], eos_j->rho0 * g_r, &up, &down);
+          drho_ij -= up;
         }
         // neither is a wall: their volumes are m / rho
         drho_i += sphf_diffusion_pair(delta_h_c0, b.vol, dwdr_r) * drho_ji;

@@ -188,8 +188,11 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   struct GradientCall;
   struct EvalCall;
   struct HeatingCall;
+  // the run's corrected gradient and shift sums added to TERMS, then the dimension
   template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS>
   void eval_dimension(int ifrom, int ito, const Rates &rates);
+  template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS>
+  void eval_in_dimension(int ifrom, int ito, const Rates &rates);
   template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS, int DIM>
   void eval(int ifrom, int ito, const Rates &rates);
   // viscous heating, a pass of its own (only when on: the main loop's

@@ -122,38 +122,14 @@ static inline double sphe_density(const sphe_eos *eos, double p)
 }
 
 /* sphe_density(eos, P_b + dp) - rho0: the density a pressure dp above the
-   background adds (the hydrostatic part of Fourtakas's density diffusion,
-   twice per pair), x = gamma dp / B: (1 + x)^(1/gamma) - 1 without
-   cancellation, by its binomial series for |x| < 1e-2 (eight terms, the
-   next below 1e-16 of the sum), else expm1(log1p(x) / gamma). pow here took
-   half of a Tait scene's step (bench/profile) */
-static inline double sphe_tait_offset(const sphe_eos *eos, double dp)
-{
-  static const double inverse[9] = {0.0,     1.0,     1.0 / 2, 1.0 / 3, 1.0 / 4,
-                                    1.0 / 5, 1.0 / 6, 1.0 / 7, 1.0 / 8};
-  const double x = dp * eos->gamma / (eos->rho0 * eos->c0 * eos->c0);
-  if (x <= -1.0) return -eos->rho0;
-  if (fabs(x) >= 1e-2) return eos->rho0 * expm1(log1p(x) / eos->gamma);
-  const double a = 1.0 / eos->gamma;
-  double term = 1.0, sum = 0.0;
-  for (int k = 1; k <= 8; k++) {
-    term *= (a - (k - 1)) * inverse[k] * x;
-    sum += term;
-  }
-  return eos->rho0 * sum;
-}
-
-/* small enough to be inlined in the pair loop; the tait series is not */
-static inline double sphe_hydrostatic_offset(const sphe_eos *eos, double dp)
-{
-  if (eos->kind != SPHE_TAIT) return dp / (eos->c0 * eos->c0);
-  return sphe_tait_offset(eos, dp);
-}
-
-/* the offsets at +dp and at -dp together, as a pair of particles of one
-   material needs them: the tait series' odd and even parts summed once
-   (Horner in x^2), from coefficients made once per material and step (made
-   per call, their divisions took 34 % of a scene's step under gravity) */
+   background adds (the hydrostatic part of Fourtakas's density diffusion),
+   x = gamma dp / B: (1 + x)^(1/gamma) - 1 without cancellation, by its
+   binomial series for |x| < 1e-2 (eight terms, the next below 1e-16 of the
+   sum), else expm1(log1p(x) / gamma). A pair of one material needs it at
+   +dp and -dp: the series' odd and even parts are summed once (Horner in
+   x^2), from coefficients made once per material and step (pow here took
+   half of a tait scene's step, and the coefficients' divisions made per
+   call a third: bench/profile) */
 typedef struct {
   double x_per_dp; /* gamma / B */
   double c[9];     /* binomial(1 / gamma, k) */
@@ -167,7 +143,15 @@ static inline void sphe_tait_series_of(const sphe_eos *eos, sphe_tait_series *s)
   for (int k = 1; k <= 8; k++) s->c[k] = s->c[k - 1] * (a - (k - 1)) / k;
 }
 
-/* series: sphe_tait_series_of(eos) for tait (unused for linear) */
+/* the offset at x = gamma dp / B beyond the series */
+static inline double sphe_tait_offset_far(const sphe_eos *eos, double x)
+{
+  if (x <= -1.0) return -eos->rho0;
+  return eos->rho0 * expm1(log1p(x) / eos->gamma);
+}
+
+/* the offsets at +dp (up) and -dp (down); series: sphe_tait_series_of(eos)
+   for tait (unused for linear) */
 static inline void sphe_hydrostatic_offsets(const sphe_eos *eos, const sphe_tait_series *series,
                                             double dp, double *up, double *down)
 {
@@ -178,8 +162,8 @@ static inline void sphe_hydrostatic_offsets(const sphe_eos *eos, const sphe_tait
   }
   const double x = dp * series->x_per_dp;
   if (fabs(x) >= 1e-2) {
-    *up = sphe_tait_offset(eos, dp);
-    *down = sphe_tait_offset(eos, -dp);
+    *up = sphe_tait_offset_far(eos, x);
+    *down = sphe_tait_offset_far(eos, -x);
     return;
   }
   const double *const c = series->c;
@@ -188,6 +172,16 @@ static inline void sphe_hydrostatic_offsets(const sphe_eos *eos, const sphe_tait
   const double even = x2 * (c[2] + x2 * (c[4] + x2 * (c[6] + x2 * c[8])));
   *up = eos->rho0 * (even + odd);
   *down = eos->rho0 * (even - odd);
+}
+
+/* the offset at dp alone */
+static inline double sphe_hydrostatic_offset(const sphe_eos *eos, double dp)
+{
+  sphe_tait_series series;
+  double up, down;
+  if (eos->kind == SPHE_TAIT) sphe_tait_series_of(eos, &series);
+  sphe_hydrostatic_offsets(eos, &series, dp, &up, &down);
+  return up;
 }
 
 /* density at pressure P and temperature T */

@@ -6,6 +6,8 @@ import re
 import resource
 import subprocess
 
+from .log import loop_runs
+
 
 def cpu_seconds(cmd, workdir):
     """CPU time of a child process: on a shared machine wall time counts the
@@ -32,8 +34,7 @@ def cost(input_file, args, workdir, lmp_vars, whole_run=False):
         total = cpu_seconds(cmd + ["-var", "steps", str(lmp_vars["steps"]), "-log", "log.lammps"],
                             workdir)
         log = open(os.path.join(workdir, "log.lammps")).read()
-        steps, natoms = (int(v) for v in re.findall(
-            r"Loop time of [0-9.eE+-]+ on \d+ procs for (\d+) steps with (\d+) atoms", log)[-1])
+        _, steps, natoms = loop_runs(log)[-1]
         share = 1.0 if whole_run else \
             float(re.findall(r"^Pair\s+\|.*\|\s+([0-9.]+)\s*$", log, re.M)[-1]) / 100.0
         c = total * share / (steps * natoms)

@@ -1,9 +1,16 @@
-"""Read the thermo tables of a LAMMPS log or screen output, and the final
-Nusselt numbers the cavity inputs print."""
+"""Read the thermo tables of a LAMMPS log or screen output, the loop times
+of its runs, and the final Nusselt numbers the cavity inputs print."""
 
 import re
 
 import numpy as np
+
+
+def loop_runs(text):
+    """(loop seconds, steps, atoms) of every run in text, in order (runs of
+    0 steps too)."""
+    return [(float(t), int(n), int(a)) for t, n, a in re.findall(
+        r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) atoms", text)]
 
 
 def thermo_tables(text):
