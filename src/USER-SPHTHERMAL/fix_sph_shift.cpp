@@ -60,6 +60,7 @@
 #include "sph_kernels.h"
 #include "sph_particle.h"
 #include "sph_shift.h"
+#include "sph_support.h"
 #include "update.h"
 
 #include <cmath>
@@ -89,9 +90,8 @@ static constexpr double DEFAULT_SKILLEN = 2.0;
 FixSPHShift::FixSPHShift(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), form(SKILLEN), coefficient(0.0), speed(0.0), r_coeff(0.2), r_power(4),
     cap(0.1), correct(0), continuity(0), continuity_given(0), kernel_kind(0), cutoff(0.0),
-    loop_own(0), from_pair(0),
-    flow(nullptr), list(nullptr), energy(0.0), largest(0.0), capped(0), moved(0), warned_cap(0),
-    sums_per_atom(3), who(fmt::format("Fix sph/shift {}", id))
+    loop_own(0), from_pair(0), flow(nullptr), list(nullptr), energy(0.0), largest(0.0), capped(0),
+    moved(0), warned_cap(0), sums_per_atom(3), who(fmt::format("Fix sph/shift {}", id))
 {
   // without a form (nothing, or a keyword next), Reece et al.'s skillen D = 2
   const bool form_given = (narg > 3) && strcmp(arg[3], "cap") && strcmp(arg[3], "correct") &&
@@ -506,26 +506,33 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
     }
   };
 
-  // each pair once (half list): both atoms' sums, a ghost's sent to its owner after
+  // each pair once (half list): both atoms' sums, a ghost's sent to its owner
+  // after; the entries inside the support first, their kernel values
+  // together (sph_support.h)
+  SPHSupport support;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const int i_in_group = mask[i] & groupbit;
     // i's sums in locals: no store to reload in every pair
     double sums_i[per_atom];
     for (int q = 0; q < per_atom; q++) sums_i[q] = 0.0;
-    const int *const jlist = list->firstneigh[i];
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
+    const int nin = support.gather<3, true>(x[i], x, list->firstneigh[i], list->numneigh[i], cutsq);
+    double *const f_in = support.a;
+    double *const w_in = support.b;
+    for (int k = 0; k < nin; k++) {
+      const double r = sqrt(support.rsq[k]);
+      // grad_i W_ij = dW/dr (r_i - r_j) / r = f (r_i - r_j), without dividing by r
+      f_in[k] = dwdr_r_scale * sphk_df_over_q(kernel.kind, r * inv_h);
+      if (FORM == DELTAPLUS) w_in[k] = sphk_w(&kernel, r);
+    }
+    for (int k = 0; k < nin; k++) {
+      const int j = support.index[k];
       const int j_sums = (mask[j] & groupbit) && (newton || j < nlocal);
-      if (!i_in_group && !j_sums) continue;
-      const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
-      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
-      if (rsq >= cutsq || rsq == 0.0) continue;
-      const double r = sqrt(rsq);
-      // grad_i W_ij = dW/dr (r_i - r_j) / r, without dividing by r
-      const double f = dwdr_r_scale * sphk_df_over_q(kernel.kind, r * inv_h);
+      if ((!i_in_group && !j_sums) || support.rsq[k] == 0.0) continue;
+      const double *const del = support.del + 3 * k;
+      const double f = f_in[k];
       const double grad_w[3] = {f * del[0], f * del[1], f * del[2]};
-      const double w_pair = FORM == DELTAPLUS ? sphk_w(&kernel, r) : 0.0;
+      const double w_pair = FORM == DELTAPLUS ? w_in[k] : 0.0;
       if (i_in_group) add_neighbour(sums_i, i, j, del, grad_w, w_pair);
       if (j_sums) {
         const double del_j[3] = {-del[0], -del[1], -del[2]};

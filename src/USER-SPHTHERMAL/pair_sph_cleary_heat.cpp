@@ -229,6 +229,9 @@ void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_ra
   // the factors of the pairs within the support, stored with the list
   const int *const first_pair = support_pairs.first.data();
   const double *const pair_weights = support_pairs.weight.data();
+  const int *const pair_j = support_pairs.j.data();
+  const double *const pair_distance = support_pairs.distance.data();
+  const double *const pair_dwdr = support_pairs.dwdr.data();
   // the entries of each list inside the support (sph_support.h)
   SPHSupport support;
 
@@ -250,15 +253,31 @@ void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_ra
     const double *const weight_in = CORRECT ? pair_weights + first_pair[ii] : nullptr;
     double desph_i = 0.0, relax_i = 0.0;
 
-    // 3-D distances, as the loop always took them (z = 0 in 2-D)
-    const int nin = support.gather<3, false>(x[i], x, jlist, jnum, cutsq_kernel);
-    const int *const jin = support.index;
-    const double *const rsq_in = support.rsq;
-    double *const r_dwdr_in = support.a;
-    for (int k = 0; k < nin; k++) {
-      const double r = sqrt(rsq_in[k]);
-      r_dwdr_in[k] = r * dw_scale * sphk_df(KERNEL, r * inv_h);
+    int nin;
+    const int *jin;
+    if (CORRECT) {
+      // the pairs stored for this step's positions (refresh_support), with
+      // their distances and kernel derivatives
+      const int from = first_pair[ii];
+      nin = first_pair[ii + 1] - from;
+      jin = pair_j + from;
+      support.fit(nin);
+      for (int k = 0; k < nin; k++) {
+        const double r = pair_distance[from + k];
+        support.rsq[k] = r * r;
+        support.a[k] = r * pair_dwdr[from + k];
+      }
+    } else {
+      // 3-D distances, as the loop always took them (z = 0 in 2-D)
+      nin = support.gather<3, false>(x[i], x, jlist, jnum, cutsq_kernel);
+      jin = support.index;
+      for (int k = 0; k < nin; k++) {
+        const double r = sqrt(support.rsq[k]);
+        support.a[k] = r * dw_scale * sphk_df(KERNEL, r * inv_h);
+      }
     }
+    const double *const rsq_in = support.rsq;
+    const double *const r_dwdr_in = support.a;
 
     for (int k = 0; k < nin; k++) {
       const int j = jin[k];

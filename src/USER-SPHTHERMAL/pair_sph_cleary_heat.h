@@ -136,8 +136,9 @@ class PairSPHClearyHeat : public PairSPHKernel {
   int sweeps, warm_sweeps;
   SPHConductionWeights *weights;
   // values per atom of the largest reverse communication but that of
-  // 'correction second': the moments of the correction (6 and 3)
-  static constexpr int COMM_REVERSE_MOMENTS = 9;
+  // 'correction second': the moments of the correction and, on a warm
+  // start, the first sweep's coupling (6, 3 and 3)
+  static constexpr int COMM_REVERSE_MOMENTS = 12;
   // 'mean interface': per type pair, 1 when the two types differ in
   // conductivity law (the pair crosses an interface); per type, the
   // conductivity when all are constant; the distances (nullptr without)

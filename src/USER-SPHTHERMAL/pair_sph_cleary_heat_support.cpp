@@ -12,6 +12,8 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
+#include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
@@ -53,7 +55,15 @@ template <int KERNEL> void PairSPHClearyHeat::update_pairs()
   // without a correction only the interface needs pairs: those of the
   // atoms near it
   const double *const near = weights ? nullptr : interface->near();
-  support_pairs.gather<KERNEL>(list, atom->x, kernel, cutsq_kernel, eta2, volume, near);
+  double *const moments = weights ? weights->moments_to_gather() : nullptr;
+  if (domain->dimension == 3)
+    support_pairs.gather<KERNEL, 3>(list, atom->x, kernel, cutsq_kernel, eta2, volume,
+                                    interface != nullptr, near, moments, atom->nlocal,
+                                    force->newton_pair);
+  else
+    support_pairs.gather<KERNEL, 2>(list, atom->x, kernel, cutsq_kernel, eta2, volume,
+                                    interface != nullptr, near, moments, atom->nlocal,
+                                    force->newton_pair);
   if (weights) weights->refresh(support_pairs, volume, *this);
   if (interface)
     interface->refresh(support_pairs, volume, kernel.w_scale * sphk_f(KERNEL, 0.0), kernel.h,

@@ -182,7 +182,7 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // the inverse moments for this step's positions
   // (pair_sph_harmonic_visc_state.cpp)
   void refresh_gradient_correction();
-  template <int KERNEL> void update_gradient_correction();
+  template <int KERNEL, int DIM> void update_gradient_correction();
   double hold_mean_pressure();
   // the calls of the templates below for this run's settings (sph_dispatch.h)
   struct GradientCall;

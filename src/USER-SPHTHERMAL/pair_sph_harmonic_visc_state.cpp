@@ -42,7 +42,13 @@ using namespace LAMMPS_NS;
 
 struct PairSPHHarmonicVisc::GradientCall {
   PairSPHHarmonicVisc *pair;
-  template <int KERNEL> void run() { pair->update_gradient_correction<KERNEL>(); }
+  template <int KERNEL> void run()
+  {
+    if (pair->domain->dimension == 3)
+      pair->update_gradient_correction<KERNEL, 3>();
+    else
+      pair->update_gradient_correction<KERNEL, 2>();
+  }
 };
 
 void PairSPHHarmonicVisc::refresh_gradient_correction()
@@ -67,9 +73,9 @@ void PairSPHHarmonicVisc::refresh_gradient_correction()
    keep B = I.
 ------------------------------------------------------------------------- */
 
-template <int KERNEL> void PairSPHHarmonicVisc::update_gradient_correction()
+template <int KERNEL, int DIM> void PairSPHHarmonicVisc::update_gradient_correction()
 {
-  const int dim = domain->dimension;
+  const int dim = DIM;
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const int newton_pair = force->newton_pair;
   if (atom->nmax > nmax_gradient) {
@@ -88,21 +94,25 @@ template <int KERNEL> void PairSPHHarmonicVisc::update_gradient_correction()
   const int *const ilist = list->ilist;
   const int *const numneigh = list->numneigh;
   int **const firstneigh = list->firstneigh;
+  // the entries inside the support first, their kernel values together
+  // (sph_support.h)
+  SPHSupport support;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = ilist[ii];
     const int wall_i = mask[i] & wall_groupbit;
-    const int *const jlist = firstneigh[i];
-    for (int jj = 0; jj < numneigh[i]; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
+    const int nin = support.gather<DIM, true>(x[i], x, firstneigh[i], numneigh[i], cutsq_kernel);
+    const double *const rsq_in = support.rsq;
+    double *const g_in = support.a;
+    for (int k = 0; k < nin; k++)
+      g_in[k] = -dwdr_r_scale * sphk_df_over_q(KERNEL, sqrt(rsq_in[k]) * inv_h);
+    for (int k = 0; k < nin; k++) {
+      const int j = support.index[k];
       const int wall_j = mask[j] & wall_groupbit;
       if (wall_i && wall_j) continue;
-      const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1],
-                             (dim == 3) ? x[i][2] - x[j][2] : 0.0};
-      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
-      if (rsq >= cutsq_kernel) continue;
-      const double g = -dwdr_r_scale * sphk_df_over_q(KERNEL, sqrt(rsq) * inv_h);
-      if (!wall_i) sphc_moment_add(moment[i], g * volume[j], del);
-      if (!wall_j && (newton_pair || j < nlocal)) sphc_moment_add(moment[j], g * volume[i], del);
+      const double *const del = support.del + 3 * k;
+      if (!wall_i) sphc_moment_add_in(DIM, moment[i], g_in[k] * volume[j], del);
+      if (!wall_j && (newton_pair || j < nlocal))
+        sphc_moment_add_in(DIM, moment[j], g_in[k] * volume[i], del);
     }
   }
   if (newton_pair) reverse(SPHCommStage().rows(moment, 6));

@@ -23,6 +23,12 @@
 
 using namespace LAMMPS_NS;
 
+// a . b of the first DIM components
+template <int DIM> static inline double dot(const double *a, const double *b)
+{
+  return (DIM == 3) ? a[0] * b[0] + a[1] * b[1] + a[2] * b[2] : a[0] * b[0] + a[1] * b[1];
+}
+
 SPHConductionWeights *SPHConductionWeights::create(LAMMPS *lmp, int kind, double inv_h, int sweeps,
                                                    int warm_sweeps)
 {
@@ -61,31 +67,30 @@ double SPHConductionWeights::memory_usage() const
 }
 
 /* ----------------------------------------------------------------------
-   the second moments M of the plain weights; atoms whose smallest
-   eigenvalue of M / V is below full support (a free edge, where the
-   missing first moment is the boundary's adiabatic face) keep the plain
-   term, the others get S = V M^-1
+   the rows of the second moments M of the plain weights, zeroed on every
+   owned and ghost atom, for SPHSupportPairs::gather to sum before refresh()
 ------------------------------------------------------------------------- */
 
-void SPHConductionWeights::normalise(const SPHSupportPairs &pairs, const double *volume,
-                                     SPHExchange &exchange)
+double *SPHConductionWeights::moments_to_gather()
 {
-  const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
-  const int dim = domain->dimension;
-  const int newton = force->newton_pair;
-  const int npairs = pairs.count();
   grow();
+  const int nall = atom->nlocal + atom->nghost;
   for (int i = 0; i < nall; i++)
     for (int k = 0; k < 6; k++) s[i][k] = 0.0;
-  // each pair is gathered by both its atoms (the j side where it is this
-  // rank's to gather, the rest by reverse communication)
-  for (int q = 0; q < npairs; q++) {
-    const int i = pairs.i[q], j = pairs.j[q];
-    sphc_moment_add(s[i], pairs.g[q], pairs.r_of(q));
-    if (newton || j < nlocal) sphc_moment_add(s[j], pairs.g[q], pairs.r_of(q));
-  }
-  if (newton) exchange.reverse(SPHCommStage().rows(s, 6));
+  return s[0];
+}
+
+/* ----------------------------------------------------------------------
+   M summed on the owners; atoms whose smallest eigenvalue of M / V is below
+   full support (a free edge, where the missing first moment is the
+   boundary's adiabatic face) keep the plain term, the others get S = V M^-1
+------------------------------------------------------------------------- */
+
+void SPHConductionWeights::normalise(const double *volume, SPHExchange &exchange)
+{
+  const int nlocal = atom->nlocal;
+  const int dim = domain->dimension;
+  if (force->newton_pair) exchange.reverse(SPHCommStage().rows(s, 6));
   for (int i = 0; i < nlocal; i++) state[i] = sphc_moment_normaliser(dim, s[i], volume[i], s[i]);
   exchange.forward(SPHCommStage().rows(s, 6).flat(state, 1));
 }
@@ -153,20 +158,27 @@ double SPHConsistentWeights::memory_usage() const
 void SPHConsistentWeights::refresh(SPHSupportPairs &pairs, const double *volume,
                                    SPHExchange &exchange)
 {
-  normalise(pairs, volume, exchange);
+  normalise(volume, exchange);
+  if (domain->dimension == 3)
+    refresh_in<3>(pairs, exchange);
+  else
+    refresh_in<2>(pairs, exchange);
+}
+
+template <int DIM>
+void SPHConsistentWeights::refresh_in(SPHSupportPairs &pairs, SPHExchange &exchange)
+{
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
-  const int dim = domain->dimension;
+  const int dim = DIM;
   const int newton = force->newton_pair;
   const int npairs = pairs.count();
   const int *const pair_i = pairs.i.data();
   const int *const pair_j = pairs.j.data();
   const double *const pair_r = pairs.r.data();
-  const double *const distance = pairs.distance.data();
   double *const g = pairs.g.data();
   double *const weight = pairs.weight.data();
   // the per-atom rows, flat (one load fewer per access)
-  const double *const s_flat = s[0];
   double *const kinv_flat = kinv[0];
   double *const lambda_flat = lambda[0];
   double *const deficit_flat = deficit[0];
@@ -174,26 +186,24 @@ void SPHConsistentWeights::refresh(SPHSupportPairs &pairs, const double *volume,
   // (no build since the last refresh: the atoms kept their indices)
   const bool warm = warm_sweeps > 0 && !update->setupflag && lambda_step >= neighbor->lastcall;
 
-  // the weights with S from here on, and their first moments s and K
+  // the weights with S from here on, and their first moments s and K; on a
+  // warm start the first sweep's coupling too, from the last step's lambda
+  // (the ghosts' as forwarded then): one pass over the pairs fewer
   for (int i = 0; i < nall; i++) {
     for (int k = 0; k < 6; k++) kinv_flat[6 * i + k] = 0.0;
     for (int k = 0; k < 3; k++) deficit_flat[3 * i + k] = 0.0;
+    if (warm)
+      for (int k = 0; k < 3; k++) coupling_flat[3 * i + k] = 0.0;
   }
-  for (int q = 0; q < npairs; q++) {
-    const int i = pair_i[q], j = pair_j[q];
-    const double *const r = pair_r + 3 * q;
-    const double e[3] = {r[0] / distance[q], r[1] / distance[q], r[2] / distance[q]};
-    weight[q] = sphc_second_factor(s_flat + 6 * i, s_flat + 6 * j, e);
-    const double gq = g[q] * weight[q];
-    g[q] = gq;
-    sphc_moment_add(kinv_flat + 6 * i, gq, r);
-    for (int k = 0; k < 3; k++) deficit_flat[3 * i + k] += gq * r[k];
-    if (newton || j < nlocal) {
-      sphc_moment_add(kinv_flat + 6 * j, gq, r);
-      for (int k = 0; k < 3; k++) deficit_flat[3 * j + k] -= gq * r[k];
-    }
+  if (warm)
+    weigh_pairs<DIM, true>(pairs, newton);
+  else
+    weigh_pairs<DIM, false>(pairs, newton);
+  if (newton) {
+    SPHCommStage moments = SPHCommStage().rows(kinv, 6).rows(deficit, 3);
+    if (warm) moments.rows(coupling, 3);
+    exchange.reverse(moments);
   }
-  if (newton) exchange.reverse(SPHCommStage().rows(kinv, 6).rows(deficit, 3));
   for (int i = 0; i < nlocal; i++) {
     double inverse[6];
     double *const kinv_i = kinv_flat + 6 * i;
@@ -202,35 +212,31 @@ void SPHConsistentWeights::refresh(SPHSupportPairs &pairs, const double *volume,
     for (int k = 0; k < 6; k++) kinv_i[k] = inverse[k];
   }
 
-  // the first sweep from lambda = 0 (no coupling), or none on a warm start
-  int remaining = warm_sweeps;
-  if (!warm) {
-    const double none[3] = {0.0, 0.0, 0.0};
+  // the first sweep: from lambda = 0 (no coupling), or on a warm start with
+  // the coupling summed above
+  const double none[3] = {0.0, 0.0, 0.0};
+  if (!warm)
     for (int i = 0; i < nall; i++)
       for (int k = 0; k < 3; k++) lambda_flat[3 * i + k] = 0.0;
-    for (int i = 0; i < nlocal; i++)
-      sphc_first_update(kinv_flat + 6 * i, none, deficit_flat + 3 * i, lambda_flat + 3 * i);
-    remaining = sweeps - 1;
-  }
+  for (int i = 0; i < nlocal; i++)
+    sphc_first_update(kinv_flat + 6 * i, warm ? coupling_flat + 3 * i : none, deficit_flat + 3 * i,
+                      lambda_flat + 3 * i);
+  const int remaining = (warm ? warm_sweeps : sweeps) - 1;
 
-  // Jacobi sweeps: each with the neighbours' lambda of the sweep before
-  // (on a warm start the ghosts' lambda is the last step's, as forwarded)
+  // the further Jacobi sweeps: each with the neighbours' lambda of the sweep before
   const SPHCommStage lambda_stage = SPHCommStage().rows(lambda, 3);
   for (int sweep = 0; sweep < remaining; sweep++) {
-    if (sweep > 0 || !warm) exchange.forward(lambda_stage);
+    exchange.forward(lambda_stage);
     for (int i = 0; i < nall; i++)
       for (int k = 0; k < 3; k++) coupling_flat[3 * i + k] = 0.0;
     for (int q = 0; q < npairs; q++) {
       const int i = pair_i[q], j = pair_j[q];
       const double *const r = pair_r + 3 * q;
-      const double *const lambda_i = lambda_flat + 3 * i;
-      const double *const lambda_j = lambda_flat + 3 * j;
-      const double along_j = g[q] * (r[0] * lambda_j[0] + r[1] * lambda_j[1] + r[2] * lambda_j[2]);
-      for (int k = 0; k < 3; k++) coupling_flat[3 * i + k] += along_j * r[k];
+      const double along_j = g[q] * dot<DIM>(r, lambda_flat + 3 * j);
+      for (int k = 0; k < DIM; k++) coupling_flat[3 * i + k] += along_j * r[k];
       if (newton || j < nlocal) {
-        const double along_i =
-            g[q] * (r[0] * lambda_i[0] + r[1] * lambda_i[1] + r[2] * lambda_i[2]);
-        for (int k = 0; k < 3; k++) coupling_flat[3 * j + k] += along_i * r[k];
+        const double along_i = g[q] * dot<DIM>(r, lambda_flat + 3 * i);
+        for (int k = 0; k < DIM; k++) coupling_flat[3 * j + k] += along_i * r[k];
       }
     }
     if (newton) exchange.reverse(SPHCommStage().rows(coupling, 3));
@@ -241,14 +247,59 @@ void SPHConsistentWeights::refresh(SPHSupportPairs &pairs, const double *volume,
   exchange.forward(lambda_stage);
   lambda_step = update->ntimestep;
   for (int q = 0; q < npairs; q++)
-    weight[q] *=
-        sphc_first_factor(lambda_flat + 3 * pair_i[q], lambda_flat + 3 * pair_j[q], pair_r + 3 * q);
+    weight[q] *= sphc_first_factor_in(DIM, lambda_flat + 3 * pair_i[q], lambda_flat + 3 * pair_j[q],
+                                      pair_r + 3 * q);
+}
+
+/* each pair's weight with S (its factor so far) and its plain weight g
+   made that weight's; the moments K and s of every atom, and with WARM the
+   coupling of the first Jacobi sweep from the lambda in place */
+
+template <int DIM, bool WARM>
+void SPHConsistentWeights::weigh_pairs(SPHSupportPairs &pairs, int newton)
+{
+  const int nlocal = atom->nlocal;
+  const int npairs = pairs.count();
+  const int *const pair_i = pairs.i.data();
+  const int *const pair_j = pairs.j.data();
+  const double *const pair_r = pairs.r.data();
+  const double *const distance = pairs.distance.data();
+  double *const g = pairs.g.data();
+  double *const weight = pairs.weight.data();
+  const double *const s_flat = s[0];
+  const double *const lambda_flat = lambda[0];
+  double *const kinv_flat = kinv[0];
+  double *const deficit_flat = deficit[0];
+  double *const coupling_flat = coupling[0];
+  for (int q = 0; q < npairs; q++) {
+    const int i = pair_i[q], j = pair_j[q];
+    const double *const r = pair_r + 3 * q;
+    weight[q] =
+        sphc_second_factor_of(DIM, s_flat + 6 * i, s_flat + 6 * j, r, distance[q] * distance[q]);
+    const double gq = g[q] * weight[q];
+    g[q] = gq;
+    sphc_moment_add_in(DIM, kinv_flat + 6 * i, gq, r);
+    for (int k = 0; k < DIM; k++) deficit_flat[3 * i + k] += gq * r[k];
+    if (WARM) {
+      const double along_j = gq * dot<DIM>(r, lambda_flat + 3 * j);
+      for (int k = 0; k < DIM; k++) coupling_flat[3 * i + k] += along_j * r[k];
+    }
+    if (newton || j < nlocal) {
+      sphc_moment_add_in(DIM, kinv_flat + 6 * j, gq, r);
+      for (int k = 0; k < DIM; k++) deficit_flat[3 * j + k] -= gq * r[k];
+      if (WARM) {
+        const double along_i = gq * dot<DIM>(r, lambda_flat + 3 * i);
+        for (int k = 0; k < DIM; k++) coupling_flat[3 * j + k] += along_i * r[k];
+      }
+    }
+  }
 }
 
 double SPHConsistentWeights::factor(int i, int j, const double r_ij[3], double r) const
 {
-  const double e_ij[3] = {r_ij[0] / r, r_ij[1] / r, r_ij[2] / r};
-  return sphc_second_factor(s[i], s[j], e_ij) * sphc_first_factor(lambda[i], lambda[j], r_ij);
+  const int dim = domain->dimension;
+  return sphc_second_factor_of(dim, s[i], s[j], r_ij, r * r) *
+      sphc_first_factor_in(dim, lambda[i], lambda[j], r_ij);
 }
 
 /* ----------------------------------------------------------------------
@@ -305,7 +356,7 @@ double SPHSecondWeights::memory_usage() const
 
 void SPHSecondWeights::refresh(SPHSupportPairs &pairs, const double *volume, SPHExchange &exchange)
 {
-  normalise(pairs, volume, exchange);
+  normalise(volume, exchange);
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
   const int dim = domain->dimension;

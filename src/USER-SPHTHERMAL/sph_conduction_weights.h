@@ -33,8 +33,12 @@ class SPHConductionWeights : protected Pointers {
                                       int warm_sweeps);
   ~SPHConductionWeights() override;
 
-  // the factors of this step's pairs into pairs.weight (volume: m / rho of
-  // every owned and ghost atom), with the states of every owned and ghost atom
+  // the rows (6 per owned and ghost atom, zeroed) into which
+  // SPHSupportPairs::gather sums the pairs' second moments for refresh()
+  double *moments_to_gather();
+  // the factors of this step's pairs, gathered with moments_to_gather(), into
+  // pairs.weight (volume: m / rho of every owned and ghost atom), with the
+  // states of every owned and ghost atom
   virtual void refresh(SPHSupportPairs &pairs, const double *volume, SPHExchange &exchange) = 0;
   // the factor between atoms i and j (owned or ghost) at r_ij = x_i - x_j,
   // |r_ij| = r, for the last refresh
@@ -59,8 +63,8 @@ class SPHConductionWeights : protected Pointers {
   int nmax;
   double **s;       // the normalised second moment S = V M^-1 (6 per atom)
   double *state;    // 1: corrected, 0: plain
-  // M of the plain weights, then S and the states, on every atom
-  void normalise(const SPHSupportPairs &pairs, const double *volume, SPHExchange &exchange);
+  // from the gathered M of the plain weights: S and the states, on every atom
+  void normalise(const double *volume, SPHExchange &exchange);
   virtual void grow_more() {}
 };
 
@@ -81,6 +85,8 @@ class SPHConsistentWeights : public SPHConductionWeights {
   bigint lambda_step;
   void grow_more() override;
   void release();
+  template <int DIM> void refresh_in(SPHSupportPairs &pairs, SPHExchange &exchange);
+  template <int DIM, bool WARM> void weigh_pairs(SPHSupportPairs &pairs, int newton);
 };
 
 // 'correction second': the multipliers nu of sph_second_moment.h's solve

@@ -53,15 +53,23 @@ static inline double sphc_brookshaw_weight(double r, double dwdr, double eta2)
   return -r * dwdr / (r * r + eta2);
 }
 
-/* m += g r (x) r */
-static inline void sphc_moment_add(double m[6], double g, const double r[3])
+/* m += g r (x) r; in 2-D (dim 2, r_z = 0) the z entries are left alone:
+   with dim a constant the caller's loop does half the work */
+static inline void sphc_moment_add_in(int dim, double m[6], double g, const double r[3])
 {
   m[SPHC_XX] += g * r[0] * r[0];
   m[SPHC_YY] += g * r[1] * r[1];
-  m[SPHC_ZZ] += g * r[2] * r[2];
   m[SPHC_XY] += g * r[0] * r[1];
-  m[SPHC_XZ] += g * r[0] * r[2];
-  m[SPHC_YZ] += g * r[1] * r[2];
+  if (dim == 3) {
+    m[SPHC_ZZ] += g * r[2] * r[2];
+    m[SPHC_XZ] += g * r[0] * r[2];
+    m[SPHC_YZ] += g * r[1] * r[2];
+  }
+}
+
+static inline void sphc_moment_add(double m[6], double g, const double r[3])
+{
+  sphc_moment_add_in(3, m, g, r);
 }
 
 /* y = m x */
@@ -77,6 +85,13 @@ static inline double sphc_sym_quad(const double m[6], const double e[3])
 {
   return m[SPHC_XX] * e[0] * e[0] + m[SPHC_YY] * e[1] * e[1] + m[SPHC_ZZ] * e[2] * e[2] +
       2.0 * (m[SPHC_XY] * e[0] * e[1] + m[SPHC_XZ] * e[0] * e[2] + m[SPHC_YZ] * e[1] * e[2]);
+}
+
+/* e.m.e of a dim-dimensional e (dim 2: e_z = 0, the z terms left out) */
+static inline double sphc_sym_quad_in(int dim, const double m[6], const double e[3])
+{
+  if (dim == 3) return sphc_sym_quad(m, e);
+  return m[SPHC_XX] * e[0] * e[0] + m[SPHC_YY] * e[1] * e[1] + 2.0 * m[SPHC_XY] * e[0] * e[1];
 }
 
 /* Inverse of the symmetric matrix m of a dim-dimensional moment (dim 2: the
@@ -172,16 +187,30 @@ static inline double sphc_second_factor(const double s_a[6], const double s_b[6]
   return 0.5 * (sphc_sym_quad(s_a, e) + sphc_sym_quad(s_b, e));
 }
 
+/* the same factor from r_ab itself, |r_ab|^2 = rsq, in dim dimensions: one
+   division in place of three for e */
+static inline double sphc_second_factor_of(int dim, const double s_a[6], const double s_b[6],
+                                           const double r_ab[3], double rsq)
+{
+  return 0.5 * (sphc_sym_quad_in(dim, s_a, r_ab) + sphc_sym_quad_in(dim, s_b, r_ab)) / rsq;
+}
+
 /* the first-moment factor of a pair: 1 + (lambda_a - lambda_b).r_ab; never
    below 0, so that a pair never conducts against the temperature
    difference (a floor reached only on extreme disorder; it keeps the
    symmetry, so energy is still conserved) */
+static inline double sphc_first_factor_in(int dim, const double lambda_a[3],
+                                          const double lambda_b[3], const double r_ab[3])
+{
+  double f = 1.0 + (lambda_a[0] - lambda_b[0]) * r_ab[0] + (lambda_a[1] - lambda_b[1]) * r_ab[1];
+  if (dim == 3) f += (lambda_a[2] - lambda_b[2]) * r_ab[2];
+  return (f > 0.0) ? f : 0.0;
+}
+
 static inline double sphc_first_factor(const double lambda_a[3], const double lambda_b[3],
                                        const double r_ab[3])
 {
-  const double f = 1.0 + (lambda_a[0] - lambda_b[0]) * r_ab[0] +
-      (lambda_a[1] - lambda_b[1]) * r_ab[1] + (lambda_a[2] - lambda_b[2]) * r_ab[2];
-  return (f > 0.0) ? f : 0.0;
+  return sphc_first_factor_in(3, lambda_a, lambda_b, r_ab);
 }
 
 /* one Jacobi sweep for particle a: lambda_a = K_a^-1 (c_a - s_a) with the

@@ -28,7 +28,7 @@ class SPHSupportPairs {
   std::vector<int> i, j;
   std::vector<double> r;           // x_i - x_j, 3 per pair
   std::vector<double> distance;    // |r|
-  std::vector<double> dwdr, w;     // the kernel's dW/dr and W at that distance
+  std::vector<double> dwdr, w;     // the kernel's dW/dr and W at that distance (W: with_w)
   std::vector<double> g;           // the plain weight V_i V_j (-r dW/dr) / (r^2 + eta^2)
   std::vector<double> weight;      // the factor w_ij of a correction (SPHConductionWeights)
 
@@ -36,11 +36,17 @@ class SPHSupportPairs {
   const double *r_of(int q) const { return &r[3 * (size_t) q]; }
 
   // the pairs of 'list' within 'cutsq' for positions x, with volume V of
-  // every owned and ghost atom; where 'near' is given, only the pairs with
-  // near[i] or near[j] non-zero (the factors are a correction's to write)
-  template <int KERNEL>
+  // every owned and ghost atom, and W where 'with_w' (its only reader is the
+  // interface estimate); where 'near' is given, only the pairs with
+  // near[i] or near[j] non-zero (the factors are a correction's to write).
+  // Where 'moments' is given (6 per owned and ghost atom, zeroed), each
+  // pair's second moment g r (x) r is added to its atoms' rows (j's where
+  // j < nlocal or with newton), while the atom's pairs are in cache; DIM
+  // the dimension (2: the moments' z entries left alone)
+  template <int KERNEL, int DIM>
   void gather(const NeighList *list, const double *const *x, const sphk_kernel &kernel,
-              double cutsq, double eta2, const double *volume, const double *near)
+              double cutsq, double eta2, const double *volume, bool with_w, const double *near,
+              double *moments = nullptr, int nlocal = 0, int newton = 1)
   {
     const int inum = list->inum;
     int capacity = 0;
@@ -70,15 +76,24 @@ class SPHSupportPairs {
         distance[n] = rsq;
         n += (rsq < cutsq);
       }
+      // the kernel values of this atom's pairs together (vectorised)
+      for (int q = first[ii]; q < n; q++) {
+        const double rr = sqrt(distance[q]);
+        distance[q] = rr;
+        dwdr[q] = kernel.dw_scale * sphk_df(KERNEL, rr * kernel.inv_h);
+        g[q] = volume[i[q]] * volume[j[q]] * sphc_brookshaw_weight(rr, dwdr[q], eta2);
+      }
+      if (with_w)
+        for (int q = first[ii]; q < n; q++)
+          w[q] = kernel.w_scale * sphk_f(KERNEL, distance[q] * kernel.inv_h);
+      if (moments)
+        for (int q = first[ii]; q < n; q++) {
+          sphc_moment_add_in(DIM, moments + 6 * atom_i, g[q], r_of(q));
+          if (newton || j[q] < nlocal)
+            sphc_moment_add_in(DIM, moments + 6 * (size_t) j[q], g[q], r_of(q));
+        }
     }
     first[inum] = n;
-    for (int q = 0; q < n; q++) {
-      const double rr = sqrt(distance[q]);
-      distance[q] = rr;
-      dwdr[q] = kernel.dw_scale * sphk_df(KERNEL, rr * kernel.inv_h);
-      w[q] = kernel.w_scale * sphk_f(KERNEL, rr * kernel.inv_h);
-      g[q] = volume[i[q]] * volume[j[q]] * sphc_brookshaw_weight(rr, dwdr[q], eta2);
-    }
   }
 
   double memory_usage() const

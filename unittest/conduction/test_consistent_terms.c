@@ -262,6 +262,51 @@ static void check_factors(void)
   expect(got == 0.0, "first factor floored at 0, from b's side", got, 0.0);
 }
 
+/* the forms for a known dimension that the pair loops call: in 3-D the
+   general forms' values (the second factor from r and |r|^2 in place of e),
+   in 2-D (r_z = 0) those values with the z entries of the moments left alone */
+static void check_dimension_forms(void)
+{
+  for (int n = 0; n < 1000; n++) {
+    double s_a[6], s_b[6], lambda_a[3], lambda_b[3], r[3], e[3];
+    const int dim = 2 + (n % 2);
+    random_spd(3, s_a);
+    random_spd(3, s_b);
+    for (int k = 0; k < 3; k++) {
+      lambda_a[k] = uniform(-0.5, 0.5);
+      lambda_b[k] = uniform(-0.5, 0.5);
+      r[k] = (k < dim) ? uniform(-2.0, 2.0) : 0.0;
+    }
+    const double rsq = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+    for (int k = 0; k < 3; k++) e[k] = r[k] / sqrt(rsq);
+    const double second = sphc_second_factor(s_a, s_b, e);
+    const double second_of = sphc_second_factor_of(dim, s_a, s_b, r, rsq);
+    if (fabs(second_of - second) > 1e-14 * fabs(second)) {
+      expect(0, dim == 2 ? "2-D second factor from r" : "3-D second factor from r", second_of,
+             second);
+      return;
+    }
+    const double first = sphc_first_factor(lambda_a, lambda_b, r);
+    const double first_in = sphc_first_factor_in(dim, lambda_a, lambda_b, r);
+    if (fabs(first_in - first) > 1e-15 * fabs(first)) {
+      expect(0, dim == 2 ? "2-D first factor" : "3-D first factor", first_in, first);
+      return;
+    }
+    /* the moments: the 3-D sum's entries; in 2-D the z entries untouched */
+    double general[6] = {0, 0, 0, 0, 0, 0}, in[6] = {7, 7, 7, 7, 7, 7};
+    sphc_moment_add(general, 0.75, r);
+    sphc_moment_add_in(dim, in, 0.75, r);
+    for (int k = 0; k < 6; k++) {
+      const int z_entry = (k == SPHC_ZZ || k == SPHC_XZ || k == SPHC_YZ);
+      const double want = (dim == 2 && z_entry) ? 7.0 : 7.0 + general[k];
+      if (fabs(in[k] - want) > 1e-15 * fabs(want)) {
+        expect(0, dim == 2 ? "2-D moment entry" : "3-D moment entry", in[k], want);
+        return;
+      }
+    }
+  }
+}
+
 /* ----------------------------------------------- a jittered particle set */
 
 enum { MAX_ATOMS = 1800, MAX_NEIGH = 128 };
@@ -886,9 +931,10 @@ int main(int argc, char **argv)
     check_inverse();
   else if (strcmp(check, "eigen") == 0 && argc == 2)
     check_eigen();
-  else if (strcmp(check, "factors") == 0 && argc == 2)
+  else if (strcmp(check, "factors") == 0 && argc == 2) {
     check_factors();
-  else if (strcmp(check, "cholesky") == 0 && argc == 2)
+    check_dimension_forms();
+  } else if (strcmp(check, "cholesky") == 0 && argc == 2)
     check_cholesky();
   else if (strcmp(check, "second") == 0 && argc == 3)
     check_second(dim, 0.0, 0.0);
