@@ -51,7 +51,7 @@ SCENES = {
 COMPONENTS = [
     ("pressure-gradient correction", r"update_gradient_correction"),
     ("flow pair (its density diffusion too)", r"PairSPHHarmonicVisc::eval|sphf_|sphe_tait|sphe_hydrostatic"),
-    ("consistent conduction's factors", r"SPHConsistentWeights|SPHConductionWeights|PairSPHClearyHeat::update_pairs"),
+    ("consistent conduction's factors", r"SPHConsistentWeights|SPHConductionWeights|SPHSupportPairs|PairSPHClearyHeat::update_pairs"),
     ("conduction pair", r"PairSPHClearyHeat::eval|sphc_"),
     ("per-atom state (density, pressure, volume)", r"sphe_|update_state|PairSPHHarmonicVisc::"),
     ("shifting", r"FixSPHShift"),
