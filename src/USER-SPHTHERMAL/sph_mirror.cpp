@@ -344,12 +344,14 @@ void SPHMirror::prepare(std::vector<int> &how, std::vector<double> *depth)
   if (medium_check_pending) check_medium();
   const int nmedium = medium_atoms.size();
   medium_volume.resize(nmedium);
+  medium_x.resize(3 * (size_t) nmedium);
   const int components = (field == VELOCITY) ? 3 : 1;
   medium_values.resize(components * (size_t) nmedium);
   const double *const *const v = atom->v;
   for (int m = 0; m < nmedium; m++) {
     const int j = medium_atoms[m];
     medium_volume[m] = particles.volume(j);
+    for (int k = 0; k < 3; k++) medium_x[3 * (size_t) m + k] = x[j][k];
     if (field == TEMPERATURE)
       medium_values[m] = particles.temperature(j);
     else
@@ -366,7 +368,6 @@ template <int DIM, int KERNEL>
 void SPHMirror::interpolate_points(std::vector<double> &ghost, std::vector<int> &how,
                                    const sphk_kernel &kernel)
 {
-  double *const *const x = atom->x;
   const int nlocal = atom->nlocal;
   const double h = kernel.h;
   const double cutsq = cutoff * cutoff;
@@ -390,15 +391,15 @@ void SPHMirror::interpolate_points(std::vector<double> &ghost, std::vector<int> 
     int nin = 0;
     for (int n = first_candidate[i]; n < first_candidate[i + 1]; n++) {
       const int m = candidates[n];
-      const int j = medium_atoms[m];
-      const double d[3] = {x[j][0] - g[0], x[j][1] - g[1], x[j][2] - g[2]};
+      const double *const x_m = &medium_x[3 * (size_t) m];
+      const double d[3] = {x_m[0] - g[0], x_m[1] - g[1], x_m[2] - g[2]};
       const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
       m_in[nin] = m;
       for (int k = 0; k < 3; k++) d_in[3 * nin + k] = d[k];
       rsq_in[nin] = rsq;
       nin += (rsq < cutsq) &&
           (inlet_axis < 0 ||
-           FixSPHInletTemperature::periodic_cell(domain, x[j][inlet_axis], inlet_axis) == side);
+           FixSPHInletTemperature::periodic_cell(domain, x_m[inlet_axis], inlet_axis) == side);
     }
     for (int k = 0; k < nin; k++) {
       const double q = sqrt(rsq_in[k]) * kernel.inv_h;

@@ -124,6 +124,9 @@ class SPHMirror : protected Pointers {
   double medium_tolerance;      // how far past the surface a medium atom may be
   // per medium atom: its volume and the field (T, or the 3 components of v)
   std::vector<double> medium_volume, medium_values;
+  // their positions this step, 3 per medium atom: the candidate loop reads
+  // them in one load rather than through the atom index
+  std::vector<double> medium_x;
   // this step's ghost points: 3 per owned atom, and whether there is one
   std::vector<double> ghost_at;
   std::vector<int> has_ghost;
