@@ -25,17 +25,23 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 from sphthermal_tools.log import loop_runs  # noqa: E402
-# this directory's profile.py (the scenes' command lines), by its path: the
-# standard library has a module of that name
-_spec = importlib.util.spec_from_file_location("scene_profile", os.path.join(HERE, "profile.py"))
-profile = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(profile)
+# this directory's profile.py (the scenes' command lines) and overhead.py
+# (the scenes' short stretches), by their paths: the standard library has a
+# module named profile
 
-# name: (input, variables for a short stretch), as in overhead.py
-SCENES = {
-    "cavity": ("convection-cavity/in.cavity", {"tend": 0.05}),
-    "air": ("convection-cavity/in.air", {"n": 154, "seconds": 0.1, "every": 100000}),
-}
+
+def _load(name, file):
+    spec = importlib.util.spec_from_file_location(name, os.path.join(HERE, file))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+profile = _load("scene_profile", "profile.py")
+overhead = _load("scene_overhead", "overhead.py")
+
+# name: (input, variables for a short stretch), those of overhead.py
+SCENES = {name: overhead.SCENES[name][:2] for name in ("cavity", "air")}
 # how: (label, command prefix, suffix arguments, OMP_NUM_THREADS)
 MPIRUN = ["mpirun", "--oversubscribe", "-np", "2"]
 LAYOUTS = [

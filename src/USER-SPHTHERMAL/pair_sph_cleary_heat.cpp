@@ -253,22 +253,19 @@ void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_ra
     const double *const weight_in = CORRECT ? pair_weights + first_pair[ii] : nullptr;
     double desph_i = 0.0, relax_i = 0.0;
 
+    // CORRECT: the pairs stored for this step's positions (refresh_support)
+    // with their distances and kernel derivatives, read in place; else the
+    // entries of the list inside the support, with 3-D distances as the loop
+    // always took them (z = 0 in 2-D)
+    const int from = CORRECT ? first_pair[ii] : 0;
+    const double *const distance_in = CORRECT ? pair_distance + from : nullptr;
+    const double *const dwdr_in = CORRECT ? pair_dwdr + from : nullptr;
     int nin;
     const int *jin;
     if (CORRECT) {
-      // the pairs stored for this step's positions (refresh_support), with
-      // their distances and kernel derivatives
-      const int from = first_pair[ii];
       nin = first_pair[ii + 1] - from;
       jin = pair_j + from;
-      support.fit(nin);
-      for (int k = 0; k < nin; k++) {
-        const double r = pair_distance[from + k];
-        support.rsq[k] = r * r;
-        support.a[k] = r * pair_dwdr[from + k];
-      }
     } else {
-      // 3-D distances, as the loop always took them (z = 0 in 2-D)
       nin = support.gather<3, false>(x[i], x, jlist, jnum, cutsq_kernel);
       jin = support.index;
       for (int k = 0; k < nin; k++) {
@@ -276,14 +273,12 @@ void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_ra
         support.a[k] = r * dw_scale * sphk_df(KERNEL, r * inv_h);
       }
     }
-    const double *const rsq_in = support.rsq;
-    const double *const r_dwdr_in = support.a;
 
     for (int k = 0; k < nin; k++) {
       const int j = jin[k];
-      const double rsq = rsq_in[k];
+      const double rsq = CORRECT ? distance_in[k] * distance_in[k] : support.rsq[k];
       const int jtype = type[j];
-      const double r_dwdr = r_dwdr_in[k];
+      const double r_dwdr = CORRECT ? distance_in[k] * dwdr_in[k] : support.a[k];
       const double k_j = VARYING_K   ? conductivity[j]
           : (MEAN == SPHC_INTERFACE) ? type_conductivity[jtype]
                                      : 0.0;

@@ -29,6 +29,20 @@ template <int DIM> static inline double dot(const double *a, const double *b)
   return (DIM == 3) ? a[0] * b[0] + a[1] * b[1] + a[2] * b[2] : a[0] * b[0] + a[1] * b[1];
 }
 
+// a Jacobi sweep's coupling of pair (i, j) with weight G = gq at r = r_ij:
+// i gains G (r . lambda_j) r, and j (where j_side) G (r . lambda_i) r
+template <int DIM>
+static inline void add_coupling(double *coupling, const double *lambda, int i, int j, bool j_side,
+                                double gq, const double *r)
+{
+  const double along_j = gq * dot<DIM>(r, lambda + 3 * j);
+  for (int k = 0; k < DIM; k++) coupling[3 * i + k] += along_j * r[k];
+  if (j_side) {
+    const double along_i = gq * dot<DIM>(r, lambda + 3 * i);
+    for (int k = 0; k < DIM; k++) coupling[3 * j + k] += along_i * r[k];
+  }
+}
+
 SPHConductionWeights *SPHConductionWeights::create(LAMMPS *lmp, int kind, double inv_h, int sweeps,
                                                    int warm_sweeps)
 {
@@ -229,16 +243,9 @@ void SPHConsistentWeights::refresh_in(SPHSupportPairs &pairs, SPHExchange &excha
     exchange.forward(lambda_stage);
     for (int i = 0; i < nall; i++)
       for (int k = 0; k < 3; k++) coupling_flat[3 * i + k] = 0.0;
-    for (int q = 0; q < npairs; q++) {
-      const int i = pair_i[q], j = pair_j[q];
-      const double *const r = pair_r + 3 * q;
-      const double along_j = g[q] * dot<DIM>(r, lambda_flat + 3 * j);
-      for (int k = 0; k < DIM; k++) coupling_flat[3 * i + k] += along_j * r[k];
-      if (newton || j < nlocal) {
-        const double along_i = g[q] * dot<DIM>(r, lambda_flat + 3 * i);
-        for (int k = 0; k < DIM; k++) coupling_flat[3 * j + k] += along_i * r[k];
-      }
-    }
+    for (int q = 0; q < npairs; q++)
+      add_coupling<DIM>(coupling_flat, lambda_flat, pair_i[q], pair_j[q],
+                        newton || pair_j[q] < nlocal, g[q], pair_r + 3 * q);
     if (newton) exchange.reverse(SPHCommStage().rows(coupling, 3));
     for (int i = 0; i < nlocal; i++)
       sphc_first_update(kinv_flat + 6 * i, coupling_flat + 3 * i, deficit_flat + 3 * i,
@@ -278,20 +285,14 @@ void SPHConsistentWeights::weigh_pairs(SPHSupportPairs &pairs, int newton)
         sphc_second_factor_of(DIM, s_flat + 6 * i, s_flat + 6 * j, r, distance[q] * distance[q]);
     const double gq = g[q] * weight[q];
     g[q] = gq;
+    const bool j_side = newton || j < nlocal;
     sphc_moment_add_in(DIM, kinv_flat + 6 * i, gq, r);
     for (int k = 0; k < DIM; k++) deficit_flat[3 * i + k] += gq * r[k];
-    if (WARM) {
-      const double along_j = gq * dot<DIM>(r, lambda_flat + 3 * j);
-      for (int k = 0; k < DIM; k++) coupling_flat[3 * i + k] += along_j * r[k];
-    }
-    if (newton || j < nlocal) {
+    if (j_side) {
       sphc_moment_add_in(DIM, kinv_flat + 6 * j, gq, r);
       for (int k = 0; k < DIM; k++) deficit_flat[3 * j + k] -= gq * r[k];
-      if (WARM) {
-        const double along_i = gq * dot<DIM>(r, lambda_flat + 3 * i);
-        for (int k = 0; k < DIM; k++) coupling_flat[3 * j + k] += along_i * r[k];
-      }
     }
+    if (WARM) add_coupling<DIM>(coupling_flat, lambda_flat, i, j, j_side, gq, r);
   }
 }
 
