@@ -91,7 +91,8 @@ void PairSPHHarmonicVisc::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   begin_compute();
-  const Rates rates = {atom->f, atom->drho, atom->desph, heat_term.relax_rate, nullptr};
+  const Rates rates = {atom->f,   atom->drho, atom->desph, heat_term.relax_rate,
+                       shift_sums_wanted ? shift_sum : nullptr, nullptr};
   eval_pairs(0, list->inum, rates);
   end_compute();
   if (vflag_fdotr) virial_fdotr_compute();
@@ -115,8 +116,9 @@ void PairSPHHarmonicVisc::begin_compute()
   heat_term = PairSPHClearyHeat::FlowLoopTerm();
   if (heat && heat->term_in_flow_loop()) heat_term = heat->begin_flow_loop_term();
   if (shift_sums_wanted) {
-    if (atom->nmax > nmax_shift) {
-      nmax_shift = atom->nmax;
+    // room for one copy per thread (the /omp style)
+    if (atom->nmax * comm->nthreads > nmax_shift) {
+      nmax_shift = atom->nmax * comm->nthreads;
       memory->destroy(shift_sum);
       memory->create(shift_sum, 3 * nmax_shift, "pair:shift_sum");
     }
@@ -259,7 +261,7 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
   for (int t = 1; t < nseries; t++)
     if (eos_of[t] && eos_of[t]->kind == SPHE_TAIT) sphe_tait_series_of(eos_of[t], &series_of[t]);
   const PairSPHClearyHeat::FlowLoopTerm term = heat_term;
-  double *const shift_sum = this->shift_sum;
+  double *const shift_sum = rates.shift_sum;
   const double *const *const gradient_inverse = this->gradient_inverse;
 
   const double cutsq_kernel = cut_global * cut_global;

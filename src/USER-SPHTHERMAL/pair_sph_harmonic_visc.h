@@ -135,7 +135,7 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
     GRADIENT = 32
   };
   int shift_sums_wanted;
-  double *shift_sum;    // per owned and ghost atom, 3 each
+  double *shift_sum;    // per owned and ghost atom, 3 each (a copy per /omp thread)
   int nmax_shift;
   std::vector<const sphe_eos *> eos_of;    // per type (nullptr: none), for the diffusion
   int background_warned;                   // warn_background() warned (once per style)
@@ -148,6 +148,7 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   struct Rates {
     double **f;
     double *drho, *desph, *relax_rate;
+    double *shift_sum;    // fix sph/shift's sums (3 per atom), where wanted
     void *thread;
   };
   void begin_compute();

@@ -4,8 +4,9 @@
 
    pair sph/harmonic/visc/omp: each thread takes a slice of the neighbour
    list and adds to its own copy of f, drho and desph (and of the heat
-   style's relax_rate when the conduction term runs in this loop); the
-   copies are summed after the loop, so results equal the serial style's to
+   style's relax_rate when the conduction term runs in this loop, and of
+   fix sph/shift's sums when it takes them from this loop); the copies are
+   summed after the loop, so results equal the serial style's to
    round-off whatever the number of threads.
 ------------------------------------------------------------------------- */
 
@@ -47,9 +48,10 @@ void PairSPHHarmonicViscOMP::compute(int eflag, int vflag)
   const int nthreads = comm->nthreads;
   const int inum = list->inum;
   double *const relax_rate = heat_term.relax_rate;
+  double *const shift_sum_all = shift_sums_wanted ? shift_sum : nullptr;
 
 #if defined(_OPENMP)
-#pragma omp parallel LMP_DEFAULT_NONE LMP_SHARED(eflag, vflag, relax_rate)
+#pragma omp parallel LMP_DEFAULT_NONE LMP_SHARED(eflag, vflag, relax_rate, shift_sum_all)
 #endif
   {
     int ifrom, ito, tid;
@@ -61,13 +63,17 @@ void PairSPHHarmonicViscOMP::compute(int eflag, int vflag)
     // (the heat style's, zeroed for thread 0) are this style's to clear
     double *const relax_thr = relax_rate ? relax_rate + (size_t) tid * nall : nullptr;
     if (relax_thr && tid > 0) memset(relax_thr, 0, nall * sizeof(double));
-    const Rates rates = {thr->get_f(), thr->get_drho(), thr->get_de(), relax_thr, thr};
+    // likewise fix sph/shift's sums, where this loop makes them
+    double *const shift_thr = shift_sum_all ? shift_sum_all + (size_t) 3 * tid * nall : nullptr;
+    if (shift_thr && tid > 0) memset(shift_thr, 0, 3 * nall * sizeof(double));
+    const Rates rates = {thr->get_f(), thr->get_drho(), thr->get_de(), relax_thr, shift_thr, thr};
     eval_pairs(ifrom, ito, rates);
     thr->timer(Timer::PAIR);
     reduce_thr(this, eflag, vflag, thr);
     data_reduce_thr(atom->drho, nall, nthreads, 1, tid);
     data_reduce_thr(atom->desph, nall, nthreads, 1, tid);
     if (relax_rate) data_reduce_thr(relax_rate, nall, nthreads, 1, tid);
+    if (shift_sum_all) data_reduce_thr(shift_sum_all, nall, nthreads, 3, tid);
   }    // end of omp parallel region
 
   end_compute();

@@ -28,8 +28,6 @@ class PairSPHHarmonicViscOMP : public PairSPHHarmonicVisc, public ThrOMP {
   PairSPHHarmonicViscOMP(class LAMMPS *);
   void compute(int, int) override;
   double memory_usage() override;
-  // threads would add to a neighbour's sums at once: fix sph/shift makes its own
-  bool provide_shift_sums(int) override { return false; }
 
  protected:
   void tally_pair(int i, int j, double fx, double fy, double fz, double delx, double dely,

@@ -175,7 +175,9 @@ def check_shared(a, work):
     default) against the fix's own pass (loop own), on jittered particles
     that only the shift moves (rho stays put, so the pair's volumes are
     those at the end of the step): the same positions to round-off, on
-    --np ranks; with another pressure form the fix makes them itself."""
+    --np ranks; with another pressure form the fix makes them itself. With
+    --threads the pair loops are the /omp styles' (each thread adds to its
+    own copy of the sums), the own pass serial."""
     def run(name, loop, pair_options=""):
         script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + JITTER + f"""
 velocity        all set 1.0 0.5 0.0 units box
@@ -189,7 +191,13 @@ write_dump      all custom {name}.dump id x y modify sort id format float %.17g
         if pair_options:
             script = script.replace("sph/harmonic/visc wendland 0.4 ",
                                     f"sph/harmonic/visc wendland 0.4 {pair_options} ")
+        if a.threads and loop == "shared":
+            script = script.replace("units           si\n",
+                                    f"package omp {a.threads}\nsuffix omp\nunits           si\n", 1)
         out = run_lammps(a.lmp, script, work, a.np, a.mpirun)
+        if a.threads and loop == "shared" and "sph/harmonic/visc/omp" not in out:
+            print(f"FAIL: {name}: pair sph/harmonic/visc/omp not in the log")
+            return read_dump(os.path.join(work, f"{name}.dump")), False
         d = read_dump(os.path.join(work, f"{name}.dump"))
         return d, SHARED_LINE in out
     own, own_line = run("own", "own")
@@ -205,7 +213,8 @@ write_dump      all custom {name}.dump id x y modify sort id format float %.17g
                          np.abs(corrected["y"] - own["y"]).max())
     ok = (moved > 1e-3 and diff < 1e-13 and diff_other < 1e-13 and diff_corrected < 1e-13
           and shared_line and not own_line and not other_line and corrected_line)
-    print(f"{'ok' if ok else 'FAIL'}: {a.form} on {a.np} rank(s): largest shift {moved:.2e} in 100 steps; "
+    threads = f", {a.threads} threads" if a.threads else ""
+    print(f"{'ok' if ok else 'FAIL'}: {a.form} on {a.np} rank(s){threads}: largest shift {moved:.2e} in 100 steps; "
           f"positions after them, "
           f"sums from the pair loop against the fix's own pass: {diff:.2e}, with correction "
           f"gradient {diff_corrected:.2e}, with pressure sum "
@@ -386,6 +395,8 @@ def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("check", choices=["lattice", "spread", "linear", "follow", "volume", "shared"])
     p.add_argument("--form", choices=sorted(FORMS), default="skillen")
+    p.add_argument("--threads", type=int, default=0,
+                   help="'shared': the /omp pair styles on this many threads")
     lammps_arguments(p)  # --np: MPI ranks ('follow' only)
     a = p.parse_args()
     a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)

@@ -87,6 +87,11 @@ sphthermal_state_test(convection.restart same ${cavity_small} ARGS --var2 split=
 # the skillen shift's sums from the flow pair's loop, with the ghosts' sent home
 sphthermal_python_test(convection.mpi.shift_shared_np2 convection/test_shift.py LAMMPS
   ARGS shared --np 2 --mpirun ${MPIRUN} LABELS mpi PROCESSORS 2)
+# and from the /omp pair's threads, each adding to its own copy of the sums
+if(host_openmp)
+  sphthermal_python_test(convection.omp.shift_shared_threads2 convection/test_shift.py LAMMPS
+    ARGS shared --threads 2 LABELS unit PROCESSORS 2)
+endif()
 # the mirror walls keep their ghost points' neighbours, and the Adami walls
 # their fluid neighbours, from one neighbour build to the next: a skin of
 # 0.1 (no build in 200 steps) gives the state of 0.02 (builds every few
