@@ -228,6 +228,7 @@ void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_ra
   int **const firstneigh = list->firstneigh;
   // the factors of the pairs within the support, stored with the list
   const int *const first_pair = support_pairs.first.data();
+  const int *const stop_pair = support_pairs.stop.data();
   const double *const pair_weights = support_pairs.weight.data();
   const int *const pair_j = support_pairs.j.data();
   const double *const pair_distance = support_pairs.distance.data();
@@ -263,7 +264,7 @@ void PairSPHClearyHeat::eval(int ifrom, int ito, double *desph, double *relax_ra
     int nin;
     const int *jin;
     if (CORRECT) {
-      nin = first_pair[ii + 1] - from;
+      nin = stop_pair[ii] - from;
       jin = pair_j + from;
     } else {
       nin = support.gather<3, false>(x[i], x, jlist, jnum, cutsq_kernel);

@@ -56,14 +56,15 @@ template <int KERNEL> void PairSPHClearyHeat::update_pairs()
   // atoms near it
   const double *const near = weights ? nullptr : interface->near();
   double *const moments = weights ? weights->moments_to_gather() : nullptr;
+  const int nall = atom->nlocal + atom->nghost;
   if (domain->dimension == 3)
     support_pairs.gather<KERNEL, 3>(list, atom->x, kernel, cutsq_kernel, eta2, volume,
-                                    interface != nullptr, near, moments, atom->nlocal,
-                                    force->newton_pair);
+                                    interface != nullptr, near, moments, atom->nlocal, nall,
+                                    force->newton_pair, comm->nthreads);
   else
     support_pairs.gather<KERNEL, 2>(list, atom->x, kernel, cutsq_kernel, eta2, volume,
-                                    interface != nullptr, near, moments, atom->nlocal,
-                                    force->newton_pair);
+                                    interface != nullptr, near, moments, atom->nlocal, nall,
+                                    force->newton_pair, comm->nthreads);
   if (weights) weights->refresh(support_pairs, volume, *this);
   if (interface)
     interface->refresh(support_pairs, volume, kernel.w_scale * sphk_f(KERNEL, 0.0), kernel.h,

@@ -91,8 +91,12 @@ void PairSPHHarmonicVisc::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   begin_compute();
-  const Rates rates = {atom->f,   atom->drho, atom->desph, heat_term.relax_rate,
-                       shift_sums_wanted ? shift_sum : nullptr, nullptr};
+  const Rates rates = {atom->f,
+                       atom->drho,
+                       atom->desph,
+                       heat_term.relax_rate,
+                       shift_sums_wanted ? shift_sum : nullptr,
+                       nullptr};
   eval_pairs(0, list->inum, rates);
   end_compute();
   if (vflag_fdotr) virial_fdotr_compute();

@@ -18,6 +18,7 @@ PairStyle(sph/harmonic/visc,PairSPHHarmonicVisc);
 #include "sph_comm_stage.h"
 #include "sph_consistent.h"
 #include "sph_eos.h"
+#include "sph_threads.h"
 
 #include <vector>
 
@@ -183,6 +184,7 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // the inverse moments for this step's positions
   // (pair_sph_harmonic_visc_state.cpp)
   void refresh_gradient_correction();
+  SPHThreadSums gradient_sums;    // the threads' sums of the moments (package omp)
   template <int KERNEL, int DIM> void update_gradient_correction();
   double hold_mean_pressure();
   // the calls of the templates below for this run's settings (sph_dispatch.h)

@@ -342,7 +342,8 @@ double PairSPHHarmonicVisc::memory_usage()
 {
   return Pair::memory_usage() +
       ((velocity_seen_store ? 8.0 : 5.0) * nmax + 3.0 * nmax_shift + 6.0 * nmax_gradient) *
-      sizeof(double);
+      sizeof(double) +
+      gradient_sums.memory_usage();
 }
 
 /* ----------------------------------------------------------------------

@@ -32,6 +32,7 @@
 #include "sph_hub.h"
 #include "sph_particle.h"
 #include "sph_support.h"
+#include "sph_threads.h"
 #include "update.h"
 
 #include <algorithm>
@@ -84,8 +85,10 @@ template <int KERNEL, int DIM> void PairSPHHarmonicVisc::update_gradient_correct
     memory->create(gradient_inverse, nmax_gradient, 6, "pair:gradient_inverse");
   }
   double **const moment = gradient_inverse;    // M until B replaces it
-  for (int i = 0; i < nall; i++)
+  const int nthreads = comm->nthreads;
+  sph_parallel_for(nall, nthreads, [&](int i) {
     for (int k = 0; k < 6; k++) moment[i][k] = 0.0;
+  });
   const double *const *const x = atom->x;
   const int *const mask = atom->mask;
   const double cutsq_kernel = cut_global * cut_global;
@@ -94,37 +97,55 @@ template <int KERNEL, int DIM> void PairSPHHarmonicVisc::update_gradient_correct
   const int *const ilist = list->ilist;
   const int *const numneigh = list->numneigh;
   int **const firstneigh = list->firstneigh;
-  // the entries inside the support first, their kernel values together
-  // (sph_support.h)
-  SPHSupport support;
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = ilist[ii];
-    const int wall_i = mask[i] & wall_groupbit;
-    const int nin = support.gather<DIM, true>(x[i], x, firstneigh[i], numneigh[i], cutsq_kernel);
-    const double *const rsq_in = support.rsq;
-    double *const g_in = support.a;
-    for (int k = 0; k < nin; k++)
-      g_in[k] = -dwdr_r_scale * sphk_df_over_q(KERNEL, sqrt(rsq_in[k]) * inv_h);
-    for (int k = 0; k < nin; k++) {
-      const int j = support.index[k];
-      const int wall_j = mask[j] & wall_groupbit;
-      if (wall_i && wall_j) continue;
-      const double *const del = support.del + 3 * k;
-      if (!wall_i) sphc_moment_add_in(DIM, moment[i], g_in[k] * volume[j], del);
-      if (!wall_j && (newton_pair || j < nlocal))
-        sphc_moment_add_in(DIM, moment[j], g_in[k] * volume[i], del);
+  // each thread a slice of the list, adding to its own copy of the moments
+  gradient_sums.fit(6 * (size_t) nall, nthreads);
+  sph_parallel(nthreads, [&](int tid) {
+    double *const moment_thr = gradient_sums.of(moment[0], tid);
+    int from, to;
+    sph_thread_slice(list->inum, nthreads, tid, from, to);
+    // the entries inside the support first, their kernel values together
+    // (sph_support.h)
+    SPHSupport support;
+    for (int ii = from; ii < to; ii++) {
+      const int i = ilist[ii];
+      const int wall_i = mask[i] & wall_groupbit;
+      const int nin = support.gather<DIM, true>(x[i], x, firstneigh[i], numneigh[i], cutsq_kernel);
+      const double *const rsq_in = support.rsq;
+      double *const g_in = support.a;
+      for (int k = 0; k < nin; k++)
+        g_in[k] = -dwdr_r_scale * sphk_df_over_q(KERNEL, sqrt(rsq_in[k]) * inv_h);
+      for (int k = 0; k < nin; k++) {
+        const int j = support.index[k];
+        const int wall_j = mask[j] & wall_groupbit;
+        if (wall_i && wall_j) continue;
+        const double *const del = support.del + 3 * k;
+        if (!wall_i) sphc_moment_add_in(DIM, moment_thr + 6 * i, g_in[k] * volume[j], del);
+        if (!wall_j && (newton_pair || j < nlocal))
+          sphc_moment_add_in(DIM, moment_thr + 6 * (size_t) j, g_in[k] * volume[i], del);
+      }
     }
-  }
+    gradient_sums.reduce(moment[0], nthreads, tid);
+  });
   if (newton_pair) reverse(SPHCommStage().rows(moment, 6));
-  bigint plain = 0, fluid = 0;
-  for (int i = 0; i < nlocal; i++) {
-    double inverse[6] = {1.0, 1.0, 1.0, 0.0, 0.0, 0.0};
-    if (!(mask[i] & wall_groupbit)) {
-      fluid++;
-      // M is summed with V_j: the unit volume
-      if (!sphc_moment_normaliser(dim, moment[i], 1.0, inverse)) plain++;
+  // the atoms that keep the plain gradient, counted by each thread
+  std::vector<bigint> plain_of(nthreads, 0), fluid_of(nthreads, 0);
+  sph_parallel(nthreads, [&](int tid) {
+    int from, to;
+    sph_thread_slice(nlocal, nthreads, tid, from, to);
+    for (int i = from; i < to; i++) {
+      double inverse[6] = {1.0, 1.0, 1.0, 0.0, 0.0, 0.0};
+      if (!(mask[i] & wall_groupbit)) {
+        fluid_of[tid]++;
+        // M is summed with V_j: the unit volume
+        if (!sphc_moment_normaliser(dim, moment[i], 1.0, inverse)) plain_of[tid]++;
+      }
+      for (int k = 0; k < 6; k++) moment[i][k] = inverse[k];
     }
-    for (int k = 0; k < 6; k++) moment[i][k] = inverse[k];
+  });
+  bigint plain = 0, fluid = 0;
+  for (int t = 0; t < nthreads; t++) {
+    plain += plain_of[t];
+    fluid += fluid_of[t];
   }
   forward(SPHCommStage().rows(moment, 6));
   if (update->setupflag) {

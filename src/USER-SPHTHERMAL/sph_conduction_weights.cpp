@@ -19,6 +19,7 @@
 #include "sph_consistent.h"
 #include "sph_exchange.h"
 #include "sph_support_pairs.h"
+#include "sph_threads.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -105,7 +106,9 @@ void SPHConductionWeights::normalise(const double *volume, SPHExchange &exchange
   const int nlocal = atom->nlocal;
   const int dim = domain->dimension;
   if (force->newton_pair) exchange.reverse(SPHCommStage().rows(s, 6));
-  for (int i = 0; i < nlocal; i++) state[i] = sphc_moment_normaliser(dim, s[i], volume[i], s[i]);
+  sph_parallel_for(nlocal, comm->nthreads, [&](int i) {
+    state[i] = sphc_moment_normaliser(dim, s[i], volume[i], s[i]);
+  });
   exchange.forward(SPHCommStage().rows(s, 6).flat(state, 1));
 }
 
@@ -166,7 +169,8 @@ void SPHConsistentWeights::grow_more()
 
 double SPHConsistentWeights::memory_usage() const
 {
-  return SPHConductionWeights::memory_usage() + 15.0 * nmax * sizeof(double);
+  return SPHConductionWeights::memory_usage() + 15.0 * nmax * sizeof(double) +
+      kinv_sums.memory_usage() + deficit_sums.memory_usage() + coupling_sums.memory_usage();
 }
 
 void SPHConsistentWeights::refresh(SPHSupportPairs &pairs, const double *volume,
@@ -186,7 +190,8 @@ void SPHConsistentWeights::refresh_in(SPHSupportPairs &pairs, SPHExchange &excha
   const int nall = nlocal + atom->nghost;
   const int dim = DIM;
   const int newton = force->newton_pair;
-  const int npairs = pairs.count();
+  // the threads of the gather, each over its block of pairs
+  const int nthreads = pairs.threads();
   const int *const pair_i = pairs.i.data();
   const int *const pair_j = pairs.j.data();
   const double *const pair_r = pairs.r.data();
@@ -203,28 +208,39 @@ void SPHConsistentWeights::refresh_in(SPHSupportPairs &pairs, SPHExchange &excha
   // the weights with S from here on, and their first moments s and K; on a
   // warm start the first sweep's coupling too, from the last step's lambda
   // (the ghosts' as forwarded then): one pass over the pairs fewer
-  for (int i = 0; i < nall; i++) {
+  sph_parallel_for(nall, nthreads, [&](int i) {
     for (int k = 0; k < 6; k++) kinv_flat[6 * i + k] = 0.0;
     for (int k = 0; k < 3; k++) deficit_flat[3 * i + k] = 0.0;
     if (warm)
       for (int k = 0; k < 3; k++) coupling_flat[3 * i + k] = 0.0;
-  }
-  if (warm)
-    weigh_pairs<DIM, true>(pairs, newton);
-  else
-    weigh_pairs<DIM, false>(pairs, newton);
+  });
+  kinv_sums.fit(6 * (size_t) nall, nthreads);
+  deficit_sums.fit(3 * (size_t) nall, nthreads);
+  coupling_sums.fit(3 * (size_t) nall, nthreads);
+  sph_parallel(nthreads, [&](int tid) {
+    double *const kinv_thr = kinv_sums.of(kinv_flat, tid);
+    double *const deficit_thr = deficit_sums.of(deficit_flat, tid);
+    double *const coupling_thr = warm ? coupling_sums.of(coupling_flat, tid) : nullptr;
+    if (warm)
+      weigh_pairs<DIM, true>(pairs, pairs.blocks[tid], newton, kinv_thr, deficit_thr, coupling_thr);
+    else
+      weigh_pairs<DIM, false>(pairs, pairs.blocks[tid], newton, kinv_thr, deficit_thr, nullptr);
+    kinv_sums.reduce(kinv_flat, nthreads, tid);
+    deficit_sums.reduce(deficit_flat, nthreads, tid);
+    if (warm) coupling_sums.reduce(coupling_flat, nthreads, tid);
+  });
   if (newton) {
     SPHCommStage moments = SPHCommStage().rows(kinv, 6).rows(deficit, 3);
     if (warm) moments.rows(coupling, 3);
     exchange.reverse(moments);
   }
-  for (int i = 0; i < nlocal; i++) {
+  sph_parallel_for(nlocal, nthreads, [&](int i) {
     double inverse[6];
     double *const kinv_i = kinv_flat + 6 * i;
     if (state[i] == 0.0 || sphc_sym_inverse(dim, kinv_i, inverse) <= 0.0)
       for (int k = 0; k < 6; k++) inverse[k] = 0.0;    // lambda stays 0
     for (int k = 0; k < 6; k++) kinv_i[k] = inverse[k];
-  }
+  });
 
   // the first sweep: from lambda = 0 (no coupling), or on a warm start with
   // the coupling summed above
@@ -232,41 +248,61 @@ void SPHConsistentWeights::refresh_in(SPHSupportPairs &pairs, SPHExchange &excha
   if (!warm)
     for (int i = 0; i < nall; i++)
       for (int k = 0; k < 3; k++) lambda_flat[3 * i + k] = 0.0;
-  for (int i = 0; i < nlocal; i++)
+  sph_parallel_for(nlocal, nthreads, [&](int i) {
     sphc_first_update(kinv_flat + 6 * i, warm ? coupling_flat + 3 * i : none, deficit_flat + 3 * i,
                       lambda_flat + 3 * i);
+  });
   const int remaining = (warm ? warm_sweeps : sweeps) - 1;
 
   // the further Jacobi sweeps: each with the neighbours' lambda of the sweep before
   const SPHCommStage lambda_stage = SPHCommStage().rows(lambda, 3);
   for (int sweep = 0; sweep < remaining; sweep++) {
     exchange.forward(lambda_stage);
-    for (int i = 0; i < nall; i++)
-      for (int k = 0; k < 3; k++) coupling_flat[3 * i + k] = 0.0;
-    for (int q = 0; q < npairs; q++)
-      add_coupling<DIM>(coupling_flat, lambda_flat, pair_i[q], pair_j[q],
-                        newton || pair_j[q] < nlocal, g[q], pair_r + 3 * q);
+    sph_parallel(nthreads, [&](int tid) {
+      int from, to;
+      sph_thread_slice(nall, nthreads, tid, from, to);
+      for (int i = from; i < to; i++)
+        for (int k = 0; k < 3; k++) coupling_flat[3 * i + k] = 0.0;
+      double *const coupling_thr = coupling_sums.of(coupling_flat, tid);
+      // (thread 0 adds to the coupling itself: all of it zeroed first)
+      if (nthreads > 1) {
+#if defined(_OPENMP)
+#pragma omp barrier
+#endif
+      }
+      const SPHSupportPairs::Block block = pairs.blocks[tid];
+      for (int q = block.begin; q < block.end; q++)
+        add_coupling<DIM>(coupling_thr, lambda_flat, pair_i[q], pair_j[q],
+                          newton || pair_j[q] < nlocal, g[q], pair_r + 3 * q);
+      coupling_sums.reduce(coupling_flat, nthreads, tid);
+    });
     if (newton) exchange.reverse(SPHCommStage().rows(coupling, 3));
-    for (int i = 0; i < nlocal; i++)
+    sph_parallel_for(nlocal, nthreads, [&](int i) {
       sphc_first_update(kinv_flat + 6 * i, coupling_flat + 3 * i, deficit_flat + 3 * i,
                         lambda_flat + 3 * i);
+    });
   }
   exchange.forward(lambda_stage);
   lambda_step = update->ntimestep;
-  for (int q = 0; q < npairs; q++)
-    weight[q] *= sphc_first_factor_in(DIM, lambda_flat + 3 * pair_i[q], lambda_flat + 3 * pair_j[q],
-                                      pair_r + 3 * q);
+  sph_parallel(nthreads, [&](int tid) {
+    const SPHSupportPairs::Block block = pairs.blocks[tid];
+    for (int q = block.begin; q < block.end; q++)
+      weight[q] *= sphc_first_factor_in(DIM, lambda_flat + 3 * pair_i[q],
+                                        lambda_flat + 3 * pair_j[q], pair_r + 3 * q);
+  });
 }
 
-/* each pair's weight with S (its factor so far) and its plain weight g
-   made that weight's; the moments K and s of every atom, and with WARM the
-   coupling of the first Jacobi sweep from the lambda in place */
+/* each pair of a block: its weight with S (its factor so far) and its
+   plain weight g made that weight's; the moments K and s of its atoms, and
+   with WARM the coupling of the first Jacobi sweep from the lambda in place
+   (into one thread's sums) */
 
 template <int DIM, bool WARM>
-void SPHConsistentWeights::weigh_pairs(SPHSupportPairs &pairs, int newton)
+void SPHConsistentWeights::weigh_pairs(SPHSupportPairs &pairs, SPHSupportPairs::Block block,
+                                       int newton, double *kinv_flat, double *deficit_flat,
+                                       double *coupling_flat)
 {
   const int nlocal = atom->nlocal;
-  const int npairs = pairs.count();
   const int *const pair_i = pairs.i.data();
   const int *const pair_j = pairs.j.data();
   const double *const pair_r = pairs.r.data();
@@ -275,10 +311,7 @@ void SPHConsistentWeights::weigh_pairs(SPHSupportPairs &pairs, int newton)
   double *const weight = pairs.weight.data();
   const double *const s_flat = s[0];
   const double *const lambda_flat = lambda[0];
-  double *const kinv_flat = kinv[0];
-  double *const deficit_flat = deficit[0];
-  double *const coupling_flat = coupling[0];
-  for (int q = 0; q < npairs; q++) {
+  for (int q = block.begin; q < block.end; q++) {
     const int i = pair_i[q], j = pair_j[q];
     const double *const r = pair_r + 3 * q;
     weight[q] =
@@ -365,8 +398,9 @@ void SPHSecondWeights::refresh(SPHSupportPairs &pairs, const double *volume, SPH
   const int npairs = pairs.count();
 
   solver_pairs.resize(npairs);
-  for (int q = 0; q < npairs; q++) {
-    sphs_pair &to = solver_pairs[q];
+  int stored = 0;
+  for (int q : pairs.all()) {
+    sphs_pair &to = solver_pairs[stored++];
     to.i = pairs.i[q];
     to.j = pairs.j[q];
     for (int c = 0; c < 3; c++) to.r[c] = pairs.r_of(q)[c];
@@ -423,7 +457,7 @@ void SPHSecondWeights::refresh(SPHSupportPairs &pairs, const double *volume, SPH
   this->exchange = nullptr;
   solved_at = update->ntimestep;
 
-  for (int q = 0; q < npairs; q++) {
+  for (int q : pairs.all()) {
     double f[SPHS_MAX];
     sphs_basis(dim, pairs.r_of(q), inv_h, f);
     pairs.weight[q] =

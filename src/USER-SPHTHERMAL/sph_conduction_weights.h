@@ -8,13 +8,14 @@
 
 #include "pointers.h"
 #include "sph_second_moment.h"
+#include "sph_support_pairs.h"
+#include "sph_threads.h"
 
 #include <vector>
 
 namespace LAMMPS_NS {
 
 class SPHExchange;
-class SPHSupportPairs;
 
 // The factors w_ij by which a correction of pair sph/cleary/heat multiplies
 // each pair's conduction term, behind one interface: 'correction
@@ -86,7 +87,11 @@ class SPHConsistentWeights : public SPHConductionWeights {
   void grow_more() override;
   void release();
   template <int DIM> void refresh_in(SPHSupportPairs &pairs, SPHExchange &exchange);
-  template <int DIM, bool WARM> void weigh_pairs(SPHSupportPairs &pairs, int newton);
+  template <int DIM, bool WARM>
+  void weigh_pairs(SPHSupportPairs &pairs, SPHSupportPairs::Block block, int newton,
+                   double *kinv_flat, double *deficit_flat, double *coupling_flat);
+  // the threads' sums of K, s and the coupling (sph_threads.h)
+  SPHThreadSums kinv_sums, deficit_sums, coupling_sums;
 };
 
 // 'correction second': the multipliers nu of sph_second_moment.h's solve

@@ -129,7 +129,6 @@ void SPHInterfaceDistance::refresh(const SPHSupportPairs &pairs, const double *v
   const int dim = domain->dimension;
   const int newton = force->newton_pair;
   const int *const type = atom->type;
-  const int npairs = pairs.count();
   // a distance never below this: the pair's split stays finite
   const double closest = 1e-3 * h;
   auto gather_j = [&](int j) {
@@ -143,7 +142,7 @@ void SPHInterfaceDistance::refresh(const SPHSupportPairs &pairs, const double *v
     for (int k = 0; k < 6; k++) moment[i][k] = 0.0;
     for (int k = 0; k < 3; k++) vector[i][k] = 0.0;
   }
-  for (int q = 0; q < npairs; q++) {
+  for (int q : pairs.all()) {
     const int i = pairs.i[q], j = pairs.j[q];
     const double *const r = pairs.r_of(q);
     const double radial = -pairs.dwdr[q] / pairs.distance[q];
@@ -172,7 +171,7 @@ void SPHInterfaceDistance::refresh(const SPHSupportPairs &pairs, const double *v
     const double self = (i < nlocal) ? w_self * volume[i] : 0.0;
     for (int k = 0; k < 3; k++) sum[i][k] = self * vector[i][k];
   }
-  for (int q = 0; q < npairs; q++) {
+  for (int q : pairs.all()) {
     const int i = pairs.i[q], j = pairs.j[q];
     if (crossing[type[i]][type[j]] || near[i] == 0.0 || near[j] == 0.0) continue;
     const double weight_j = pairs.w[q] * volume[j];
@@ -195,7 +194,7 @@ void SPHInterfaceDistance::refresh(const SPHSupportPairs &pairs, const double *v
     sum[i][0] = 0.0;
     sum[i][1] = HUGE_VAL;
   }
-  for (int q = 0; q < npairs; q++) {
+  for (int q : pairs.all()) {
     const int i = pairs.i[q], j = pairs.j[q];
     if (near[i] == 0.0 && near[j] == 0.0) continue;
     const double *const r = pairs.r_of(q);
@@ -227,7 +226,7 @@ void SPHInterfaceDistance::refresh(const SPHSupportPairs &pairs, const double *v
     sum[i][0] = self * distance[i];
     sum[i][1] = self;
   }
-  for (int q = 0; q < npairs; q++) {
+  for (int q : pairs.all()) {
     const int i = pairs.i[q], j = pairs.j[q];
     if (crossing[type[i]][type[j]] || near[i] == 0.0 || near[j] == 0.0) continue;
     const double *const r = pairs.r_of(q);

@@ -29,6 +29,7 @@
 #include "sph_interpolation.h"
 #include "sph_kernels.h"
 #include "sph_particle.h"
+#include "sph_threads.h"
 #include "update.h"
 
 #include <cmath>
@@ -369,13 +370,51 @@ void SPHMirror::interpolate_points(std::vector<double> &ghost, std::vector<int> 
                                    const sphk_kernel &kernel)
 {
   const int nlocal = atom->nlocal;
+  // each thread a slice of the owned atoms: thread 0 keeps its neighbours
+  // and weights in place, the others theirs apart, appended after
+  const int nthreads = comm->nthreads;
+  threads.resize(nthreads);
+  sph_parallel(nthreads, [&](int tid) {
+    int from, to;
+    sph_thread_slice(nlocal, nthreads, tid, from, to);
+    PointScratch &scratch = threads[tid];
+    if (tid > 0) {
+      scratch.neighbours.clear();
+      scratch.weights.clear();
+    }
+    interpolate_slice<DIM, KERNEL>(from, to, ghost, how, kernel, scratch.support,
+                                   tid ? scratch.neighbours : neighbours,
+                                   tid ? scratch.weights : weights);
+  });
+  for (int t = 1; t < nthreads; t++) {
+    int from, to;
+    sph_thread_slice(nlocal, nthreads, t, from, to);
+    const int offset = neighbours.size();
+    for (int i = from; i < to; i++) first_neighbour[i] += offset;
+    neighbours.insert(neighbours.end(), threads[t].neighbours.begin(), threads[t].neighbours.end());
+    weights.insert(weights.end(), threads[t].weights.begin(), threads[t].weights.end());
+  }
+  first_neighbour[nlocal] = neighbours.size();
+}
+
+/* the ghost points of owned atoms [from, to), with the candidates inside
+   the support in 'support' and, where heat is returned, the Shepard
+   neighbours and weights appended to 'near' and 'near_weights' (indices
+   from 0 in first_neighbour) */
+
+template <int DIM, int KERNEL>
+void SPHMirror::interpolate_slice(int from, int to, std::vector<double> &ghost,
+                                  std::vector<int> &how, const sphk_kernel &kernel,
+                                  SPHSupport &support, std::vector<int> &near,
+                                  std::vector<double> &near_weights)
+{
   const double h = kernel.h;
   const double cutsq = cutoff * cutoff;
   // -(dW/dr) / r = this f'(q) / q, without a division
   const double minus_dwdr_r_scale = -kernel.dw_scale * kernel.inv_h;
 
-  for (int i = 0; i < nlocal; i++) {
-    first_neighbour[i] = neighbours.size();
+  for (int i = from; i < to; i++) {
+    first_neighbour[i] = near.size();
     if (!has_ghost[i]) continue;
     const double *const g = &ghost_at[3 * (size_t) i];
     // the candidates inside the support (sph_support.h)
@@ -412,18 +451,18 @@ void SPHMirror::interpolate_points(std::vector<double> &ghost, std::vector<int> 
       sphi_point point;
       sphi_begin(&point, DIM);
       double shepard = 0.0;
-      const size_t start = neighbours.size();
+      const size_t start = near_weights.size();
       for (int k = 0; k < nin; k++) {
         const int m = m_in[k];
         const double volume = medium_volume[m];
         sphi_add_g(&point, &d_in[3 * k], w_in[k], g_in[k], volume, medium_values[m]);
         if (returns_heat) {
-          neighbours.push_back(medium_atoms[m]);
-          weights.push_back(w_in[k] * volume);
+          near.push_back(medium_atoms[m]);
+          near_weights.push_back(w_in[k] * volume);
           shepard += w_in[k] * volume;
         }
       }
-      for (size_t n = start; n < weights.size(); n++) weights[n] /= shepard;
+      for (size_t n = start; n < near_weights.size(); n++) near_weights[n] /= shepard;
       how[i] = sphi_solve(&point, h, &ghost[i], nullptr);
       continue;
     }
@@ -452,7 +491,6 @@ void SPHMirror::interpolate_points(std::vector<double> &ghost, std::vector<int> 
       how[i] = (sphi_solve(&point, h, &out[c], nullptr) == SPHI_NONE) ? SPHI_NONE : SPHI_SHEPARD;
     }
   }
-  first_neighbour[nlocal] = neighbours.size();
 }
 
 /* ----------------------------------------------------------------------

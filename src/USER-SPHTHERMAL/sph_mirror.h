@@ -146,11 +146,23 @@ class SPHMirror : protected Pointers {
   // owned atom for the temperature, 12 for the velocity)
   void interpolate_field(std::vector<double> &out, std::vector<int> &how,
                          std::vector<double> *depth);
-  SPHSupport support;    // the candidates of one ghost point inside the support
-  struct PointsCall;     // interpolate_points for this run's settings (sph_dispatch.h)
+  // per thread (package omp): the candidates of one ghost point inside the
+  // support, and the Shepard neighbours and weights of its slice of atoms
+  // (thread 0's are first_neighbour's)
+  struct PointScratch {
+    SPHSupport support;
+    std::vector<int> neighbours;
+    std::vector<double> weights;
+  };
+  std::vector<PointScratch> threads;
+  struct PointsCall;    // interpolate_points for this run's settings (sph_dispatch.h)
   template <int DIM, int KERNEL>
   void interpolate_points(std::vector<double> &ghost, std::vector<int> &how,
                           const sphk_kernel &kernel);
+  template <int DIM, int KERNEL>
+  void interpolate_slice(int from, int to, std::vector<double> &ghost, std::vector<int> &how,
+                         const sphk_kernel &kernel, SPHSupport &support, std::vector<int> &near,
+                         std::vector<double> &near_weights);
 };
 
 }    // namespace LAMMPS_NS

@@ -9,6 +9,7 @@
 #include "neigh_list.h"
 #include "sph_consistent.h"
 #include "sph_kernels.h"
+#include "sph_threads.h"
 
 #include <cmath>
 #include <vector>
@@ -17,14 +18,20 @@ namespace LAMMPS_NS {
 
 // The pairs of a half neighbour list that lie inside the kernel support,
 // stored with the list: entry ii of the list owns the pairs
-// [first[ii], first[ii + 1]), in the order of its neighbours. Made when the
+// [first[ii], stop[ii]), in the order of its neighbours. Made when the
 // particles move and read by the conduction weights, the interface
 // estimate and the pair loop, which finds the pairs of its slice of the
 // list (a thread's) at first[ii]. One array per quantity, so that a pass
-// streams only what it reads (the loop: the weights).
+// streams only what it reads (the loop: the weights). With threads, each
+// gathers the pairs of its slice of the list into a block of its own;
+// passes over all pairs go block by block (each thread its block).
 class SPHSupportPairs {
  public:
-  std::vector<int> first;    // per list entry, and the count at the end
+  struct Block {
+    int begin, end;
+  };
+  std::vector<int> first, stop;    // per list entry
+  std::vector<Block> blocks;       // one per thread of the gather, in list order
   std::vector<int> i, j;
   std::vector<double> r;           // x_i - x_j, 3 per pair
   std::vector<double> distance;    // |r|
@@ -32,7 +39,54 @@ class SPHSupportPairs {
   std::vector<double> g;           // the plain weight V_i V_j (-r dW/dr) / (r^2 + eta^2)
   std::vector<double> weight;      // the factor w_ij of a correction (SPHConductionWeights)
 
-  int count() const { return first.empty() ? 0 : first.back(); }
+  int count() const
+  {
+    int n = 0;
+    for (const Block &b : blocks) n += b.end - b.begin;
+    return n;
+  }
+  int threads() const { return (int) blocks.size(); }
+
+  // every pair's index, block by block: for (int q : pairs.all()) (the
+  // passes that stay on one thread)
+  class Indices {
+   public:
+    class iterator {
+     public:
+      iterator(const std::vector<Block> &blocks, size_t b) : blocks(blocks), b(b), q(0)
+      {
+        settle();
+      }
+      int operator*() const { return q; }
+      iterator &operator++()
+      {
+        if (++q == blocks[b].end) {
+          b++;
+          settle();
+        }
+        return *this;
+      }
+      bool operator!=(const iterator &other) const { return b != other.b || q != other.q; }
+
+     private:
+      const std::vector<Block> &blocks;
+      size_t b;
+      int q;
+      // at the first pair of block b or a later one, or at the end (b = size, q = 0)
+      void settle()
+      {
+        while (b < blocks.size() && blocks[b].begin == blocks[b].end) b++;
+        q = (b < blocks.size()) ? blocks[b].begin : 0;
+      }
+    };
+    explicit Indices(const std::vector<Block> &blocks) : blocks(blocks) {}
+    iterator begin() const { return iterator(blocks, 0); }
+    iterator end() const { return iterator(blocks, blocks.size()); }
+
+   private:
+    const std::vector<Block> &blocks;
+  };
+  Indices all() const { return Indices(blocks); }
   const double *r_of(int q) const { return &r[3 * (size_t) q]; }
 
   // the pairs of 'list' within 'cutsq' for positions x, with volume V of
@@ -42,19 +96,55 @@ class SPHSupportPairs {
   // Where 'moments' is given (6 per owned and ghost atom, zeroed), each
   // pair's second moment g r (x) r is added to its atoms' rows (j's where
   // j < nlocal or with newton), while the atom's pairs are in cache; DIM
-  // the dimension (2: the moments' z entries left alone)
+  // the dimension (2: the moments' z entries left alone); on nthreads threads
   template <int KERNEL, int DIM>
   void gather(const NeighList *list, const double *const *x, const sphk_kernel &kernel,
               double cutsq, double eta2, const double *volume, bool with_w, const double *near,
-              double *moments = nullptr, int nlocal = 0, int newton = 1)
+              double *moments = nullptr, int nlocal = 0, int nall = 0, int newton = 1,
+              int nthreads = 1)
   {
     const int inum = list->inum;
+    // each thread's slice of the list, and room for its pairs: its atoms' neighbours
+    blocks.resize(nthreads);
     int capacity = 0;
-    for (int ii = 0; ii < inum; ii++) capacity += list->numneigh[list->ilist[ii]];
+    for (int t = 0; t < nthreads; t++) {
+      int from, to;
+      sph_thread_slice(inum, nthreads, t, from, to);
+      blocks[t].begin = capacity;
+      for (int ii = from; ii < to; ii++) capacity += list->numneigh[list->ilist[ii]];
+    }
     fit(capacity);
-    first.resize(inum + 1);
-    int n = 0;
-    for (int ii = 0; ii < inum; ii++) {
+    first.resize(inum);
+    stop.resize(inum);
+    if (moments) moment_sums.fit(6 * (size_t) nall, nthreads);
+    sph_parallel(nthreads, [&](int tid) {
+      int from, to;
+      sph_thread_slice(inum, nthreads, tid, from, to);
+      double *const moments_thr = moments ? moment_sums.of(moments, tid) : nullptr;
+      blocks[tid].end =
+          gather_slice<KERNEL, DIM>(list, from, to, blocks[tid].begin, x, kernel, cutsq, eta2,
+                                    volume, with_w, near, moments_thr, nlocal, newton);
+      if (moments) moment_sums.reduce(moments, nthreads, tid);
+    });
+  }
+
+  double memory_usage() const
+  {
+    return (double) i.capacity() * (2 * sizeof(int) + 9 * sizeof(double)) +
+        (double) (first.capacity() + stop.capacity()) * sizeof(int) + moment_sums.memory_usage();
+  }
+
+ private:
+  SPHThreadSums moment_sums;
+
+  // the pairs of list entries [from, to) from position n on; returns the
+  // position after the last
+  template <int KERNEL, int DIM>
+  int gather_slice(const NeighList *list, int from, int to, int n, const double *const *x,
+                   const sphk_kernel &kernel, double cutsq, double eta2, const double *volume,
+                   bool with_w, const double *near, double *moments, int nlocal, int newton)
+  {
+    for (int ii = from; ii < to; ii++) {
       const int atom_i = list->ilist[ii];
       const int *const jlist = list->firstneigh[atom_i];
       const int jnum = list->numneigh[atom_i];
@@ -76,6 +166,7 @@ class SPHSupportPairs {
         distance[n] = rsq;
         n += (rsq < cutsq);
       }
+      stop[ii] = n;
       // the kernel values of this atom's pairs together (vectorised)
       for (int q = first[ii]; q < n; q++) {
         const double rr = sqrt(distance[q]);
@@ -93,16 +184,9 @@ class SPHSupportPairs {
             sphc_moment_add_in(DIM, moments + 6 * (size_t) j[q], g[q], r_of(q));
         }
     }
-    first[inum] = n;
+    return n;
   }
 
-  double memory_usage() const
-  {
-    return (double) i.capacity() * (2 * sizeof(int) + 9 * sizeof(double)) +
-        (double) first.capacity() * sizeof(int);
-  }
-
- private:
   void fit(int n)
   {
     if ((int) i.size() >= n) return;

@@ -89,6 +89,13 @@ sphthermal_python_test(convection.mpi.shift_shared_np2 convection/test_shift.py 
   ARGS shared --np 2 --mpirun ${MPIRUN} LABELS mpi PROCESSORS 2)
 # and from the /omp pair's threads, each adding to its own copy of the sums
 if(host_openmp)
+  # the whole cavity on threads (the /omp pairs; the conduction's factors,
+  # the gradient correction and the mirror walls on the threads of package
+  # omp) against one thread, over builds and warm sweeps between them
+  foreach(threads 2 3)
+    sphthermal_state_test(convection.omp.cavity_threads${threads} same ${cavity_small}
+      ARGS --var steps=60 --var2 threads=${threads} RTOL 1e-12 PROCESSORS 2)
+  endforeach()
   sphthermal_python_test(convection.omp.shift_shared_threads2 convection/test_shift.py LAMMPS
     ARGS shared --threads 2 LABELS unit PROCESSORS 2)
 endif()
