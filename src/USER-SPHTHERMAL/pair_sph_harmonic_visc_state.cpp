@@ -99,10 +99,11 @@ template <int KERNEL, int DIM> void PairSPHHarmonicVisc::update_gradient_correct
   int **const firstneigh = list->firstneigh;
   // each thread a slice of the list, adding to its own copy of the moments
   gradient_sums.fit(6 * (size_t) nall, nthreads);
+  std::vector<int> slices, before;
+  sph_neighbour_slices(ilist, numneigh, list->inum, nthreads, slices, before);
   sph_parallel(nthreads, [&](int tid) {
     double *const moment_thr = gradient_sums.of(moment[0], tid);
-    int from, to;
-    sph_thread_slice(list->inum, nthreads, tid, from, to);
+    const int from = slices[tid], to = slices[tid + 1];
     // the entries inside the support first, their kernel values together
     // (sph_support.h)
     SPHSupport support;

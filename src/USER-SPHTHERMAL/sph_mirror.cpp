@@ -370,13 +370,19 @@ void SPHMirror::interpolate_points(std::vector<double> &ghost, std::vector<int> 
                                    const sphk_kernel &kernel)
 {
   const int nlocal = atom->nlocal;
-  // each thread a slice of the owned atoms: thread 0 keeps its neighbours
-  // and weights in place, the others theirs apart, appended after
+  // each thread a slice of the atoms with a ghost point (of even work,
+  // wherever the wall atoms lie in the atom order): thread 0 keeps its
+  // neighbours and weights in place, the others theirs apart, appended
+  // after in order
+  with_ghost.clear();
+  for (int i = 0; i < nlocal; i++)
+    if (has_ghost[i]) with_ghost.push_back(i);
+  neighbour_count.assign(nlocal, 0);
   const int nthreads = comm->nthreads;
   threads.resize(nthreads);
   sph_parallel(nthreads, [&](int tid) {
     int from, to;
-    sph_thread_slice(nlocal, nthreads, tid, from, to);
+    sph_thread_slice((int) with_ghost.size(), nthreads, tid, from, to);
     PointScratch &scratch = threads[tid];
     if (tid > 0) {
       scratch.neighbours.clear();
@@ -387,20 +393,17 @@ void SPHMirror::interpolate_points(std::vector<double> &ghost, std::vector<int> 
                                    tid ? scratch.weights : weights);
   });
   for (int t = 1; t < nthreads; t++) {
-    int from, to;
-    sph_thread_slice(nlocal, nthreads, t, from, to);
-    const int offset = neighbours.size();
-    for (int i = from; i < to; i++) first_neighbour[i] += offset;
     neighbours.insert(neighbours.end(), threads[t].neighbours.begin(), threads[t].neighbours.end());
     weights.insert(weights.end(), threads[t].weights.begin(), threads[t].weights.end());
   }
-  first_neighbour[nlocal] = neighbours.size();
+  first_neighbour[0] = 0;
+  for (int i = 0; i < nlocal; i++) first_neighbour[i + 1] = first_neighbour[i] + neighbour_count[i];
 }
 
-/* the ghost points of owned atoms [from, to), with the candidates inside
-   the support in 'support' and, where heat is returned, the Shepard
-   neighbours and weights appended to 'near' and 'near_weights' (indices
-   from 0 in first_neighbour) */
+/* the ghost points of the atoms with_ghost[from, to), with the candidates
+   inside the support in 'support' and, where heat is returned, the Shepard
+   neighbours and weights appended to 'near' and 'near_weights' (and their
+   count per atom in neighbour_count) */
 
 template <int DIM, int KERNEL>
 void SPHMirror::interpolate_slice(int from, int to, std::vector<double> &ghost,
@@ -413,9 +416,8 @@ void SPHMirror::interpolate_slice(int from, int to, std::vector<double> &ghost,
   // -(dW/dr) / r = this f'(q) / q, without a division
   const double minus_dwdr_r_scale = -kernel.dw_scale * kernel.inv_h;
 
-  for (int i = from; i < to; i++) {
-    first_neighbour[i] = near.size();
-    if (!has_ghost[i]) continue;
+  for (int n_ghost = from; n_ghost < to; n_ghost++) {
+    const int i = with_ghost[n_ghost];
     const double *const g = &ghost_at[3 * (size_t) i];
     // the candidates inside the support (sph_support.h)
     support.fit(first_candidate[i + 1] - first_candidate[i]);
@@ -463,6 +465,7 @@ void SPHMirror::interpolate_slice(int from, int to, std::vector<double> &ghost,
         }
       }
       for (size_t n = start; n < near_weights.size(); n++) near_weights[n] /= shepard;
+      neighbour_count[i] = near_weights.size() - start;
       how[i] = sphi_solve(&point, h, &ghost[i], nullptr);
       continue;
     }

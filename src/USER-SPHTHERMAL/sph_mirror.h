@@ -155,6 +155,9 @@ class SPHMirror : protected Pointers {
     std::vector<double> weights;
   };
   std::vector<PointScratch> threads;
+  // the owned atoms with a ghost point this step, and how many Shepard
+  // neighbours each has (per owned atom)
+  std::vector<int> with_ghost, neighbour_count;
   struct PointsCall;    // interpolate_points for this run's settings (sph_dispatch.h)
   template <int DIM, int KERNEL>
   void interpolate_points(std::vector<double> &ghost, std::vector<int> &how,

@@ -105,25 +105,17 @@ class SPHSupportPairs {
   {
     const int inum = list->inum;
     // each thread's slice of the list, and room for its pairs: its atoms' neighbours
+    fit(sph_neighbour_slices(list->ilist, list->numneigh, inum, nthreads, slices, before));
     blocks.resize(nthreads);
-    int capacity = 0;
-    for (int t = 0; t < nthreads; t++) {
-      int from, to;
-      sph_thread_slice(inum, nthreads, t, from, to);
-      blocks[t].begin = capacity;
-      for (int ii = from; ii < to; ii++) capacity += list->numneigh[list->ilist[ii]];
-    }
-    fit(capacity);
+    for (int t = 0; t < nthreads; t++) blocks[t].begin = before[t];
     first.resize(inum);
     stop.resize(inum);
     if (moments) moment_sums.fit(6 * (size_t) nall, nthreads);
     sph_parallel(nthreads, [&](int tid) {
-      int from, to;
-      sph_thread_slice(inum, nthreads, tid, from, to);
       double *const moments_thr = moments ? moment_sums.of(moments, tid) : nullptr;
-      blocks[tid].end =
-          gather_slice<KERNEL, DIM>(list, from, to, blocks[tid].begin, x, kernel, cutsq, eta2,
-                                    volume, with_w, near, moments_thr, nlocal, newton);
+      blocks[tid].end = gather_slice<KERNEL, DIM>(list, slices[tid], slices[tid + 1],
+                                                  blocks[tid].begin, x, kernel, cutsq, eta2, volume,
+                                                  with_w, near, moments_thr, nlocal, newton);
       if (moments) moment_sums.reduce(moments, nthreads, tid);
     });
   }
@@ -136,6 +128,7 @@ class SPHSupportPairs {
 
  private:
   SPHThreadSums moment_sums;
+  std::vector<int> slices, before;    // the threads' slices of the list (sph_threads.h)
 
   // the pairs of list entries [from, to) from position n on; returns the
   // position after the last

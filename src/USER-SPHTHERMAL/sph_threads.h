@@ -40,6 +40,28 @@ inline void sph_thread_slice(Index n, int nthreads, int tid, Index &from, Index 
   to = std::min(from + chunk, n);
 }
 
+// slices of a neighbour list's entries with about as many neighbours each
+// (wall atoms, whose wall neighbours are excluded, have few): thread t takes
+// entries [bounds[t], bounds[t + 1]), whose neighbours come after
+// before[t] neighbours of the entries before; returns the neighbours of all
+inline int sph_neighbour_slices(const int *ilist, const int *numneigh, int inum, int nthreads,
+                                std::vector<int> &bounds, std::vector<int> &before)
+{
+  int total = 0;
+  for (int ii = 0; ii < inum; ii++) total += numneigh[ilist[ii]];
+  bounds.assign(nthreads + 1, inum);
+  before.assign(nthreads + 1, total);
+  bounds[0] = before[0] = 0;
+  int ii = 0, sum = 0;
+  for (int t = 1; t < nthreads; t++) {
+    const double target = (double) total * t / nthreads;
+    while (ii < inum && sum < target) sum += numneigh[ilist[ii++]];
+    bounds[t] = ii;
+    before[t] = sum;
+  }
+  return total;
+}
+
 // body(tid) on each of nthreads threads (on the caller's alone for one)
 template <class Body> inline void sph_parallel(int nthreads, Body body)
 {
