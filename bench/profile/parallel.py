@@ -2,8 +2,10 @@
 """Two cores on a whole scene: the flagship cavity and the air cavity
 (Reece et al. 2024, 154 x 154) run a short stretch of their flow serially,
 on 2 MPI ranks (one thread each) and on 2 OpenMP threads of one rank
-(-sf omp -pk omp 2: the /omp pair styles; the fixes and corrections run
-on one thread), each the fastest of --repeat runs. Writes the loop times,
+(-sf omp -pk omp 2: the /omp pair styles, and on the same threads the
+conduction's correction factors, the pressure-gradient correction and the
+mirror walls' interpolation; the other fixes on one thread), each the
+fastest of --repeat runs. Writes the loop times,
 the speed-ups over the serial run (efficiency: speed-up / 2) and the
 largest difference of the scene's final Nusselt numbers from the serial
 run, which should be round-off.
@@ -93,8 +95,9 @@ def main():
                 "stretch of each scene's flow, the fastest of "
                 f"{args.repeat} runs: serially, on 2 MPI ranks (one thread\n"
                 "each) and on 2 OpenMP threads of one rank (`-sf omp -pk omp 2`: the /omp pair\n"
-                "styles; fixes, walls and corrections on one thread). Speed-up over the serial\n"
-                "run, efficiency = speed-up / 2; the last column is the largest relative\n"
+                "styles, and on the same threads the conduction's correction factors, the\n"
+                "pressure-gradient correction and the mirror walls' interpolation; the other\n"
+                "fixes on one thread). Speed-up over the serial run, efficiency = speed-up / 2; the last column is the largest relative\n"
                 "difference of the scene's final Nusselt numbers from the serial run.\n\n"
                 "| scene | atoms | steps | layout | loop (s) | speed-up | efficiency | Nu against serial |\n"
                 "|---|---|---|---|---|---|---|---|\n")
