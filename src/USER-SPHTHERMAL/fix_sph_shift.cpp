@@ -61,6 +61,7 @@
 #include "sph_particle.h"
 #include "sph_shift.h"
 #include "sph_support.h"
+#include "sph_threads.h"
 #include "update.h"
 
 #include <cmath>
@@ -508,41 +509,51 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
 
   // each pair once (half list): both atoms' sums, a ghost's sent to its owner
   // after; the entries inside the support first, their kernel values
-  // together (sph_support.h)
-  SPHSupport support;
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
-    const int i_in_group = mask[i] & groupbit;
-    // i's sums in locals: no store to reload in every pair
-    double sums_i[per_atom];
-    for (int q = 0; q < per_atom; q++) sums_i[q] = 0.0;
-    const int nin = support.gather<3, true>(x[i], x, list->firstneigh[i], list->numneigh[i], cutsq);
-    double *const f_in = support.a;
-    double *const w_in = support.b;
-    for (int k = 0; k < nin; k++) {
-      const double r = sqrt(support.rsq[k]);
-      // grad_i W_ij = dW/dr (r_i - r_j) / r = f (r_i - r_j), without dividing by r
-      f_in[k] = dwdr_r_scale * sphk_df_over_q(kernel.kind, r * inv_h);
-      if (FORM == DELTAPLUS) w_in[k] = sphk_w(&kernel, r);
-    }
-    for (int k = 0; k < nin; k++) {
-      const int j = support.index[k];
-      const int j_sums = (mask[j] & groupbit) && (newton || j < nlocal);
-      if ((!i_in_group && !j_sums) || support.rsq[k] == 0.0) continue;
-      const double *const del = support.del + 3 * k;
-      const double f = f_in[k];
-      const double grad_w[3] = {f * del[0], f * del[1], f * del[2]};
-      const double w_pair = FORM == DELTAPLUS ? w_in[k] : 0.0;
-      if (i_in_group) add_neighbour(sums_i, i, j, del, grad_w, w_pair);
-      if (j_sums) {
-        const double del_j[3] = {-del[0], -del[1], -del[2]};
-        const double grad_w_j[3] = {-grad_w[0], -grad_w[1], -grad_w[2]};
-        add_neighbour(&sums[(size_t) per_atom * j], j, i, del_j, grad_w_j, w_pair);
+  // together (sph_support.h). With package omp, each thread a slice of the
+  // list, adding to its own copy of the sums (sph_threads.h)
+  const int nthreads = comm->nthreads;
+  std::vector<int> slices, before;
+  sph_neighbour_slices(list->ilist, list->numneigh, list->inum, nthreads, slices, before);
+  thread_sums.fit(sums.size(), nthreads);
+  sph_parallel(nthreads, [&](int tid) {
+    double *const sums_thr = thread_sums.of(sums.data(), tid);
+    SPHSupport support;
+    for (int ii = slices[tid]; ii < slices[tid + 1]; ii++) {
+      const int i = list->ilist[ii];
+      const int i_in_group = mask[i] & groupbit;
+      // i's sums in locals: no store to reload in every pair
+      double sums_i[per_atom];
+      for (int q = 0; q < per_atom; q++) sums_i[q] = 0.0;
+      const int nin =
+          support.gather<3, true>(x[i], x, list->firstneigh[i], list->numneigh[i], cutsq);
+      double *const f_in = support.a;
+      double *const w_in = support.b;
+      for (int k = 0; k < nin; k++) {
+        const double r = sqrt(support.rsq[k]);
+        // grad_i W_ij = dW/dr (r_i - r_j) / r = f (r_i - r_j), without dividing by r
+        f_in[k] = dwdr_r_scale * sphk_df_over_q(kernel.kind, r * inv_h);
+        if (FORM == DELTAPLUS) w_in[k] = sphk_w(&kernel, r);
       }
+      for (int k = 0; k < nin; k++) {
+        const int j = support.index[k];
+        const int j_sums = (mask[j] & groupbit) && (newton || j < nlocal);
+        if ((!i_in_group && !j_sums) || support.rsq[k] == 0.0) continue;
+        const double *const del = support.del + 3 * k;
+        const double f = f_in[k];
+        const double grad_w[3] = {f * del[0], f * del[1], f * del[2]};
+        const double w_pair = FORM == DELTAPLUS ? w_in[k] : 0.0;
+        if (i_in_group) add_neighbour(sums_i, i, j, del, grad_w, w_pair);
+        if (j_sums) {
+          const double del_j[3] = {-del[0], -del[1], -del[2]};
+          const double grad_w_j[3] = {-grad_w[0], -grad_w[1], -grad_w[2]};
+          add_neighbour(sums_thr + (size_t) per_atom * j, j, i, del_j, grad_w_j, w_pair);
+        }
+      }
+      double *const s_i = sums_thr + (size_t) per_atom * i;
+      for (int q = 0; q < per_atom; q++) s_i[q] += sums_i[q];
     }
-    double *const s_i = &sums[(size_t) per_atom * i];
-    for (int q = 0; q < per_atom; q++) s_i[q] += sums_i[q];
-  }
+    thread_sums.reduce(sums.data(), nthreads, tid);
+  });
   if (newton) SPHCompat::reverse_comm(comm, this);
 
   shift.assign(3 * (size_t) nlocal, 0.0);

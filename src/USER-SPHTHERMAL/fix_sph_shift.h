@@ -13,6 +13,7 @@ FixStyle(sph/shift,FixSPHShift);
 #define LMP_FIX_SPH_SHIFT_H
 
 #include "fix.h"
+#include "sph_threads.h"
 
 #include <string>
 #include <vector>
@@ -53,23 +54,24 @@ class FixSPHShift : public Fix {
   double speed;          // delta-plus: the reference speed U of CFL Ma = U dt / h
   double r_coeff;        // delta-plus: R and n of the pair weight
   int r_power;
-  double cap;            // largest shift / spacing
+  double cap;    // largest shift / spacing
   enum { CORRECT_T = 1, CORRECT_ALL = 2 };
-  int correct;           // 0, CORRECT_T: T_i += dr_i . grad T_i, CORRECT_ALL: T, rho and v
-  int continuity;        // the group's mean rho follows the shift's change of the kernel sums
-  int continuity_given;  // 1: 'continuity' in the command; 0: the default of init()
+  int correct;             // 0, CORRECT_T: T_i += dr_i . grad T_i, CORRECT_ALL: T, rho and v
+  int continuity;          // the group's mean rho follows the shift's change of the kernel sums
+  int continuity_given;    // 1: 'continuity' in the command; 0: the default of init()
   int kernel_kind;
   double cutoff;
-  int loop_own;      // 1: always the fix's own neighbour pass ('loop own')
-  int from_pair;     // 1: this run takes the sums from the flow pair's loop
+  int loop_own;     // 1: always the fix's own neighbour pass ('loop own')
+  int from_pair;    // 1: this run takes the sums from the flow pair's loop
   class PairSPHHarmonicVisc *flow;
   class NeighList *list;
-  std::vector<double> shift;    // per owned atom, 3 each
-  std::vector<double> volume;   // per owned and ghost atom, m / rho
+  std::vector<double> shift;     // per owned atom, 3 each
+  std::vector<double> volume;    // per owned and ghost atom, m / rho
   // per owned and ghost atom: the spacing's kernel value W(dx) (delta-plus), T (correcting)
   std::vector<double> w_spacing, temperature;
   // per owned and ghost atom, sums_per_atom each: the neighbour sums, ghosts' sent home
   std::vector<double> sums;
+  SPHThreadSums thread_sums;    // the threads' copies of sums (package omp)
   double energy;                // energy the correction has added since the fix was defined
   double largest;               // largest shift / spacing of the last step, on this rank
   int capped;                   // atoms shortened to the cap in the last step, on this rank

@@ -26,6 +26,8 @@
             (loop shared) give the positions of the fix's own pass (loop
             own) to round-off, with the corrected pressure gradient too;
             with another pressure form it makes them itself (on --np ranks)
+  threads   the fix's own pass on --threads threads (package omp; default
+            2) gives the positions of one thread to round-off
   linear    with 'correct yes' the temperature of a linear field follows the
             shifted particles exactly (to 1e-10), next to walls too, and the
             fix's energy equals the change of sum m cv T of the group
@@ -192,8 +194,7 @@ write_dump      all custom {name}.dump id x y modify sort id format float %.17g
             script = script.replace("sph/harmonic/visc wendland 0.4 ",
                                     f"sph/harmonic/visc wendland 0.4 {pair_options} ")
         if a.threads and loop == "shared":
-            script = script.replace("units           si\n",
-                                    f"package omp {a.threads}\nsuffix omp\nunits           si\n", 1)
+            script = with_threads(script, a.threads)
         out = run_lammps(a.lmp, script, work, a.np, a.mpirun)
         if a.threads and loop == "shared" and "sph/harmonic/visc/omp" not in out:
             print(f"FAIL: {name}: pair sph/harmonic/visc/omp not in the log")
@@ -220,6 +221,44 @@ write_dump      all custom {name}.dump id x y modify sort id format float %.17g
           f"gradient {diff_corrected:.2e}, with pressure sum "
           f"(own pass taken) {diff_other:.2e} (limit 1e-13); log line: shared {shared_line}, own "
           f"{own_line}, correction gradient {corrected_line}, pressure sum {other_line}")
+    return ok
+
+
+def with_threads(script, threads):
+    """the script with package omp and suffix omp before its styles"""
+    return script.replace("units           si\n",
+                          f"package omp {threads}\nsuffix omp\nunits           si\n", 1)
+
+
+def check_threads(a, work):
+    """The fix's own pass (loop own) on --threads threads (default 2), each
+    adding to its own copy of the sums, against one thread: the same
+    positions to round-off, with 'correct all' (every sum) on jittered
+    particles that only the shift moves."""
+    threads = a.threads or 2
+
+    def run(name, script):
+        run_lammps(a.lmp, script, work, a.np, a.mpirun)
+        return read_dump(os.path.join(work, f"{name}.dump"))
+
+    script = BOX.format(plugin=a.plugin, boundary="f f", lo=-4, hi=14) + JITTER + f"""
+velocity        all set 1.0 0.5 0.0 units box
+write_dump      all custom {{name}}_before.dump id x y modify sort id format float %.17g
+fix             hold all sph/stationary
+fix             shift fluid sph/shift {shift_args(a, 1.12)} loop own correct all
+timestep        1.0e-3
+run             100
+write_dump      all custom {{name}}.dump id x y modify sort id format float %.17g
+"""
+    one = run("one", script.replace("{name}", "one"))
+    many = run("many", with_threads(script.replace("{name}", "many"), threads))
+    start = read_dump(os.path.join(work, "one_before.dump"))
+    moved = np.hypot(one["x"] - start["x"], one["y"] - start["y"]).max()
+    diff = max(np.abs(many["x"] - one["x"]).max(), np.abs(many["y"] - one["y"]).max())
+    ok = diff < 1e-13 and moved > 1e-3
+    print(f"{'ok' if ok else 'FAIL'}: {a.form}, the own pass on {threads} threads against one: "
+          f"largest shift {moved:.2e} in 100 steps, positions after them within {diff:.2e} "
+          f"(limit 1e-13)")
     return ok
 
 
@@ -393,7 +432,8 @@ def check_volume(a, work):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    p.add_argument("check", choices=["lattice", "spread", "linear", "follow", "volume", "shared"])
+    p.add_argument("check", choices=["lattice", "spread", "linear", "follow", "volume", "shared",
+                                     "threads"])
     p.add_argument("--form", choices=sorted(FORMS), default="skillen")
     p.add_argument("--threads", type=int, default=0,
                    help="'shared': the /omp pair styles on this many threads")
@@ -402,7 +442,8 @@ def main():
     a.lmp, a.plugin = os.path.abspath(a.lmp), os.path.abspath(a.plugin)
     with tempfile.TemporaryDirectory() as work:
         ok = {"lattice": check_lattice, "spread": check_spread, "linear": check_linear,
-              "follow": check_follow, "volume": check_volume, "shared": check_shared}[a.check](
+              "follow": check_follow, "volume": check_volume, "shared": check_shared,
+              "threads": check_threads}[a.check](
             a, work)
     return 0 if ok else 1
 

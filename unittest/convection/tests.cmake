@@ -98,6 +98,11 @@ if(host_openmp)
   endforeach()
   sphthermal_python_test(convection.omp.shift_shared_threads2 convection/test_shift.py LAMMPS
     ARGS shared --threads 2 LABELS unit PROCESSORS 2)
+  # the fix's own pass on threads, both forms
+  foreach(form skillen delta-plus)
+    sphthermal_python_test(convection.omp.shift_own_${form}_threads2 convection/test_shift.py
+      LAMMPS ARGS threads --form ${form} --threads 2 LABELS unit PROCESSORS 2)
+  endforeach()
 endif()
 # the mirror walls keep their ghost points' neighbours, and the Adami walls
 # their fluid neighbours, from one neighbour build to the next: a skin of
