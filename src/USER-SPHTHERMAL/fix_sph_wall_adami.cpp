@@ -42,8 +42,10 @@
 #include "sph_kernels.h"
 #include "sph_mirror.h"
 #include "sph_particle.h"
+#include "sph_threads.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -61,8 +63,8 @@ FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), body_given(0), moving_keyword(-1), moving(0), v_sampled(nullptr),
     accel(nullptr), remaining_sampled(0.0), sampled(0), body_force(nullptr), buoyancy(nullptr),
     wall_groupbit(0), kernel_kind(0), cutoff(0.0), materials(nullptr), thermal_expansion(0),
-    fluid_near_valid(false), solid_type(nullptr), fluid_weight(nullptr), any_solid(0),
-    solid_state(nullptr), nmax(0), mirror(nullptr)
+    fluid_near_valid(false), solid_type(nullptr), any_solid(0), solid_state(nullptr), nmax(0),
+    mirror(nullptr)
 {
   if (!atom->rho_flag || !atom->vest_flag)
     error->all(FLERR, "Fix sph/wall/adami requires atom style sph (rho, vest)");
@@ -95,7 +97,6 @@ FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
   }
   memory->create(solid_type, atom->ntypes + 1, "sph/wall/adami:solid_type");
-  memory->create(fluid_weight, atom->ntypes + 1, "sph/wall/adami:fluid_weight");
   for (int t = 0; t <= atom->ntypes; t++) solid_type[t] = 0;
   restart_global = 1;
   restart_peratom = 1;
@@ -109,7 +110,6 @@ FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
 FixSPHWallAdami::~FixSPHWallAdami()
 {
   memory->destroy(solid_type);
-  memory->destroy(fluid_weight);
   memory->destroy(solid_state);
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
@@ -270,14 +270,10 @@ void FixSPHWallAdami::sample_acceleration(double half_dt)
 void FixSPHWallAdami::pre_force_walls()
 {
   const SPHParticles particles(atom);
-  const double *const *const x = atom->x;
-  const double *const *const v = atom->v;
-  double *const *const vest = atom->vest;
   double *const rho = atom->rho;
   const int *const type = atom->type;
   const int *const mask = atom->mask;
   const sphk_kernel kernel = sphk_make(kernel_kind, domain->dimension, cutoff);
-  const double cutsq = cutoff * cutoff;
   int below_eos = 0;
   // fix gravity may vary its acceleration in time
   if (!body_given) {
@@ -302,7 +298,10 @@ void FixSPHWallAdami::pre_force_walls()
   const int nfluid = fluid_atoms.size();
   fluid_pressure.resize(nfluid);
   fluid_rho_accel.resize(3 * (size_t) nfluid);
-  for (int m = 0; m < nfluid; m++) {
+  // on the threads of package omp: each fluid atom's state, then each
+  // thread a share of the wall atoms (of about as many fluid neighbours)
+  const int nthreads = comm->nthreads;
+  sph_parallel_for(nfluid, nthreads, [&](int m) {
     const int j = fluid_atoms[m];
     // with thermal expansion the pair refuses a T without reference density
     fluid_pressure[m] = sphe_pressure_at(materials->eos(type[j]), rho[j],
@@ -314,8 +313,53 @@ void FixSPHWallAdami::pre_force_walls()
     SPHBodyForce::acceleration(body, buoyancy, mask[j], type[j],
                                buoyancy ? particles.temperature(j) : 0.0, atom->x[j], accel);
     for (int k = 0; k < 3; k++) fluid_rho_accel[3 * (size_t) m + k] = rho[j] * accel[k];
-  }
-  for (int i = 0; i < atom->nlocal; i++) {
+  });
+  fluid_weights.resize((size_t) nthreads * (ntypes + 1));
+  std::vector<int> below_eos_of(nthreads, 0);
+  sph_parallel(nthreads, [&](int tid) {
+    // the wall atoms whose fluid neighbours are this thread's share
+    const int nlocal = atom->nlocal, total = first_fluid[nlocal];
+    const int from = std::lower_bound(first_fluid.begin(), first_fluid.begin() + nlocal,
+                                      (int) ((double) total * tid / nthreads)) -
+        first_fluid.begin();
+    const int to = (tid == nthreads - 1)
+        ? nlocal
+        : std::lower_bound(first_fluid.begin(), first_fluid.begin() + nlocal,
+                           (int) ((double) total * (tid + 1) / nthreads)) -
+            first_fluid.begin();
+    pre_force_atoms(from, to, fluid_weights.data() + (size_t) tid * (ntypes + 1), kernel,
+                    below_eos_of[tid]);
+  });
+  for (int t = 0; t < nthreads; t++) below_eos += below_eos_of[t];
+  // a tension beyond the equation of state leaves no density: stop, collectively
+  int below_eos_all = 0;
+  MPI_Allreduce(&below_eos, &below_eos_all, 1, MPI_INT, MPI_SUM, world);
+  if (below_eos_all)
+    error->all(FLERR,
+               "Fix sph/wall/adami: the extrapolated pressure of {} wall particle(s) is below the "
+               "lowest pressure of their equation of state (raise its speed of sound or "
+               "background pressure)",
+               below_eos_all);
+  SPHCompat::forward_comm(comm, this);
+}
+
+/* the extrapolated state of the wall atoms [from, to) of the group, with
+   fluid_weight the room for a weight per type and below_eos counting the
+   atoms whose pressure is below their equation of state's */
+
+void FixSPHWallAdami::pre_force_atoms(int from, int to, double *fluid_weight,
+                                      const sphk_kernel &kernel, int &below_eos)
+{
+  const SPHParticles particles(atom);
+  const double *const *const x = atom->x;
+  const double *const *const v = atom->v;
+  double *const *const vest = atom->vest;
+  double *const rho = atom->rho;
+  const int *const type = atom->type;
+  const int *const mask = atom->mask;
+  const double cutsq = cutoff * cutoff;
+  const int ntypes = atom->ntypes;
+  for (int i = from; i < to; i++) {
     if (!(mask[i] & groupbit)) continue;
     const int is_solid = solid_type[type[i]];
     double weight = 0.0, weighted_p = 0.0, hydrostatic = 0.0;
@@ -415,16 +459,6 @@ void FixSPHWallAdami::pre_force_walls()
       }
     }
   }
-  // a tension beyond the equation of state leaves no density: stop, collectively
-  int below_eos_all = 0;
-  MPI_Allreduce(&below_eos, &below_eos_all, 1, MPI_INT, MPI_SUM, world);
-  if (below_eos_all)
-    error->all(FLERR,
-               "Fix sph/wall/adami: the extrapolated pressure of {} wall particle(s) is below the "
-               "lowest pressure of their equation of state (raise its speed of sound or "
-               "background pressure)",
-               below_eos_all);
-  SPHCompat::forward_comm(comm, this);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -16,6 +16,7 @@ FixStyle(sph/wall/adami,FixSPHWallAdami);
 #include "fix.h"
 #include "sph_body_force.h"
 #include "sph_cells.h"
+#include "sph_kernels.h"
 
 #include <vector>
 
@@ -100,9 +101,13 @@ class FixSPHWallAdami : public Fix {
   std::vector<double> fluid_pressure, fluid_rho_accel;
   bool fluid_near_valid;
   void find_fluid_near();
-  int *solid_type;         // per type: 1 when the type has no equation of state
-  double *fluid_weight;    // per type: kernel weight of its fluid around one solid particle
-  int any_solid;           // 1 when some wall particle of this fix is solid
+  int *solid_type;    // per type: 1 when the type has no equation of state
+  // per thread (package omp) and type: the kernel weight of its fluid
+  // around one solid particle
+  std::vector<double> fluid_weights;
+  void pre_force_atoms(int from, int to, double *fluid_weight, const sphk_kernel &kernel,
+                       int &below_eos);
+  int any_solid;    // 1 when some wall particle of this fix is solid
   // per atom (owned and ghost): P, rho, viscosity, rho0/rho and the no-slip
   // velocity (3) seen by the flow
   double **solid_state;
