@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
-"""Two cores on a whole scene: the flagship cavity and the air cavity
-(Reece et al. 2024, 154 x 154) run a short stretch of their flow serially,
+"""Two cores on a whole scene: the flagship cavity, the air cavity
+(Reece et al. 2024, 154 x 154), the Re = 652 channel and the 3-d mixing
+tank (whose walls, shifting and corrections are most of their step) run a
+short stretch of their flow serially,
 on 2 MPI ranks (one thread each) and on 2 OpenMP threads of one rank
 (-sf omp -pk omp 2: the /omp pair styles, and on the same threads the
 conduction's correction factors, the pressure-gradient correction and the
@@ -8,10 +10,10 @@ mirror walls' interpolation; the other fixes on one thread), each the
 fastest of --repeat runs. Writes the loop times,
 the speed-ups over the serial run (efficiency: speed-up / 2) and the
 largest difference of the scene's final Nusselt numbers from the serial
-run, which should be round-off.
+run, which should be round-off (for the scenes that print one).
 
   parallel.py [--lmp build/lmp] [--plugin build/sphthermalplugin.so]
-              [--scenes cavity air] [--repeat 2]
+              [--scenes cavity air channel tank3d] [--repeat 2]
               [--out bench/profile/out] [--results bench/profile/parallel.md]
 
 Needs 2 free cores and mpirun; run on an otherwise idle machine.
@@ -43,7 +45,7 @@ profile = _load("scene_profile", "profile.py")
 overhead = _load("scene_overhead", "overhead.py")
 
 # name: (input, variables for a short stretch), those of overhead.py
-SCENES = {name: overhead.SCENES[name][:2] for name in ("cavity", "air")}
+SCENES = {name: overhead.SCENES[name][:2] for name in ("cavity", "air", "channel", "tank3d")}
 # how: (label, command prefix, suffix arguments, OMP_NUM_THREADS)
 MPIRUN = ["mpirun", "--oversubscribe", "-np", "2"]
 LAYOUTS = [
@@ -98,7 +100,8 @@ def main():
                 "styles, and on the same threads the conduction's correction factors, the\n"
                 "pressure-gradient correction and the mirror walls' interpolation; the other\n"
                 "fixes on one thread). Speed-up over the serial run, efficiency = speed-up / 2; the last column is the largest relative\n"
-                "difference of the scene's final Nusselt numbers from the serial run.\n\n"
+                "difference of the scene's final Nusselt numbers from the serial run (nan:\n"
+                "the scene prints none).\n\n"
                 "| scene | atoms | steps | layout | loop (s) | speed-up | efficiency | Nu against serial |\n"
                 "|---|---|---|---|---|---|---|---|\n")
         for scene, atoms, steps, label, time, speedup, spread in rows:
