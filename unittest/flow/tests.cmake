@@ -96,8 +96,9 @@ sphthermal_lammps_test(flow.shared_loop.not_with_correction ${thermal_flow_input
 # to round-off on 2 and 3 threads: the shared loop with per-atom
 # conductivities and relaxation rates, 2-D and 3-D; each style's own loop;
 # the heat style's own loop with mean interface; with correction consistent
-# and second (threads read their slices of the stored factors); the flow
-# style's correction gradient (3-D)
+# (2-D and 3-D: the threads gather the pairs and make the factors, each its
+# block) and second (threads read their slices of the stored factors); the
+# flow style's correction gradient (3-D, its moments on the threads)
 if(host_openmp)
   set(omp_shared --var laws=varying --var relax=yes)
   set(omp_shared_3d --var dim=3 --var relax=yes)
@@ -105,9 +106,11 @@ if(host_openmp)
   set(omp_own_fewer_pairs --var loop=own --var heat=fluid --var relax=yes)
   set(omp_interface "--var" "loop=own mean interface")
   set(omp_correction "--var" "loop=own correction consistent")
+  set(omp_correction_3d "--var" "loop=own correction consistent" --var dim=3)
   set(omp_second "--var" "loop=own correction second")
   set(omp_gradient "--var" "flow_keywords=correction gradient" --var dim=3 --var relax=yes)
-  foreach(variant shared shared_3d own own_fewer_pairs interface correction second gradient)
+  foreach(variant shared shared_3d own own_fewer_pairs interface correction correction_3d second
+          gradient)
     foreach(threads 2 3)
       sphthermal_state_test(flow.omp.${variant}.threads${threads} same ${thermal_flow_input}
         ARGS ${omp_${variant}} --var2 threads=${threads} RTOL 1e-12 PROCESSORS 2)
