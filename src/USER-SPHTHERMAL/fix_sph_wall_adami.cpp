@@ -45,7 +45,6 @@
 #include "sph_threads.h"
 #include "update.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -316,19 +315,12 @@ void FixSPHWallAdami::pre_force_walls()
   });
   fluid_weights.resize((size_t) nthreads * (ntypes + 1));
   std::vector<int> below_eos_of(nthreads, 0);
+  // each thread the wall atoms of a share of the fluid neighbours
+  std::vector<int> slices;
+  sph_work_slices(first_fluid.data(), atom->nlocal, nthreads, slices);
   sph_parallel(nthreads, [&](int tid) {
-    // the wall atoms whose fluid neighbours are this thread's share
-    const int nlocal = atom->nlocal, total = first_fluid[nlocal];
-    const int from = std::lower_bound(first_fluid.begin(), first_fluid.begin() + nlocal,
-                                      (int) ((double) total * tid / nthreads)) -
-        first_fluid.begin();
-    const int to = (tid == nthreads - 1)
-        ? nlocal
-        : std::lower_bound(first_fluid.begin(), first_fluid.begin() + nlocal,
-                           (int) ((double) total * (tid + 1) / nthreads)) -
-            first_fluid.begin();
-    pre_force_atoms(from, to, fluid_weights.data() + (size_t) tid * (ntypes + 1), kernel,
-                    below_eos_of[tid]);
+    pre_force_atoms(slices[tid], slices[tid + 1],
+                    fluid_weights.data() + (size_t) tid * (ntypes + 1), kernel, below_eos_of[tid]);
   });
   for (int t = 0; t < nthreads; t++) below_eos += below_eos_of[t];
   // a tension beyond the equation of state leaves no density: stop, collectively

@@ -62,6 +62,17 @@ inline int sph_neighbour_slices(const int *ilist, const int *numneigh, int inum,
   return total;
 }
 
+// slices of n items of about equal work, where item i's work is
+// offset[i + 1] - offset[i]: thread t takes [bounds[t], bounds[t + 1])
+inline void sph_work_slices(const int *offset, int n, int nthreads, std::vector<int> &bounds)
+{
+  bounds.assign(nthreads + 1, n);
+  bounds[0] = 0;
+  for (int t = 1; t < nthreads; t++)
+    bounds[t] =
+        std::lower_bound(offset, offset + n, (int) ((double) offset[n] * t / nthreads)) - offset;
+}
+
 // body(tid) on each of nthreads threads (on the caller's alone for one)
 template <class Body> inline void sph_parallel(int nthreads, Body body)
 {
