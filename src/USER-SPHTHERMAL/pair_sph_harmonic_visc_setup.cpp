@@ -217,11 +217,13 @@ void PairSPHHarmonicVisc::init_style()
                  "moves them with the body",
                  stray.tag, rigid->id, rigid->style);
   }
-  // every particle that is not such a wall needs its fluid's properties
+  // every particle of this style's types (in a hybrid, others may be
+  // grains of fix sph/grains) that is not such a wall needs its fluid's properties
   SPHCheck::FirstBad bad;    // type, 1 no eos / 2 no viscosity
   for (int i = 0; i < atom->nlocal; i++) {
     if (atom->mask[i] & wall_groupbit) continue;
     const int t = atom->type[i];
+    if (!setflag[t][t]) continue;
     const int missing = !materials->eos(t) ? 1 : (!materials->viscosity(t) ? 2 : 0);
     if (missing) bad.consider(atom->tag[i], t, missing);
   }

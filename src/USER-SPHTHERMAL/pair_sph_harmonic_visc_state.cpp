@@ -230,6 +230,15 @@ void PairSPHHarmonicVisc::update_atom_state()
       continue;
     }
     const sphe_eos *eos = materials->eos(type[i]);
+    if (!eos) {
+      // a type this style does not cover (init checked the others), e.g. the
+      // grains of fix sph/grains in a hybrid: no pair of it is evaluated
+      pressure[i] = viscosity[i] = 0.0;
+      density[i] = rho[i];
+      volume[i] = mass_of[i] / rho[i];
+      if (thermal_expansion) diffused_density[i] = rho[i];
+      continue;
+    }
     if (eos->thermal) {
       const double t = temperature[i];
       const double rho_ref = sphe_reference_density(eos, t);
@@ -270,7 +279,7 @@ void PairSPHHarmonicVisc::update_atom_state()
 /* ----------------------------------------------------------------------
    'mean_pressure P': every particle's pressure, owned or ghost, wall or
    fluid, less one offset such that the volume-weighted mean over the
-   fluid (the atoms of no wall group) is P. The pair terms then do not see
+   fluid (the atoms of no wall group with an eos) is P. The pair terms then do not see
    how the kernel sum of a changing particle arrangement moves the mean
    pressure of a closed container, and a constant offset of all pressures
    changes no pair force (the walls extrapolate the fluid's pressure, so
@@ -282,8 +291,9 @@ double PairSPHHarmonicVisc::hold_mean_pressure()
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   double mine[2] = {0.0, 0.0}, sum[2];
+  const int *const type = atom->type;
   for (int i = 0; i < nlocal; i++)
-    if (!(mask[i] & wall_groupbit)) {
+    if (!(mask[i] & wall_groupbit) && materials->eos(type[i])) {
       mine[0] += pressure[i] * volume[i];
       mine[1] += volume[i];
     }

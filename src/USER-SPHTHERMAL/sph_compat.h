@@ -28,6 +28,7 @@
 #endif
 #endif
 
+#include "atom.h"
 #include "comm.h"
 #include "compute.h"
 #include "domain.h"
@@ -68,6 +69,53 @@ namespace SPHCompat {
     neighbor->requests[irequest]->half = 0;
     neighbor->requests[irequest]->full = 1;
 #endif
+  }
+
+  // a full list of every pair closer than 'cutoff' (whatever the pair
+  // styles' cutoffs of the types), built every step, for a fix
+  inline void request_full_list_within(Neighbor *neighbor, Fix *fix, int instance, double cutoff)
+  {
+#if SPHTHERMAL_LAMMPS_NEW_API
+    (void) instance;
+    neighbor->add_request(fix, NeighConst::REQ_FULL)->set_cutoff(cutoff);
+#else
+    const int irequest = neighbor->request(fix, instance);
+    neighbor->requests[irequest]->pair = 0;
+    neighbor->requests[irequest]->fix = 1;
+    neighbor->requests[irequest]->half = 0;
+    neighbor->requests[irequest]->full = 1;
+    neighbor->requests[irequest]->cut = 1;
+    neighbor->requests[irequest]->cutoff = cutoff;
+#endif
+  }
+
+  // ------------------------------------------------ granular heat
+  // the per-atom temperature and heat flow of LAMMPS's granular heat model
+  // (fix property/atom temperature heatflow, integrated by fix heat/flow);
+  // nullptr where the atoms have none, and always in 29Sep2021, which has
+  // no such model
+  inline double *granular_temperature(Atom *atom)
+  {
+#if SPHTHERMAL_LAMMPS_NEW_API
+    return atom->temperature_flag ? atom->temperature : nullptr;
+#else
+    (void) atom;
+    return nullptr;
+#endif
+  }
+  inline double *granular_heatflow(Atom *atom)
+  {
+#if SPHTHERMAL_LAMMPS_NEW_API
+    return atom->heatflow_flag ? atom->heatflow : nullptr;
+#else
+    (void) atom;
+    return nullptr;
+#endif
+  }
+  // whether this LAMMPS has the granular heat model
+  inline bool has_granular_heat()
+  {
+    return SPHTHERMAL_LAMMPS_NEW_API != 0;
   }
 
   // a half list (newton as the pair styles have it), built every step, for a fix
@@ -249,8 +297,8 @@ namespace SPHCompat {
     if (strlen(value) != 2 || (value[0] != '+' && value[0] != '-') || value[1] < 'x' ||
         value[1] > 'z')
       lmp->error->all(file, line,
-                      "Illegal {} command: {} '{}' must be one of +x -x +y -y +z -z ({})",
-                      command, what, value, meaning);
+                      "Illegal {} command: {} '{}' must be one of +x -x +y -y +z -z ({})", command,
+                      what, value, meaning);
     sign = (value[0] == '+') ? 1 : -1;
     axis = value[1] - 'x';
     if (lmp->domain->dimension == 2 && axis == 2)

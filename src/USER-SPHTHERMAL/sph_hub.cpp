@@ -141,6 +141,14 @@ bool SPHHub::adds_force(const Fix *fix) const
   return utils::strmatch(fix->style, "^addforce");
 }
 
+int SPHHub::heat_flow_integrated() const
+{
+  int bits = 0;
+  for (int i = 0; i < modify->nfix; i++)
+    if (strcmp(modify->fix[i]->style, "heat/flow") == 0) bits |= modify->fix[i]->groupbit;
+  return bits;
+}
+
 /* ----------------------------------------------------------------------
    MACHDYN's solids (sph_machdyn.h): LAMMPS's pair smd/tlsph by name; the
    package's styles that follow the solids' energy convention by type

@@ -88,6 +88,8 @@ class SPHHub : protected Pointers {
   bool rigid(const Fix *fix) const;
   // fix addforce (a force that the pressure of a hydrostatic start cannot know)
   bool adds_force(const Fix *fix) const;
+  // the atoms whose temperature fix heat/flow of LAMMPS's GRANULAR integrates
+  int heat_flow_integrated() const;
   // pair smd/tlsph of LAMMPS's MACHDYN, alone or in a hybrid (nullptr without one)
   Pair *machdyn_solids_pair() const;
   // its determinant of the deformation gradient of each owned atom at the

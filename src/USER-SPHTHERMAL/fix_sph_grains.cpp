@@ -1,0 +1,380 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   fix sph/grains: unresolved grains of LAMMPS's GRANULAR package in an SPH
+   fluid, coupled both ways by the fluid's kernel (the interpolation and
+   the sharing of Robinson, Ramaioli and Luding, Int. J. Multiphase Flow 59
+   (2014) 121-134), with the exchange laws of sph_grain_laws.h.
+------------------------------------------------------------------------- */
+
+#include "fix_sph_grains.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_sph_materials.h"
+#include "group.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "pair_sph_harmonic_visc.h"
+#include "sph_checks.h"
+#include "sph_compat.h"
+#include "sph_eos.h"
+#include "sph_grain_laws.h"
+#include "sph_hub.h"
+#include "sph_interpolation.h"
+#include "sph_particle.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static const char cmd[] = "fix sph/grains";
+
+/* ----------------------------------------------------------------------
+   fix ID grains sph/grains fluid <group> [drag <law>] [heat <law>]
+------------------------------------------------------------------------- */
+
+FixSPHGrains::FixSPHGrains(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), fluid_groupbit(0), drag_kind(SPHG_DRAG_DIFELICE),
+    heat_kind(SPHG_HEAT_RANZ_MARSHALL), list(nullptr), materials(nullptr), kernel(), cutsq(0.0),
+    reaction(nullptr), nmax(0), at_grain(nullptr), totals_step(-1)
+{
+  for (int iarg = 3; iarg < narg; iarg += 2) {
+    if (iarg + 1 >= narg)
+      error->all(FLERR, "Illegal {} command: keyword {} needs a value", cmd, arg[iarg]);
+    const char *value = arg[iarg + 1];
+    if (strcmp(arg[iarg], "fluid") == 0) {
+      if (group->find(value) < 0)
+        error->all(FLERR, "Illegal {} command: no group {} (keyword fluid)", cmd, value);
+      fluid_name = value;
+    } else if (strcmp(arg[iarg], "drag") == 0) {
+      drag_kind = sphg_drag_lookup(value);
+      if (drag_kind < 0)
+        error->all(FLERR, "Illegal {} command: unknown drag law {} (expected stokes or difelice)",
+                   cmd, value);
+    } else if (strcmp(arg[iarg], "heat") == 0) {
+      heat_kind = sphg_heat_lookup(value);
+      if (heat_kind < 0)
+        error->all(FLERR,
+                   "Illegal {} command: unknown heat law {} (expected none, ranz-marshall or "
+                   "gunn)",
+                   cmd, value);
+    } else
+      error->all(FLERR, "Illegal {} command: unknown keyword {} (expected fluid, drag or heat)",
+                 cmd, arg[iarg]);
+  }
+  if (fluid_name.empty())
+    error->all(FLERR, "Illegal {} command: keyword fluid (the fluid's group) is required", cmd);
+  check_atom_style();
+
+  vector_flag = 1;    // force on the grains (3), heat into them, grains out of fluid, porosity
+  size_vector = 6;
+  extvector = 0;
+  global_freq = 1;
+  peratom_flag = 1;    // slip (3), porosity and fluid temperature at each grain
+  size_peratom_cols = 5;
+  peratom_freq = 1;
+  comm_reverse = 4;
+  for (double &v : local) v = 0.0;
+  for (double &v : totals) v = 0.0;
+}
+
+FixSPHGrains::~FixSPHGrains()
+{
+  memory->destroy(reaction);
+  memory->destroy(at_grain);
+}
+
+int FixSPHGrains::setmask()
+{
+  return POST_FORCE;
+}
+
+void FixSPHGrains::check_atom_style() const
+{
+  if (!atom->radius_flag || !atom->rmass_flag)
+    error->all(FLERR,
+               "{} requires the grains' radius and mass of atom style sphere (atom_style hybrid "
+               "sph sphere)",
+               cmd);
+  if (!atom->rho_flag || !atom->esph_flag || !atom->cv_flag)
+    error->all(FLERR,
+               "{} requires the fluid's rho, esph and cv of atom style sph (atom_style hybrid "
+               "sph sphere)",
+               cmd);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHGrains::init()
+{
+  if (domain->dimension != 3)
+    error->all(FLERR, "{}: the grains' drag and heat laws are those of spheres: a 3-d run only",
+               cmd);
+  check_atom_style();
+  const int fluid_group = group->find(fluid_name);
+  if (fluid_group < 0)
+    error->all(FLERR, "{} {}: group {} (keyword fluid) was deleted", cmd, id, fluid_name);
+  fluid_groupbit = group->bitmask[fluid_group];
+  if (SPHCheck::groups_overlap(lmp, groupbit, fluid_groupbit))
+    error->all(FLERR, "{} {}: the grains (group {}) and the fluid (group {}) share atoms", cmd, id,
+               group->names[igroup], fluid_name);
+  if (SPHCheck::group_count(lmp, fluid_groupbit) == 0)
+    error->all(FLERR, "{} {}: the fluid (group {}) has no atoms", cmd, id, fluid_name);
+  // the ghosts' velocities: the flow pair's (it requires them)
+
+  materials = FixSPHMaterials::find(lmp, cmd);
+  SPHHub hub(lmp);
+  PairSPHHarmonicVisc *flow = hub.require_flow(cmd);
+  const SPHKernelSettings settings = flow->kernel_settings();
+  kernel = sphk_make(settings.kind, 3, settings.cutoff);
+  cutsq = settings.cutoff * settings.cutoff;
+
+  // the fluid is the flow's (which checks that its types have an eos and a
+  // viscosity); the heat laws also read its conductivity
+  const int ntypes = atom->ntypes;
+  std::vector<int> mine(ntypes + 1, 0), fluid_types(ntypes + 1, 0);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & fluid_groupbit) mine[atom->type[i]] = 1;
+  MPI_Allreduce(mine.data(), fluid_types.data(), ntypes + 1, MPI_INT, MPI_MAX, world);
+  for (int type = 1; type <= ntypes; type++) {
+    if (!fluid_types[type]) continue;
+    if (!flow->setflag[type][type])
+      error->all(FLERR,
+                 "{} {}: fluid type {} (group {}) is not a fluid of pair sph/harmonic/visc "
+                 "(pair_coeff {} {})",
+                 cmd, id, type, fluid_name, type, type);
+    if (heat_kind != SPHG_HEAT_NONE && !materials->conductivity(type))
+      error->all(FLERR, "{} {}: fluid type {} has no conductivity in fix sph/materials (heat {})",
+                 cmd, id, type, sphg_heat_name(heat_kind));
+  }
+  if (heat_kind != SPHG_HEAT_NONE) {
+    // one message for both releases: 29Sep2021 has no granular heat model
+    const bool fields = SPHCompat::granular_temperature(atom) && SPHCompat::granular_heatflow(atom);
+    if (!fields || (hub.heat_flow_integrated() & groupbit) != groupbit)
+      error->all(FLERR,
+                 "{} {}: heat {} needs the granular heat model of LAMMPS 4Feb2025 or later: the "
+                 "grains' temperature and heat flow (fix property/atom temperature heatflow) and "
+                 "fix heat/flow on the grains (group {}) to integrate them; {}. Or 'heat none'",
+                 cmd, id, sphg_heat_name(heat_kind), group->names[igroup],
+                 !SPHCompat::has_granular_heat() ? "this LAMMPS has no such model"
+                     : !fields                   ? "the atoms have no temperature"
+                                                 : "no fix heat/flow integrates them all");
+  }
+  SPHCompat::request_full_list_within(neighbor, this, instance_me, settings.cutoff);
+}
+
+void FixSPHGrains::init_list(int /*id*/, NeighList *ptr)
+{
+  list = ptr;
+}
+
+void FixSPHGrains::setup(int /*vflag*/)
+{
+  exchange();
+}
+
+void FixSPHGrains::post_force(int /*vflag*/)
+{
+  exchange();
+}
+
+/* ----------------------------------------------------------------------
+   the exchange of one force evaluation: each owned grain's interpolation,
+   laws and share; the fluid's ghosts send their shares to their owners
+------------------------------------------------------------------------- */
+
+void FixSPHGrains::exchange()
+{
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  if (nall > nmax) {
+    memory->destroy(reaction);
+    memory->destroy(at_grain);
+    nmax = atom->nmax;
+    memory->create(reaction, nmax, 4, "sph/grains:reaction");
+    memory->create(at_grain, nmax, 5, "sph/grains:at_grain");
+    array_atom = at_grain;
+  }
+  for (int i = 0; i < nlocal; i++)
+    for (int k = 0; k < 5; k++) at_grain[i][k] = 0.0;
+  for (int i = 0; i < nall; i++)
+    reaction[i][0] = reaction[i][1] = reaction[i][2] = reaction[i][3] = 0.0;
+
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  const double *radius = atom->radius, *rmass = atom->rmass, *rho = atom->rho;
+  const double *cv = atom->cv;
+  double *desph = atom->desph;
+  const int *mask = atom->mask, *type = atom->type;
+  const tagint *tag = atom->tag;
+  const double *grain_temperature = SPHCompat::granular_temperature(atom);
+  double *heatflow = SPHCompat::granular_heatflow(atom);
+  const SPHParticles particles(atom);
+  const double dt = update->dt;
+  const double minus_dwdr_r_scale = -kernel.dw_scale * kernel.inv_h;
+  const double w0 = sphk_w(&kernel, 0.0);
+  const int heat = heat_kind != SPHG_HEAT_NONE;
+
+  for (double &value : local) value = 0.0;
+  local[5] = 1.0;
+  totals_step = -1;
+
+  const int inum = list->inum;
+  const int *ilist = list->ilist, *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    if (!(mask[i] & groupbit)) continue;
+    const double d = 2.0 * radius[i];
+    const double grain_volume = M_PI * d * d * d / 6.0;
+    // Shepard sums of the fluid (weight V_j W_ij) and the grains' volume fraction
+    double weight = 0.0, u[3] = {0.0, 0.0, 0.0}, fluid_t = 0.0, fluid_rho = 0.0;
+    double fluid_mu = 0.0, fluid_k = 0.0, fluid_cp = 0.0;
+    double solid = grain_volume * w0;
+    sphi_point pressure;
+    sphi_begin(&pressure, 3);
+    const int *jlist = firstneigh[i];
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double dx[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+      const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
+      if (rsq >= cutsq) continue;
+      const double r = sqrt(rsq);
+      const double w = sphk_w(&kernel, r);
+      if (mask[j] & groupbit) {
+        const double dj = 2.0 * radius[j];
+        solid += M_PI * dj * dj * dj / 6.0 * w;
+        continue;
+      }
+      if (!(mask[j] & fluid_groupbit)) continue;
+      const double volume = particles.volume(j);
+      const double vw = volume * w;
+      const double t = particles.temperature(j);
+      weight += vw;
+      for (int k = 0; k < 3; k++) u[k] += vw * v[j][k];
+      fluid_t += vw * t;
+      fluid_rho += vw * rho[j];
+      fluid_mu += vw * materials->viscosity_at(type[j], t, cmd);
+      if (heat) {
+        fluid_k += vw * materials->conductivity_at(type[j], t, cmd);
+        fluid_cp += vw * cv[j];
+      }
+      const double g = minus_dwdr_r_scale * sphk_df_over_q(kernel.kind, r * kernel.inv_h);
+      sphi_add_g(&pressure, dx, w, g, volume, sphe_pressure_at(materials->eos(type[j]), rho[j], t));
+    }
+    if (!(weight > 0.0)) {    // out of the fluid (above its surface, say): no exchange
+      local[4] += 1.0;
+      continue;
+    }
+    const double porosity = 1.0 - solid;
+    if (!(porosity > 0.0))
+      error->one(FLERR,
+                 "{} {}: the grains fill {} of the kernel's volume around grain atom {}: the "
+                 "porosity there is not positive; the kernel's support ({}) must be several "
+                 "grain diameters ({})",
+                 cmd, id, solid, tag[i], sqrt(cutsq), d);
+    local[5] = std::min(local[5], porosity);
+    for (double &value : u) value /= weight;
+    fluid_t /= weight;
+    fluid_rho /= weight;
+    fluid_mu /= weight;
+    double pressure_value = 0.0, grad_p[3];
+    sphi_solve(&pressure, kernel.h, &pressure_value, grad_p);
+
+    const double slip[3] = {u[0] - v[i][0], u[1] - v[i][1], u[2] - v[i][2]};
+    const double speed = sqrt(slip[0] * slip[0] + slip[1] * slip[1] + slip[2] * slip[2]);
+    const double beta = sphg_drag_beta(drag_kind, d, porosity, fluid_rho, fluid_mu, speed);
+    double force[3];
+    for (int k = 0; k < 3; k++) force[k] = beta * slip[k] - grain_volume * grad_p[k];
+    double q = 0.0;
+    if (heat)
+      q = sphg_conductance(heat_kind, d, porosity, fluid_rho, fluid_mu, fluid_k / weight,
+                           fluid_cp / weight, speed) *
+          (fluid_t - grain_temperature[i]);
+    if (!std::isfinite(force[0] + force[1] + force[2] + q))
+      error->one(FLERR,
+                 "{} {}: grain atom {} gets a non-finite exchange with the fluid (force {} {} "
+                 "{}, heat {}; fluid at the grain: T {}, rho {}, viscosity {})",
+                 cmd, id, tag[i], force[0], force[1], force[2], q, fluid_t, fluid_rho, fluid_mu);
+    if (dt * beta > rmass[i])
+      error->one(FLERR,
+                 "{} {}: the drag relaxes the slip of grain atom {} in m / beta = {}, less than "
+                 "the timestep {}: the explicit coupling is unstable; take a smaller timestep",
+                 cmd, id, tag[i], rmass[i] / beta, dt);
+    for (int k = 0; k < 3; k++) {
+      f[i][k] += force[k];
+      local[k] += force[k];
+    }
+    if (heat) heatflow[i] += q;
+    local[3] += q;
+    for (int k = 0; k < 3; k++) at_grain[i][k] = slip[k];
+    at_grain[i][3] = porosity;
+    at_grain[i][4] = fluid_t;
+
+    // the opposite, shared in proportion to V_j W_ij: the shares sum to one
+    const double inv_weight = 1.0 / weight;
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (!(mask[j] & fluid_groupbit)) continue;
+      const double dx[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+      const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
+      if (rsq >= cutsq) continue;
+      const double share = particles.volume(j) * sphk_w(&kernel, sqrt(rsq)) * inv_weight;
+      for (int k = 0; k < 3; k++) reaction[j][k] -= share * force[k];
+      reaction[j][3] -= share * q;
+    }
+  }
+
+  comm->reverse_comm(this);
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & fluid_groupbit)) continue;
+    for (int k = 0; k < 3; k++) f[i][k] += reaction[i][k];
+    desph[i] += reaction[i][3] / particles.mass(i);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixSPHGrains::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int k = 0; k < 4; k++) buf[m++] = reaction[i][k];
+  return m;
+}
+
+void FixSPHGrains::unpack_reverse_comm(int n, int *list_send, double *buf)
+{
+  int m = 0;
+  for (int i = 0; i < n; i++)
+    for (int k = 0; k < 4; k++) reaction[list_send[i]][k] += buf[m++];
+}
+
+/* ----------------------------------------------------------------------
+   the last exchange's totals over all ranks: force of the fluid on the
+   grains (1-3), heat into them (4), grains with no fluid around (5), the
+   smallest porosity at a grain with fluid around (6; 1 with none)
+------------------------------------------------------------------------- */
+
+double FixSPHGrains::compute_vector(int n)
+{
+  if (totals_step != update->ntimestep) {
+    MPI_Allreduce(local, totals, 5, MPI_DOUBLE, MPI_SUM, world);
+    MPI_Allreduce(&local[5], &totals[5], 1, MPI_DOUBLE, MPI_MIN, world);
+    totals_step = update->ntimestep;
+  }
+  return totals[n];
+}
+
+double FixSPHGrains::memory_usage()
+{
+  return 9.0 * nmax * sizeof(double);
+}

@@ -1,0 +1,130 @@
+/* -*- c -*- -------------------------------------------------------------
+   USER-SPHTHERMAL: the exchange laws between a fluid and the unresolved
+   grains in it (grains smaller than the kernel's support), in C99 (also
+   C++). Each law is a small function chosen by name from a table; fix
+   sph/grains evaluates them at each grain with the fluid's state
+   interpolated there.
+
+   Drag: F = beta (u - v), u the fluid's velocity at the grain, v the
+   grain's, d its diameter, eps the porosity (fluid volume fraction) there,
+   Re = eps rho d |u - v| / mu the particle Reynolds number.
+     stokes   beta = 3 pi mu d (creeping flow around one sphere)
+     difelice beta = (pi d^2 / 8) rho |u - v| Cd eps^(2 - chi),
+              Cd = (0.63 + 4.8 / sqrt(Re))^2,
+              chi = 3.7 - 0.65 exp(-(1.5 - log10 Re)^2 / 2)
+              (R. Di Felice, The voidage function for fluid-particle
+              interaction systems, Int. J. Multiphase Flow 20 (1994)
+              153-159; the drag of the SPH-DEM of Robinson, Ramaioli and
+              Luding, Int. J. Multiphase Flow 59 (2014) 121-134). Cd's
+              1/Re terms are expanded so that beta is finite at u = v.
+   Heat: Q = Nu k pi d (T_fluid - T_grain) (h = Nu k / d on the area pi d^2),
+   Pr = mu cp / k.
+     ranz-marshall Nu = 2 + 0.6 Re^(1/2) Pr^(1/3) (W. E. Ranz and W. R.
+              Marshall, Evaporation from drops, Chem. Eng. Prog. 48 (1952)
+              141-146 and 173-180)
+     gunn     Nu = (7 - 10 eps + 5 eps^2)(1 + 0.7 Re^0.2 Pr^(1/3))
+                   + (1.33 - 2.4 eps + 1.2 eps^2) Re^0.7 Pr^(1/3)
+              (D. J. Gunn, Transfer of heat or mass to particles in fixed
+              and fluidised beds, Int. J. Heat Mass Transfer 21 (1978)
+              467-476)
+------------------------------------------------------------------------- */
+
+#ifndef SPH_GRAIN_LAWS_H
+#define SPH_GRAIN_LAWS_H
+
+#include <math.h>
+#include <string.h>
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+enum sphg_drag_kind { SPHG_DRAG_STOKES = 0, SPHG_DRAG_DIFELICE, SPHG_DRAG_NKINDS };
+enum sphg_heat_kind {
+  SPHG_HEAT_NONE = 0,
+  SPHG_HEAT_RANZ_MARSHALL,
+  SPHG_HEAT_GUNN,
+  SPHG_HEAT_NKINDS
+};
+
+static inline const char *sphg_drag_name(int kind)
+{
+  static const char *names[SPHG_DRAG_NKINDS] = {"stokes", "difelice"};
+  return (kind >= 0 && kind < SPHG_DRAG_NKINDS) ? names[kind] : "?";
+}
+
+static inline const char *sphg_heat_name(int kind)
+{
+  static const char *names[SPHG_HEAT_NKINDS] = {"none", "ranz-marshall", "gunn"};
+  return (kind >= 0 && kind < SPHG_HEAT_NKINDS) ? names[kind] : "?";
+}
+
+/* -1 when the name is not a law */
+static inline int sphg_drag_lookup(const char *name)
+{
+  int kind;
+  for (kind = 0; kind < SPHG_DRAG_NKINDS; kind++)
+    if (strcmp(name, sphg_drag_name(kind)) == 0) return kind;
+  return -1;
+}
+
+static inline int sphg_heat_lookup(const char *name)
+{
+  int kind;
+  for (kind = 0; kind < SPHG_HEAT_NKINDS; kind++)
+    if (strcmp(name, sphg_heat_name(kind)) == 0) return kind;
+  return -1;
+}
+
+/* the particle Reynolds number at slip speed w */
+static inline double sphg_reynolds(double eps, double rho, double d, double w, double mu)
+{
+  return eps * rho * d * w / mu;
+}
+
+/* Di Felice's exponent of the porosity; 3.7 in the creeping limit */
+static inline double sphg_difelice_chi(double re)
+{
+  double x;
+  if (re <= 0.0) return 3.7;
+  x = 1.5 - log10(re);
+  return 3.7 - 0.65 * exp(-0.5 * x * x);
+}
+
+/* the drag coefficient beta (F = beta (u - v)) of a grain of diameter d at
+   porosity eps, slip speed w >= 0, in a fluid of density rho and dynamic
+   viscosity mu */
+static inline double sphg_drag_beta(int kind, double d, double eps, double rho, double mu, double w)
+{
+  double scale, rho_w_cd;
+  if (kind == SPHG_DRAG_STOKES) return 3.0 * M_PI * mu * d;
+  /* rho w Cd = rho w (0.63^2 + 2 (0.63)(4.8) / sqrt(Re) + 4.8^2 / Re) */
+  scale = mu / (eps * d);
+  rho_w_cd = 0.3969 * rho * w + 6.048 * sqrt(rho * w * scale) + 23.04 * scale;
+  return 0.125 * M_PI * d * d * rho_w_cd *
+      pow(eps, 2.0 - sphg_difelice_chi(sphg_reynolds(eps, rho, d, w, mu)));
+}
+
+/* the Nusselt number of a grain (0 for 'none') */
+static inline double sphg_nusselt(int kind, double eps, double re, double pr)
+{
+  const double pr3 = cbrt(pr);
+  switch (kind) {
+    case SPHG_HEAT_RANZ_MARSHALL:
+      return 2.0 + 0.6 * sqrt(re) * pr3;
+    case SPHG_HEAT_GUNN:
+      return (7.0 - 10.0 * eps + 5.0 * eps * eps) * (1.0 + 0.7 * pow(re, 0.2) * pr3) +
+          (1.33 - 2.4 * eps + 1.2 * eps * eps) * pow(re, 0.7) * pr3;
+    default:
+      return 0.0;
+  }
+}
+
+/* the conductance h A = Nu k pi d of a grain (Q = conductance (T_f - T_g)) */
+static inline double sphg_conductance(int kind, double d, double eps, double rho, double mu,
+                                      double k, double cp, double w)
+{
+  return sphg_nusselt(kind, eps, sphg_reynolds(eps, rho, d, w, mu), mu * cp / k) * k * M_PI * d;
+}
+
+#endif

@@ -1,0 +1,29 @@
+# fix sph/grains: unresolved grains of LAMMPS's GRANULAR in the fluid
+# (included by unittest/CMakeLists.txt; helpers: cmake/sphthermal_tests.cmake)
+
+# the exchange laws (sph_grain_laws.h) against their published forms
+add_header_test(test_grain_laws grains/test_grain_laws.c)
+sphthermal_test(grains.laws LABELS unit COMMAND test_grain_laws)
+
+set(grains_test ${CMAKE_CURRENT_LIST_DIR}/test_grains.py)
+# LAMMPS 4Feb2025 has the grains' temperature (fix heat/flow); 29Sep2021 none
+if(LAMMPS_RELEASE STREQUAL "4Feb2025")
+  set(grains_heat ranz-marshall)
+else()
+  set(grains_heat none)
+endif()
+foreach(drag stokes difelice)
+  sphthermal_python_test(grains.conservation.${drag} ${grains_test} LAMMPS
+    ARGS --check conservation --drag ${drag} --heat ${grains_heat} LABELS unit)
+  sphthermal_python_test(grains.settle.${drag} ${grains_test} LAMMPS
+    ARGS --check settle --drag ${drag} --steps 300 LABELS validation)
+endforeach()
+if(LAMMPS_RELEASE STREQUAL "4Feb2025")
+  sphthermal_python_test(grains.heat.ranz-marshall ${grains_test} LAMMPS
+    ARGS --check heat --heat ranz-marshall LABELS validation)
+endif()
+foreach(np 2 4)
+  sphthermal_python_test(grains.mpi.conservation_np${np} ${grains_test} LAMMPS
+    ARGS --check mpi --heat ${grains_heat} --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
+endforeach()
+add_error_cases(grains ${CMAKE_CURRENT_LIST_DIR}/errors.in)
