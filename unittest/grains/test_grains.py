@@ -1,11 +1,11 @@
-"""Unresolved grains in an SPH fluid (fix sph/grains, unittest/grains/in.grains).
+"""Unresolved grains in an SPH fluid (fix sph/grains): unittest/grains/in.grains
+(conservation, mpi) and examples/grains-single/in.single (settle, heat).
   conservation: grains thrown hot through still fluid: the momentum of fluid
       plus grains is conserved to round-off while the grains lose a good part
       of theirs; the thermal energy changes only by the integrators' half-step
       term dt (Q_N - Q_0) / 2 (heat on)
   settle: one grain under its buoyant weight reaches the terminal slip of the
-      drag law, solved here from the law as published (Stokes: exact; Di
-      Felice: Cd = (0.63 + 4.8 / sqrt(Re))^2 and the porosity exponent chi)
+      drag law, solved from the law as published (tools/grain_exact.py)
   heat: a hot grain held in still fluid cools as the lumped capacitance
       solution T_f + (T_0 - T_f) exp(-t / tau), tau = m cp / (Nu k pi d),
       Nu = 2 at rest
@@ -22,7 +22,9 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 INPUT = os.path.join(HERE, "in.grains")
+EXAMPLE = os.path.join(HERE, "..", "..", "examples", "grains-single", "in.single")
 from checks import below, finish, that
+from grain_exact import lumped_temperature, nusselt, terminal_slip
 from lammps_checks import run_input
 from sphtest import lammps_arguments
 
@@ -44,24 +46,6 @@ def numbers(text, label, names):
     return values, found[-1]
 
 
-def difelice_force(w, eps):
-    """Di Felice's drag at slip speed w, as published."""
-    re_p = eps * RHO_F * D * w / MU
-    cd = (0.63 + 4.8 / math.sqrt(re_p)) ** 2
-    chi = 3.7 - 0.65 * math.exp(-0.5 * (1.5 - math.log10(re_p)) ** 2)
-    return 0.5 * cd * RHO_F * math.pi * D * D / 4.0 * eps * eps * w * w * eps ** (-chi)
-
-
-def terminal_slip(drag, weight, eps):
-    if drag == "stokes":
-        return weight / (3.0 * math.pi * MU * D)
-    lo, hi = 1e-12, 10.0
-    for _ in range(200):
-        mid = math.sqrt(lo * hi)
-        lo, hi = (mid, hi) if difelice_force(mid, eps) < weight else (lo, mid)
-    return math.sqrt(lo * hi)
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     lammps_arguments(parser)
@@ -73,19 +57,23 @@ def main():
     workdir = tempfile.mkdtemp(prefix="sph-grains-")
     plugin = os.path.abspath(args.plugin)
 
-    def run(mode, np_=1, heat=args.heat):
-        return run_input(args.lmp, INPUT, {"plugin": plugin, "mode": mode, "drag": args.drag, "heat": heat, "heat_on": int(heat != "none"),
-                                           "steps": args.steps}, workdir, np_, args.mpirun)
+    def run(np_=1):
+        return run_input(args.lmp, INPUT, {"plugin": plugin, "drag": args.drag, "heat": args.heat,
+                                           "heat_on": int(args.heat != "none"), "steps": args.steps}, workdir,
+                         np_, args.mpirun)
+
+    def example(mode):
+        return run_input(args.lmp, EXAMPLE, {"plugin": plugin, "mode": mode, "drag": args.drag,
+                                             "heat": args.heat}, workdir)
 
     if args.check in ("conservation", "mpi"):
-        names = ["momentum", "energy", "grains", "timestep"]
-        text = run("conservation")
+        text = run()
         line = re.findall(r"^conservation: (.*)$", text, re.M)
         that(bool(line), "conservation: printed")
         if not line:
             finish()
         v = [float(x) for x in re.findall(r"-?[0-9.]+(?:[eE][+-]?[0-9]+)?", line[-1])]
-        g0, g1, p0x, p0z, p1x, p1z, e0, e1, q0, q1, dt, eps = v
+        g0, g1, p0x, p0z, p1x, p1z, e0, e1, q0, q1, dt, eps, outside = v
         if args.check == "conservation":
             that(abs(g1 - g0) > 0.3 * abs(g0), "the fluid takes a good part of the grains' momentum",
                  f"{g0:.6e} -> {g1:.6e}")
@@ -94,6 +82,7 @@ def main():
             below(abs(p1x - p0x) / scale, 1e-11, "total x momentum, relative to the start's")
             below(abs(p1z - p0z) / scale, 1e-11, "total z momentum, relative to the start's")
             that(0.7 < eps < 1.0, "porosity at the grains below 1", f"{eps:.6f}")
+            that(outside == 0.0, "every grain has fluid around it", f"{outside:g}")
             if args.heat != "none":
                 that(q0 < 0.0 and abs(q1) < abs(q0), "the hot grains give heat to the fluid, less and less",
                      f"{q0:.6e} -> {q1:.6e}")
@@ -101,7 +90,7 @@ def main():
                 below(abs((e1 - e0) - 0.5 * dt * (q1 - q0)) / exchanged, 1e-9,
                       "E(N) - E(0) - dt (Q_N - Q_0) / 2, relative to the heat exchanged")
         else:
-            text_np = run("conservation", args.np)
+            text_np = run(args.np)
             line_np = re.findall(r"^conservation: (.*)$", text_np, re.M)
             w = [float(x) for x in re.findall(r"-?[0-9.]+(?:[eE][+-]?[0-9]+)?", line_np[-1])]
             below(abs(w[1] - g1) / abs(g0), 1e-10, f"grain momentum on {args.np} ranks against 1")
@@ -109,17 +98,17 @@ def main():
                 below(abs(w[7] - e1) / abs(q0 * dt * args.steps), 1e-9, f"energy on {args.np} ranks against 1")
                 below(abs(w[9] - q1) / abs(q0), 1e-9, f"heat into the grains on {args.np} ranks against 1")
     elif args.check == "settle":
-        v, line = numbers(run("settle", heat="none"), "settle", ["velocity", "slip", "weight", "porosity"])
-        exact = terminal_slip(args.drag, v["weight"], v["porosity"])
+        v, line = numbers(example("settle"), "settle", ["velocity", "slip", "weight", "porosity"])
+        exact = terminal_slip(args.drag, v["weight"], D, RHO_F, MU, v["porosity"])
         print(f"settle ({args.drag}): slip {v['slip']:.6e}, drag law's terminal slip {exact:.6e}, grain "
               f"velocity {v['velocity']:.6e}, porosity {v['porosity']:.6f}")
         below(abs(v["slip"] - exact) / exact, 5e-3, "terminal slip against the drag law's")
         that(v["velocity"] < 0.0, "the grain sinks", f"{v['velocity']:.6e}")
     else:
-        v, line = numbers(run("heat"), "heat", ["temperature", "time"])
-        mass = RHO_P * math.pi * D ** 3 / 6.0
-        tau = mass * CP_GRAIN / (2.0 * K_F * math.pi * D)
-        exact = T_FLUID + (T_HOT - T_FLUID) * math.exp(-v["time"] / tau)
+        v, line = numbers(example("heat"), "heat", ["temperature", "time"])
+        # at rest Re = 0: Nu = 2
+        exact, tau = lumped_temperature(v["time"], T_HOT, T_FLUID, D, RHO_P, CP_GRAIN, K_F,
+                                        nusselt(args.heat, 0.0, 1.0, 1.0))
         print(f"heat: grain T {v['temperature']:.8f} at t = {v['time']:.4g} s, lumped {exact:.8f} (tau {tau:.5g} s)")
         below(abs(v["temperature"] - exact) / (T_HOT - exact), 2e-3,
               "cooling against the lumped capacitance, relative to the change")

@@ -16,7 +16,7 @@ foreach(drag stokes difelice)
   sphthermal_python_test(grains.conservation.${drag} ${grains_test} LAMMPS
     ARGS --check conservation --drag ${drag} --heat ${grains_heat} LABELS unit)
   sphthermal_python_test(grains.settle.${drag} ${grains_test} LAMMPS
-    ARGS --check settle --drag ${drag} --steps 300 LABELS validation)
+    ARGS --check settle --drag ${drag} LABELS validation)
 endforeach()
 if(LAMMPS_RELEASE STREQUAL "4Feb2025")
   sphthermal_python_test(grains.heat.ranz-marshall ${grains_test} LAMMPS
