@@ -32,6 +32,7 @@
 #include "sph_support.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -217,13 +218,18 @@ void PairSPHHarmonicVisc::init_style()
                  "moves them with the body",
                  stray.tag, rigid->id, rigid->style);
   }
-  // every particle of this style's types (in a hybrid, others may be
-  // grains of fix sph/grains) that is not such a wall needs its fluid's properties
+  // every particle of a type with a pair of this style (in a hybrid, the
+  // others may be grains of fix sph/grains) that is not such a wall needs
+  // its fluid's properties
+  std::vector<int> has_pair(atom->ntypes + 1, 0);
+  for (int t = 1; t <= atom->ntypes; t++)
+    for (int s = 1; s <= atom->ntypes; s++)
+      if (setflag[std::min(t, s)][std::max(t, s)]) has_pair[t] = 1;
   SPHCheck::FirstBad bad;    // type, 1 no eos / 2 no viscosity
   for (int i = 0; i < atom->nlocal; i++) {
     if (atom->mask[i] & wall_groupbit) continue;
     const int t = atom->type[i];
-    if (!setflag[t][t]) continue;
+    if (!has_pair[t]) continue;
     const int missing = !materials->eos(t) ? 1 : (!materials->viscosity(t) ? 2 : 0);
     if (missing) bad.consider(atom->tag[i], t, missing);
   }

@@ -53,13 +53,15 @@ def main():
     parser.add_argument("--drag", default="difelice")
     parser.add_argument("--heat", default="ranz-marshall")
     parser.add_argument("--steps", type=int, default=200)
+    parser.add_argument("--conduction", type=int, default=0, help="1: the fluid also conducts")
     args = parser.parse_args()
     workdir = tempfile.mkdtemp(prefix="sph-grains-")
     plugin = os.path.abspath(args.plugin)
 
     def run(np_=1):
         return run_input(args.lmp, INPUT, {"plugin": plugin, "drag": args.drag, "heat": args.heat,
-                                           "heat_on": int(args.heat != "none"), "steps": args.steps}, workdir,
+                                           "heat_on": int(args.heat != "none"), "steps": args.steps,
+                                           "conduction": args.conduction}, workdir,
                          np_, args.mpirun)
 
     def example(mode):

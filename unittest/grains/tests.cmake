@@ -12,6 +12,9 @@ if(LAMMPS_RELEASE STREQUAL "4Feb2025")
 else()
   set(grains_heat none)
 endif()
+# with the fluid's conduction (pair sph/cleary/heat) in the hybrid
+sphthermal_python_test(grains.conservation.conduction ${grains_test} LAMMPS
+  ARGS --check conservation --heat ${grains_heat} --conduction 1 LABELS unit)
 foreach(drag stokes difelice)
   sphthermal_python_test(grains.conservation.${drag} ${grains_test} LAMMPS
     ARGS --check conservation --drag ${drag} --heat ${grains_heat} LABELS unit)
