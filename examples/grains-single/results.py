@@ -1,7 +1,11 @@
 """The table of examples/grains-single (run.sh): each settling grain's slip
 and velocity against the drag law's terminal slip, each held grain's
 temperature against the lumped capacitance solution, from the lines the
-runs printed. usage: results.py settle.txt heat.txt > results.md"""
+runs printed, and the mean force and slip of a grain in a column of liquid
+at rest under gravity against its weight and the drag law.
+usage: results.py settle.txt heat.txt column.txt > results.md"""
+
+import math
 
 import re
 import sys
@@ -43,6 +47,23 @@ def main():
         print(f"| {1e3 * v['spacing']:g} | {law} | {v['time']:g} | {v['temperature']:.6f} | {exact:.6f} | "
               f"{100.0 * (v['temperature'] - exact) / (T0 - exact):+.3g} |")
 
+    print()
+    print("In a column of liquid at rest under gravity (in.column, spacing 1 mm), the means over")
+    print("0.1 to 0.2 s: the force of the liquid on the grain (drag and -V grad P) against its")
+    print("weight, its slip against the drag law's terminal slip under its buoyant weight.")
+    print()
+    print("| grain density (kg/m^3) | force / weight - 1 (%) | slip (m/s) | drag law (m/s) | "
+          "slip error (% of the bead's drag-law slip) |")
+    print("|---|---|---|---|---|")
+    volume = math.pi * D ** 3 / 6.0
+    lines = [fields(line) for line in open(sys.argv[3])]
+    bead = terminal_slip("difelice", (RHO_P - RHO_F) * volume * 9.81, D, RHO_F, lines[0]["mu"],
+                         lines[0]["porosity"])
+    for v in lines:
+        rho_p = v["grain"]
+        exact = bead if rho_p > RHO_F else 0.0
+        print(f"| {rho_p:g} | {100.0 * (v['force'] / (rho_p * volume * 9.81) - 1.0):+.3g} | {v['slip']:.4g} | "
+              f"{exact:.4g} | {100.0 * (v['slip'] - exact) / bead:+.3g} |")
 
 if __name__ == "__main__":
     main()

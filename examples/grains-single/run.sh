@@ -3,10 +3,11 @@
 # values of its exchange laws (tools/grain_exact.py): the terminal slip of
 # a settling grain (Di Felice's drag at Re = 0.02, 1.6 and 55) and the
 # cooling of a held hot grain (lumped capacitance, Ranz-Marshall and Gunn),
-# at fluid spacings of 1 and 0.5 mm (2.5 and 1.25 grain diameters).
-#   ./run.sh          the whole table (about 3 minutes on one core)
-# The CI runs the 1 mm settling and cooling (tests grains.settle.*,
-# grains.heat.*, unittest/grains/test_grains.py).
+# at fluid spacings of 1 and 0.5 mm (2.5 and 1.25 grain diameters); the
+# buoyancy in a column of liquid at rest under gravity (in.column).
+#   ./run.sh          the whole table (about 40 s on one core)
+# The CI runs the 1 mm settling and cooling and the column (tests
+# grains.settle.*, grains.heat.*, grains.column: unittest/grains/test_grains.py).
 # Environment: LMP, PLUGIN, NP (MPI ranks), OUT (default ./out).
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
@@ -36,5 +37,11 @@ for resolution in "0.001 8" "0.0005 16"; do
       -var dump 1 -var label "heat-$spacing-$law" >> heat.txt
   done
 done
-"$PYTHON" "$here/results.py" settle.txt heat.txt > "$here/results.md"
+# buoyancy: a grain of the liquid's density and a glass bead in a column at rest
+: > column.txt
+for rho in 1000.0 2500.0; do
+  $run "$LMP" -in "$here/in.column" -var plugin "$PLUGIN" -var rho_grain $rho -log "log.column-$rho" > /dev/null
+  grep "^column:" "log.column-$rho" >> column.txt
+done
+"$PYTHON" "$here/results.py" settle.txt heat.txt column.txt > "$here/results.md"
 cat "$here/results.md"

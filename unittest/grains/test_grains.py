@@ -9,6 +9,10 @@
   heat: a hot grain held in still fluid cools as the lumped capacitance
       solution T_f + (T_0 - T_f) exp(-t / tau), tau = m cp / (Nu k pi d),
       Nu = 2 at rest
+  column: in a column of liquid at rest under gravity (examples/grains-single/
+      in.column), the mean force of the fluid on a grain of the liquid's
+      density is its weight (the buoyancy of -V grad P) and its slip is
+      nil; a glass bead's mean slip is the drag law's terminal slip
   mpi: the conservation scene on --np ranks gives the single rank's state
       to round-off
 usage: test_grains.py --lmp LMP --plugin PLUGIN --check NAME [--drag LAW]
@@ -23,6 +27,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 INPUT = os.path.join(HERE, "in.grains")
 EXAMPLE = os.path.join(HERE, "..", "..", "examples", "grains-single", "in.single")
+COLUMN = os.path.join(HERE, "..", "..", "examples", "grains-single", "in.column")
 from checks import below, finish, that
 from grain_exact import lumped_temperature, nusselt, terminal_slip
 from lammps_checks import run_input
@@ -49,7 +54,7 @@ def numbers(text, label, names):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     lammps_arguments(parser)
-    parser.add_argument("--check", required=True, choices=["conservation", "settle", "heat", "mpi"])
+    parser.add_argument("--check", required=True, choices=["conservation", "settle", "heat", "column", "mpi"])
     parser.add_argument("--drag", default="difelice")
     parser.add_argument("--heat", default="ranz-marshall")
     parser.add_argument("--steps", type=int, default=200)
@@ -106,6 +111,24 @@ def main():
               f"velocity {v['velocity']:.6e}, porosity {v['porosity']:.6f}")
         below(abs(v["slip"] - exact) / exact, 5e-3, "terminal slip against the drag law's")
         that(v["velocity"] < 0.0, "the grain sinks", f"{v['velocity']:.6e}")
+    elif args.check == "column":
+        for rho_p in (RHO_F, RHO_P):
+            text = run_input(args.lmp, COLUMN, {"plugin": plugin, "rho_grain": rho_p, "drag": args.drag}, workdir)
+            v, line = numbers(text, "column", ["velocity", "slip", "force", "porosity"])
+            weight = rho_p * math.pi * D ** 3 / 6.0 * G
+            terminal = terminal_slip(args.drag, (rho_p - RHO_F) * math.pi * D ** 3 / 6.0 * G, D, RHO_F, MU,
+                                     v["porosity"]) if rho_p > RHO_F else 0.0
+            print(f"column ({args.drag}, grain {rho_p:g} kg/m^3): mean force {v['force']:.6e} against the weight "
+                  f"{weight:.6e}; mean slip {v['slip']:.6e}, drag law {terminal:.6e}; grain velocity "
+                  f"{v['velocity']:.6e}")
+            below(abs(v["force"] / weight - 1.0), 5e-3, f"the fluid carries the grain of {rho_p:g} kg/m^3 (mean force "
+                  "against its weight)")
+            if rho_p > RHO_F:
+                below(abs(v["slip"] / terminal - 1.0), 1e-2, "the bead's mean slip against the drag law's")
+            else:
+                heavy = terminal_slip(args.drag, (RHO_P - RHO_F) * math.pi * D ** 3 / 6.0 * G, D, RHO_F, MU,
+                                      v["porosity"])
+                below(abs(v["slip"]) / heavy, 1e-2, "the neutral grain's mean slip, relative to the bead's")
     else:
         v, line = numbers(example("heat"), "heat", ["temperature", "time"])
         # at rest Re = 0: Nu = 2

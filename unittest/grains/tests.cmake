@@ -21,6 +21,8 @@ foreach(drag stokes difelice)
   sphthermal_python_test(grains.settle.${drag} ${grains_test} LAMMPS
     ARGS --check settle --drag ${drag} LABELS validation)
 endforeach()
+# buoyancy: in a column of liquid at rest under gravity
+sphthermal_python_test(grains.column ${grains_test} LAMMPS ARGS --check column LABELS validation)
 if(LAMMPS_RELEASE STREQUAL "4Feb2025")
   sphthermal_python_test(grains.heat.ranz-marshall ${grains_test} LAMMPS
     ARGS --check heat --heat ranz-marshall LABELS validation)
