@@ -169,7 +169,7 @@ void FixSPHGrains::init()
                      : !fields                   ? "the atoms have no temperature"
                                                  : "no fix heat/flow integrates them all");
   }
-  SPHCompat::request_full_list_within(neighbor, this, instance_me, settings.cutoff);
+  SPHCompat::request_full_list(neighbor, this, instance_me, settings.cutoff);
 }
 
 void FixSPHGrains::init_list(int /*id*/, NeighList *ptr)

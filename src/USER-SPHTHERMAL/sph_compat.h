@@ -56,36 +56,24 @@ namespace SPHCompat {
   // 'instance' is the style's instance_me (protected, so passed by the
   // caller), which only 29Sep2021 needs
 
-  // a full list, built every step, for a fix
-  inline void request_full_list(Neighbor *neighbor, Fix *fix, int instance)
+  // a full list, built every step, for a fix; with a cutoff > 0, of every
+  // pair closer than it (whatever the pair styles' cutoffs of the types)
+  inline void request_full_list(Neighbor *neighbor, Fix *fix, int instance, double cutoff = 0.0)
   {
 #if SPHTHERMAL_LAMMPS_NEW_API
     (void) instance;
-    neighbor->add_request(fix, NeighConst::REQ_FULL);
+    auto *request = neighbor->add_request(fix, NeighConst::REQ_FULL);
+    if (cutoff > 0.0) request->set_cutoff(cutoff);
 #else
     const int irequest = neighbor->request(fix, instance);
     neighbor->requests[irequest]->pair = 0;
     neighbor->requests[irequest]->fix = 1;
     neighbor->requests[irequest]->half = 0;
     neighbor->requests[irequest]->full = 1;
-#endif
-  }
-
-  // a full list of every pair closer than 'cutoff' (whatever the pair
-  // styles' cutoffs of the types), built every step, for a fix
-  inline void request_full_list_within(Neighbor *neighbor, Fix *fix, int instance, double cutoff)
-  {
-#if SPHTHERMAL_LAMMPS_NEW_API
-    (void) instance;
-    neighbor->add_request(fix, NeighConst::REQ_FULL)->set_cutoff(cutoff);
-#else
-    const int irequest = neighbor->request(fix, instance);
-    neighbor->requests[irequest]->pair = 0;
-    neighbor->requests[irequest]->fix = 1;
-    neighbor->requests[irequest]->half = 0;
-    neighbor->requests[irequest]->full = 1;
-    neighbor->requests[irequest]->cut = 1;
-    neighbor->requests[irequest]->cutoff = cutoff;
+    if (cutoff > 0.0) {
+      neighbor->requests[irequest]->cut = 1;
+      neighbor->requests[irequest]->cutoff = cutoff;
+    }
 #endif
   }
 

@@ -15,6 +15,10 @@
       nil; a glass bead's mean slip is the drag law's terminal slip
   mpi: the conservation scene on --np ranks gives the single rank's state
       to round-off
+  restart: the conservation scene in two halves, the second from a restart
+      file on --np ranks, ends as the same two halves run in one go (a run's
+      setup evaluates the forces with the whole step's velocities, where a
+      step evaluates them with the half step's: the drag sees both alike)
 usage: test_grains.py --lmp LMP --plugin PLUGIN --check NAME [--drag LAW]
        [--heat LAW] [--np N --mpirun MPIRUN]"""
 
@@ -51,10 +55,21 @@ def numbers(text, label, names):
     return values, found[-1]
 
 
+def conservation_line(text):
+    """The numbers of in.grains's last line: grain momentum at the start and
+    end, total x and z momentum at the start and end, energy, heat into the
+    grains, timestep, porosity, grains outside the fluid."""
+    line = re.findall(r"^conservation: (.*)$", text, re.M)
+    that(bool(line), "conservation: printed")
+    if not line:
+        finish()
+    return [float(x) for x in re.findall(r"-?[0-9.]+(?:[eE][+-]?[0-9]+)?", line[-1])]
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     lammps_arguments(parser)
-    parser.add_argument("--check", required=True, choices=["conservation", "settle", "heat", "column", "mpi"])
+    parser.add_argument("--check", required=True, choices=["conservation", "settle", "heat", "column", "mpi", "restart"])
     parser.add_argument("--drag", default="difelice")
     parser.add_argument("--heat", default="ranz-marshall")
     parser.add_argument("--steps", type=int, default=200)
@@ -63,16 +78,31 @@ def main():
     workdir = tempfile.mkdtemp(prefix="sph-grains-")
     plugin = os.path.abspath(args.plugin)
 
-    def run(np_=1):
+    def run(np_=1, steps=args.steps, **more):
         return run_input(args.lmp, INPUT, {"plugin": plugin, "drag": args.drag, "heat": args.heat,
-                                           "heat_on": int(args.heat != "none"), "steps": args.steps,
-                                           "conduction": args.conduction}, workdir,
+                                           "heat_on": int(args.heat != "none"), "steps": steps,
+                                           "conduction": args.conduction, **more}, workdir,
                          np_, args.mpirun)
 
     def example(mode):
         return run_input(args.lmp, EXAMPLE, {"plugin": plugin, "mode": mode, "drag": args.drag,
                                              "heat": args.heat}, workdir)
 
+    if args.check == "restart":
+        whole = conservation_line(run(split=1))
+        run(steps=args.steps // 2, write=1)
+        halves = conservation_line(run(args.np, steps=args.steps - args.steps // 2, **{"continue": 1}))
+        g0, q0 = whole[0], whole[8]
+        below(abs(halves[1] - whole[1]) / abs(g0), 1e-10,
+              f"grain momentum after a restart on {args.np} ranks against one go")
+        below(abs(halves[5] - whole[5]) / abs(whole[5]), 1e-12,
+              f"total z momentum after a restart on {args.np} ranks against one go")
+        if args.heat != "none":
+            below(abs(halves[7] - whole[7]) / abs(q0 * whole[10] * args.steps), 1e-9,
+                  f"energy after a restart on {args.np} ranks against one go")
+            below(abs(halves[9] - whole[9]) / abs(q0), 1e-9,
+                  f"heat into the grains after a restart on {args.np} ranks against one go")
+        finish()
     if args.check in ("conservation", "mpi"):
         text = run()
         line = re.findall(r"^conservation: (.*)$", text, re.M)

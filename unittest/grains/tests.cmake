@@ -31,4 +31,7 @@ foreach(np 2 4)
   sphthermal_python_test(grains.mpi.conservation_np${np} ${grains_test} LAMMPS
     ARGS --check mpi --heat ${grains_heat} --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
 endforeach()
+# no state of its own: a restart (on 2 ranks) continues as in one go
+sphthermal_python_test(grains.restart ${grains_test} LAMMPS
+  ARGS --check restart --heat ${grains_heat} --np 2 --mpirun ${MPIRUN} LABELS unit PROCESSORS 2)
 add_error_cases(grains ${CMAKE_CURRENT_LIST_DIR}/errors.in)
