@@ -333,7 +333,7 @@ void FixSPHGrains::exchange()
     }
   }
 
-  comm->reverse_comm(this);
+  SPHCompat::reverse_comm(comm, this);
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & fluid_groupbit)) continue;
     for (int k = 0; k < 3; k++) f[i][k] += reaction[i][k];
