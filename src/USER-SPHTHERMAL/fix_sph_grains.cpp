@@ -276,11 +276,12 @@ void FixSPHGrains::exchange()
     }
     const double porosity = 1.0 - solid;
     if (!(porosity > 0.0))
-      error->one(FLERR,
-                 "{} {}: the grains fill {} of the kernel's volume around grain atom {}: the "
-                 "porosity there is not positive; the kernel's support ({}) must be several "
-                 "grain diameters ({})",
-                 cmd, id, solid, tag[i], sqrt(cutsq), d);
+      SPHCheck::stop(
+          lmp, FLERR,
+          fmt::format("{} {}: the grains fill {} of the kernel's volume around grain atom {}: the "
+                      "porosity there is not positive; the kernel's support ({}) must be several "
+                      "grain diameters ({})",
+                      cmd, id, solid, tag[i], sqrt(cutsq), d));
     local[5] = std::min(local[5], porosity);
     for (double &value : u) value /= weight;
     fluid_t /= weight;
@@ -300,15 +301,19 @@ void FixSPHGrains::exchange()
                            fluid_cp / weight, speed) *
           (fluid_t - grain_temperature[i]);
     if (!std::isfinite(force[0] + force[1] + force[2] + q))
-      error->one(FLERR,
-                 "{} {}: grain atom {} gets a non-finite exchange with the fluid (force {} {} "
-                 "{}, heat {}; fluid at the grain: T {}, rho {}, viscosity {})",
-                 cmd, id, tag[i], force[0], force[1], force[2], q, fluid_t, fluid_rho, fluid_mu);
+      SPHCheck::stop(
+          lmp, FLERR,
+          fmt::format("{} {}: grain atom {} gets a non-finite exchange with the fluid (force {} {} "
+                      "{}, heat {}; fluid at the grain: T {}, rho {}, viscosity {})",
+                      cmd, id, tag[i], force[0], force[1], force[2], q, fluid_t, fluid_rho,
+                      fluid_mu));
     if (dt * beta > rmass[i])
-      error->one(FLERR,
-                 "{} {}: the drag relaxes the slip of grain atom {} in m / beta = {}, less than "
-                 "the timestep {}: the explicit coupling is unstable; take a smaller timestep",
-                 cmd, id, tag[i], rmass[i] / beta, dt);
+      SPHCheck::stop(
+          lmp, FLERR,
+          fmt::format(
+              "{} {}: the drag relaxes the slip of grain atom {} in m / beta = {}, less than "
+              "the timestep {}: the explicit coupling is unstable; take a smaller timestep",
+              cmd, id, tag[i], rmass[i] / beta, dt));
     for (int k = 0; k < 3; k++) {
       f[i][k] += force[k];
       local[k] += force[k];
