@@ -38,6 +38,11 @@ using namespace FixConst;
 
 static const char cmd[] = "fix sph/grains";
 
+static double sphere_volume(double radius)
+{
+  return 4.0 / 3.0 * M_PI * radius * radius * radius;
+}
+
 /* ----------------------------------------------------------------------
    fix ID grains sph/grains fluid <group> [drag <law>] [heat <law>]
 ------------------------------------------------------------------------- */
@@ -234,13 +239,14 @@ void FixSPHGrains::exchange()
     const int i = ilist[ii];
     if (!(mask[i] & groupbit)) continue;
     const double d = 2.0 * radius[i];
-    const double grain_volume = M_PI * d * d * d / 6.0;
+    const double grain_volume = sphere_volume(radius[i]);
     // Shepard sums of the fluid (weight V_j W_ij) and the grains' volume fraction
     double weight = 0.0, u[3] = {0.0, 0.0, 0.0}, fluid_t = 0.0, fluid_rho = 0.0;
     double fluid_mu = 0.0, fluid_k = 0.0, fluid_cp = 0.0;
     double solid = grain_volume * w0;
     sphi_point pressure;
     sphi_begin(&pressure, 3);
+    shares.clear();
     const int *jlist = firstneigh[i];
     for (int jj = 0; jj < numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
@@ -250,13 +256,13 @@ void FixSPHGrains::exchange()
       const double r = sqrt(rsq);
       const double w = sphk_w(&kernel, r);
       if (mask[j] & groupbit) {
-        const double dj = 2.0 * radius[j];
-        solid += M_PI * dj * dj * dj / 6.0 * w;
+        solid += sphere_volume(radius[j]) * w;
         continue;
       }
       if (!(mask[j] & fluid_groupbit)) continue;
       const double volume = particles.volume(j);
       const double vw = volume * w;
+      shares.emplace_back(j, vw);
       const double t = particles.temperature(j);
       weight += vw;
       for (int k = 0; k < 3; k++) u[k] += vw * v[j][k];
@@ -326,15 +332,10 @@ void FixSPHGrains::exchange()
 
     // the opposite, shared in proportion to V_j W_ij: the shares sum to one
     const double inv_weight = 1.0 / weight;
-    for (int jj = 0; jj < numneigh[i]; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      if (!(mask[j] & fluid_groupbit)) continue;
-      const double dx[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-      const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
-      if (rsq >= cutsq) continue;
-      const double share = particles.volume(j) * sphk_w(&kernel, sqrt(rsq)) * inv_weight;
-      for (int k = 0; k < 3; k++) reaction[j][k] -= share * force[k];
-      reaction[j][3] -= share * q;
+    for (const auto &share_of : shares) {
+      const double share = share_of.second * inv_weight;
+      for (int k = 0; k < 3; k++) reaction[share_of.first][k] -= share * force[k];
+      reaction[share_of.first][3] -= share * q;
     }
   }
 

@@ -16,6 +16,8 @@ FixStyle(sph/grains,FixSPHGrains);
 #include "sph_kernels.h"
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -58,6 +60,8 @@ class FixSPHGrains : public Fix {
   // temperature at it, this step's (zero for other atoms and for a grain
   // with no fluid around)
   double **at_grain;
+  // the fluid neighbours of the grain in hand and their weights V_j W_ij
+  std::vector<std::pair<int, double>> shares;
   // this step's force of the fluid on the grains (3), the heat into them,
   // the grains with no fluid within the kernel's support, the smallest
   // porosity at a grain: this rank's, and all ranks' when asked
