@@ -7,7 +7,18 @@ the laws as published (not from the package's sph_grain_laws.h):
   lumped_temperature(t, T0, Tf, d, rho_p, cp, k, nu_number): a grain of
       uniform temperature (lumped capacitance) in fluid held at Tf,
       T = Tf + (T0 - Tf) exp(-t / tau), tau = m cp / (Nu k pi d)
-  nusselt(law, re, pr, eps): Ranz and Marshall 1952, Gunn 1978"""
+  nusselt(law, re, pr, eps): Ranz and Marshall 1952, Gunn 1978
+  ergun_gradient(U, d, eps, rho, mu): the pressure drop per length of a
+      fixed bed at superficial velocity U (Ergun, Chem. Eng. Prog. 48 (1952)
+      89-94), dP/L = 150 (1-eps)^2 mu U / (eps^3 d^2) + 1.75 (1-eps) rho U^2
+      / (eps^3 d); ergun_superficial(gradient, ...) its inverse (the positive
+      root of the quadratic)
+  bed_superficial(drag, gradient, d, eps, rho, mu): the superficial velocity
+      U through a fixed bed of grains of diameter d at porosity eps whose
+      drag law (difelice; gidaspow: Ergun's below eps = 0.8, Wen and Yu's
+      above, Gidaspow 1994) balances the pressure gradient: n F(U / eps) =
+      eps gradient, n = (1 - eps) / (pi d^3 / 6) grains per volume
+      (bisection on a log scale to 1e-15)"""
 
 import math
 
@@ -19,19 +30,55 @@ def difelice_force(w, d, rho, mu, eps):
     return 0.5 * cd * rho * math.pi * d * d / 4.0 * eps * eps * w * w * eps ** (-chi)
 
 
+def gidaspow_force(w, d, rho, mu, eps):
+    if eps < 0.8:
+        beta_v = 150.0 * (1.0 - eps) ** 2 * mu / (eps * d * d) + 1.75 * (1.0 - eps) * rho * w / d
+    else:
+        re = eps * rho * d * w / mu
+        cd = 24.0 / re * (1.0 + 0.15 * re ** 0.687) if re < 1000.0 else 0.44
+        beta_v = 0.75 * cd * eps * (1.0 - eps) * rho * w * eps ** (-2.65) / d
+    return beta_v * w * (math.pi * d ** 3 / 6.0) / (1.0 - eps)
+
+
+def bisect(force, target):
+    lo, hi = 1e-15, 1e3
+    for _ in range(300):
+        mid = math.sqrt(lo * hi)
+        if force(mid) < target:
+            lo = mid
+        else:
+            hi = mid
+    return math.sqrt(lo * hi)
+
+
+def bed_superficial(drag, gradient, d, eps, rho, mu):
+    laws = {"difelice": difelice_force, "gidaspow": gidaspow_force}
+    if drag not in laws:
+        raise ValueError(f"unknown drag law {drag}")
+    per_volume = (1.0 - eps) / (math.pi * d ** 3 / 6.0)
+    slip = bisect(lambda w: per_volume * laws[drag](w, d, rho, mu, eps), eps * gradient)
+    return eps * slip
+
+
 def terminal_slip(drag, weight, d, rho, mu, eps=1.0):
     if drag == "stokes":
         return weight / (3.0 * math.pi * mu * d)
     if drag != "difelice":
         raise ValueError(f"unknown drag law {drag}")
-    lo, hi = 1e-15, 1e3
-    for _ in range(300):
-        mid = math.sqrt(lo * hi)
-        if difelice_force(mid, d, rho, mu, eps) < weight:
-            lo = mid
-        else:
-            hi = mid
-    return math.sqrt(lo * hi)
+    return bisect(lambda w: difelice_force(w, d, rho, mu, eps), weight)
+
+
+def ergun_gradient(U, d, eps, rho, mu):
+    e3 = eps ** 3
+    return (150.0 * (1.0 - eps) ** 2 * mu * U / (e3 * d * d)
+            + 1.75 * (1.0 - eps) * rho * U * U / (e3 * d))
+
+
+def ergun_superficial(gradient, d, eps, rho, mu):
+    e3 = eps ** 3
+    a = 1.75 * (1.0 - eps) * rho / (e3 * d)
+    b = 150.0 * (1.0 - eps) ** 2 * mu / (e3 * d * d)
+    return 2.0 * gradient / (b + math.sqrt(b * b + 4.0 * a * gradient))
 
 
 def nusselt(law, re, pr, eps=1.0):

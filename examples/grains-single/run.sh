@@ -7,7 +7,7 @@
 # buoyancy in a column of liquid at rest under gravity (in.column).
 #   ./run.sh          the whole table (about 40 s on one core)
 # The CI runs the 1 mm settling and cooling and the column (tests
-# grains.settle.*, grains.heat.*, grains.column: unittest/grains/test_grains.py).
+# granular.settle.*, granular.heat.*, granular.column: unittest/grains/test_grains.py).
 # Environment: LMP, PLUGIN, NP (MPI ranks), OUT (default ./out).
 set -e
 here=$(cd "$(dirname "$0")" && pwd)

@@ -17,6 +17,7 @@
 #include "fix_sph_materials.h"
 #include "group.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "pair_sph_harmonic_visc.h"
@@ -44,13 +45,17 @@ static double sphere_volume(double radius)
 }
 
 /* ----------------------------------------------------------------------
-   fix ID grains sph/grains fluid <group> [drag <law>] [heat <law>]
+   fix ID grains sph/grains fluid <group> [drag <law>] [heat <law>] [fill yes|no]
 ------------------------------------------------------------------------- */
+
+// the restart's layout: whether the fluid was filled into the pores
+static constexpr int RESTART_VERSION = 1;
 
 FixSPHGrains::FixSPHGrains(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), fluid_groupbit(0), drag_kind(SPHG_DRAG_DIFELICE),
     heat_kind(SPHG_HEAT_RANZ_MARSHALL), list(nullptr), materials(nullptr), kernel(), cutsq(0.0),
-    reaction(nullptr), nmax(0), at_grain(nullptr), totals_step(-1)
+    reaction(nullptr), nmax(0), at_grain(nullptr), totals_step(-1), fill(0), filled(0),
+    porosity(nullptr), reverse_mode(REVERSE_REACTION)
 {
   for (int iarg = 3; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
@@ -63,7 +68,9 @@ FixSPHGrains::FixSPHGrains(LAMMPS *lmp, int narg, char **arg) :
     } else if (strcmp(arg[iarg], "drag") == 0) {
       drag_kind = sphg_drag_lookup(value);
       if (drag_kind < 0)
-        error->all(FLERR, "Illegal {} command: unknown drag law {} (expected stokes or difelice)",
+        error->all(FLERR,
+                   "Illegal {} command: unknown drag law {} (expected stokes, difelice or "
+                   "gidaspow)",
                    cmd, value);
     } else if (strcmp(arg[iarg], "heat") == 0) {
       heat_kind = sphg_heat_lookup(value);
@@ -72,9 +79,12 @@ FixSPHGrains::FixSPHGrains(LAMMPS *lmp, int narg, char **arg) :
                    "Illegal {} command: unknown heat law {} (expected none, ranz-marshall or "
                    "gunn)",
                    cmd, value);
+    } else if (strcmp(arg[iarg], "fill") == 0) {
+      fill = SPHCompat::yes_no(error, FLERR, cmd, "fill", value);
     } else
-      error->all(FLERR, "Illegal {} command: unknown keyword {} (expected fluid, drag or heat)",
-                 cmd, arg[iarg]);
+      error->all(FLERR,
+                 "Illegal {} command: unknown keyword {} (expected fluid, drag, heat or fill)", cmd,
+                 arg[iarg]);
   }
   if (fluid_name.empty())
     error->all(FLERR, "Illegal {} command: keyword fluid (the fluid's group) is required", cmd);
@@ -88,19 +98,48 @@ FixSPHGrains::FixSPHGrains(LAMMPS *lmp, int narg, char **arg) :
   size_peratom_cols = 5;
   peratom_freq = 1;
   comm_reverse = 4;
+  comm_forward = 1;
+  restart_global = 1;
   for (double &v : local) v = 0.0;
   for (double &v : totals) v = 0.0;
 }
 
 FixSPHGrains::~FixSPHGrains()
 {
+  if (porosity_fix_made && modify->nfix && modify->find_fix(porosity_fix_id().c_str()) >= 0)
+    modify->delete_fix(porosity_fix_id().c_str());
   memory->destroy(reaction);
   memory->destroy(at_grain);
 }
 
 int FixSPHGrains::setmask()
 {
-  return POST_FORCE;
+  return PRE_FORCE | POST_FORCE;
+}
+
+/* ----------------------------------------------------------------------
+   the fluid's porosity, a per-atom vector of an internal fix property/atom
+   that grows it with the atoms and gives the ghosts room (made here: a fix
+   cannot be added during init)
+------------------------------------------------------------------------- */
+
+std::string FixSPHGrains::porosity_fix_id() const
+{
+  return std::string(id) + "_porosity";
+}
+
+void FixSPHGrains::post_constructor()
+{
+  if (SPHParticles::porosity_of(atom))
+    error->all(FLERR,
+               "{} {}: another fix sph/grains holds the fluid's porosity ({}): one fix "
+               "sph/grains per scene, its group all the grains",
+               cmd, id, SPHParticles::POROSITY_VECTOR);
+  modify->add_fix(fmt::format("{} all property/atom d_{} ghost yes", porosity_fix_id(),
+                              SPHParticles::POROSITY_VECTOR));
+  porosity_fix_made = 1;
+  porosity = SPHParticles::porosity_of(atom);
+  for (int i = 0; i < atom->nlocal + atom->nghost; i++) porosity[i] = 1.0;
 }
 
 void FixSPHGrains::check_atom_style() const
@@ -182,14 +221,122 @@ void FixSPHGrains::init_list(int /*id*/, NeighList *ptr)
   list = ptr;
 }
 
+void FixSPHGrains::setup_pre_force(int /*vflag*/)
+{
+  update_porosity();
+  if (fill && !filled) fill_pores();
+}
+
+void FixSPHGrains::pre_force(int /*vflag*/)
+{
+  update_porosity();
+}
+
 void FixSPHGrains::setup(int /*vflag*/)
 {
   exchange();
 }
 
+/* ----------------------------------------------------------------------
+   each fluid atom's porosity eps = 1 - sum_k V_k W_jk over the grains k
+   (as at a grain, after Robinson et al. 2014), owned and ghost; 1 for
+   every other atom
+------------------------------------------------------------------------- */
+
+void FixSPHGrains::update_porosity()
+{
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  refresh_arrays();
+  for (int i = 0; i < nall; i++) reaction[i][0] = 0.0;
+  double **x = atom->x;
+  const double *radius = atom->radius;
+  const int *mask = atom->mask;
+  const int inum = list->inum;
+  const int *ilist = list->ilist, *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    if (!(mask[i] & groupbit)) continue;
+    const double grain_volume = sphere_volume(radius[i]);
+    const int *jlist = firstneigh[i];
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (!(mask[j] & fluid_groupbit)) continue;
+      const double dx[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+      const double rsq = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
+      if (rsq < cutsq) reaction[j][0] += grain_volume * sphk_w(&kernel, sqrt(rsq));
+    }
+  }
+  reverse_mode = REVERSE_POROSITY;
+  SPHCompat::reverse_comm(comm, this);
+  reverse_mode = REVERSE_REACTION;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & fluid_groupbit)) {
+      porosity[i] = 1.0;
+      continue;
+    }
+    porosity[i] = 1.0 - reaction[i][0];
+    if (!(porosity[i] > 0.0))
+      SPHCheck::stop(
+          lmp, FLERR,
+          fmt::format("{} {}: the grains fill {} of the kernel's volume around fluid atom {}: "
+                      "the porosity there is not positive; the kernel's support ({}) must be "
+                      "several grain diameters and the grains must not overlap",
+                      cmd, id, reaction[i][0], atom->tag[i], sqrt(cutsq)));
+  }
+  SPHCompat::forward_comm(comm, this);
+}
+
+/* ----------------------------------------------------------------------
+   'fill yes', once (a restart remembers it): the fluid around grains placed
+   in it takes the pores' share of its mass, rho and m times eps, so that
+   the fluid's own density rho / eps and its particles' volumes m / rho are
+   those the fluid had without the grains (owned and ghost alike)
+------------------------------------------------------------------------- */
+
+void FixSPHGrains::fill_pores()
+{
+  double *rho = atom->rho, *rmass = atom->rmass;
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal + atom->nghost; i++) {
+    if (!(mask[i] & fluid_groupbit)) continue;
+    rho[i] *= porosity[i];
+    rmass[i] *= porosity[i];
+  }
+  filled = 1;
+}
+
+void FixSPHGrains::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  const double state[1] = {(double) filled};
+  SPHCheck::write_restart_state(fp, RESTART_VERSION, state, 1);
+}
+
+void FixSPHGrains::restart(char *buf)
+{
+  const double *state = SPHCheck::read_restart_state(lmp, FLERR, this, buf, RESTART_VERSION);
+  filled = state[0] != 0.0;
+}
+
 void FixSPHGrains::post_force(int /*vflag*/)
 {
   exchange();
+}
+
+// this step's arrays: the fix's own grown to the atoms, the porosity's
+// pointer (moved when fix property/atom grows it)
+void FixSPHGrains::refresh_arrays()
+{
+  porosity = SPHParticles::porosity_of(atom);
+  if (atom->nlocal + atom->nghost <= nmax) return;
+  memory->destroy(reaction);
+  memory->destroy(at_grain);
+  nmax = atom->nmax;
+  memory->create(reaction, nmax, 4, "sph/grains:reaction");
+  memory->create(at_grain, nmax, 5, "sph/grains:at_grain");
+  array_atom = at_grain;
 }
 
 /* ----------------------------------------------------------------------
@@ -201,21 +348,16 @@ void FixSPHGrains::exchange()
 {
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
-  if (nall > nmax) {
-    memory->destroy(reaction);
-    memory->destroy(at_grain);
-    nmax = atom->nmax;
-    memory->create(reaction, nmax, 4, "sph/grains:reaction");
-    memory->create(at_grain, nmax, 5, "sph/grains:at_grain");
-    array_atom = at_grain;
-  }
-  for (int i = 0; i < nlocal; i++)
+  refresh_arrays();
+  for (int i = 0; i < nlocal; i++) {
     for (int k = 0; k < 5; k++) at_grain[i][k] = 0.0;
+    if (atom->mask[i] & fluid_groupbit) at_grain[i][3] = porosity[i];
+  }
   for (int i = 0; i < nall; i++)
     reaction[i][0] = reaction[i][1] = reaction[i][2] = reaction[i][3] = 0.0;
 
   double **x = atom->x, **v = atom->v, **f = atom->f;
-  const double *radius = atom->radius, *rmass = atom->rmass, *rho = atom->rho;
+  const double *radius = atom->radius, *rmass = atom->rmass;
   const double *cv = atom->cv;
   double *desph = atom->desph;
   const int *mask = atom->mask, *type = atom->type;
@@ -267,14 +409,15 @@ void FixSPHGrains::exchange()
       weight += vw;
       for (int k = 0; k < 3; k++) u[k] += vw * v[j][k];
       fluid_t += vw * t;
-      fluid_rho += vw * rho[j];
+      fluid_rho += vw * particles.fluid_density(j);
       fluid_mu += vw * materials->viscosity_at(type[j], t, cmd);
       if (heat) {
         fluid_k += vw * materials->conductivity_at(type[j], t, cmd);
         fluid_cp += vw * cv[j];
       }
       const double g = minus_dwdr_r_scale * sphk_df_over_q(kernel.kind, r * kernel.inv_h);
-      sphi_add_g(&pressure, dx, w, g, volume, sphe_pressure_at(materials->eos(type[j]), rho[j], t));
+      sphi_add_g(&pressure, dx, w, g, volume,
+                 sphe_pressure_at(materials->eos(type[j]), particles.fluid_density(j), t));
     }
     if (!(weight > 0.0)) {    // out of the fluid (above its surface, say): no exchange
       local[4] += 1.0;
@@ -351,17 +494,31 @@ void FixSPHGrains::exchange()
 
 int FixSPHGrains::pack_reverse_comm(int n, int first, double *buf)
 {
+  const int values = reverse_mode == REVERSE_POROSITY ? 1 : 4;
   int m = 0;
   for (int i = first; i < first + n; i++)
-    for (int k = 0; k < 4; k++) buf[m++] = reaction[i][k];
+    for (int k = 0; k < values; k++) buf[m++] = reaction[i][k];
   return m;
 }
 
 void FixSPHGrains::unpack_reverse_comm(int n, int *list_send, double *buf)
 {
+  const int values = reverse_mode == REVERSE_POROSITY ? 1 : 4;
   int m = 0;
   for (int i = 0; i < n; i++)
-    for (int k = 0; k < 4; k++) reaction[list_send[i]][k] += buf[m++];
+    for (int k = 0; k < values; k++) reaction[list_send[i]][k] += buf[m++];
+}
+
+int FixSPHGrains::pack_forward_comm(int n, int *list_send, double *buf, int /*pbc_flag*/,
+                                    int * /*pbc*/)
+{
+  for (int i = 0; i < n; i++) buf[i] = porosity[list_send[i]];
+  return n;
+}
+
+void FixSPHGrains::unpack_forward_comm(int n, int first, double *buf)
+{
+  for (int i = 0; i < n; i++) porosity[first + i] = buf[i];
 }
 
 /* ----------------------------------------------------------------------

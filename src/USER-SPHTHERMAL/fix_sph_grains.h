@@ -35,12 +35,19 @@ class FixSPHGrains : public Fix {
   ~FixSPHGrains() override;
   int setmask() override;
   void init() override;
+  void post_constructor() override;
   void init_list(int, class NeighList *) override;
+  void setup_pre_force(int) override;
+  void pre_force(int) override;
   void setup(int) override;
   void post_force(int) override;
   double compute_vector(int) override;
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
   double memory_usage() override;
 
  private:
@@ -68,6 +75,21 @@ class FixSPHGrains : public Fix {
   double local[6], totals[6];
   bigint totals_step;
 
+  // 'fill yes': the fluid around grains placed in it is given the pores'
+  // share of its mass once (filled: done, also before a restart)
+  int fill, filled;
+  // the fluid's porosity (SPHParticles::POROSITY_VECTOR), of an internal
+  // fix property/atom made by this fix
+  double *porosity;
+  int porosity_fix_made = 0;
+  // what the reverse communication carries: the grains' volume fractions
+  // (1 value) or the reactions (4)
+  enum { REVERSE_REACTION, REVERSE_POROSITY } reverse_mode;
+
+  std::string porosity_fix_id() const;
+  void refresh_arrays();
+  void update_porosity();
+  void fill_pores();
   void exchange();
   void check_atom_style() const;
 };

@@ -269,7 +269,6 @@ void FixSPHWallAdami::sample_acceleration(double half_dt)
 void FixSPHWallAdami::pre_force_walls()
 {
   const SPHParticles particles(atom);
-  double *const rho = atom->rho;
   const int *const type = atom->type;
   const int *const mask = atom->mask;
   const sphk_kernel kernel = sphk_make(kernel_kind, domain->dimension, cutoff);
@@ -303,7 +302,7 @@ void FixSPHWallAdami::pre_force_walls()
   sph_parallel_for(nfluid, nthreads, [&](int m) {
     const int j = fluid_atoms[m];
     // with thermal expansion the pair refuses a T without reference density
-    fluid_pressure[m] = sphe_pressure_at(materials->eos(type[j]), rho[j],
+    fluid_pressure[m] = sphe_pressure_at(materials->eos(type[j]), particles.fluid_density(j),
                                          thermal_expansion ? particles.temperature(j) : 0.0);
     if (buoyancy)
       fluid_pressure[m] +=
@@ -311,7 +310,8 @@ void FixSPHWallAdami::pre_force_walls()
     double accel[3];
     SPHBodyForce::acceleration(body, buoyancy, mask[j], type[j],
                                buoyancy ? particles.temperature(j) : 0.0, atom->x[j], accel);
-    for (int k = 0; k < 3; k++) fluid_rho_accel[3 * (size_t) m + k] = rho[j] * accel[k];
+    const double fluid_rho = particles.fluid_density(j);
+    for (int k = 0; k < 3; k++) fluid_rho_accel[3 * (size_t) m + k] = fluid_rho * accel[k];
   });
   fluid_weights.resize((size_t) nthreads * (ntypes + 1));
   std::vector<int> below_eos_of(nthreads, 0);

@@ -192,7 +192,7 @@ void PairSPHHarmonicVisc::update_atom_state()
     memory->destroy(diffused_density);
     memory->destroy(velocity_seen_store);
     memory->create(volume, nmax, "pair:volume");
-    if (thermal_expansion) memory->create(diffused_density, nmax, "pair:diffused_density");
+    memory->create(diffused_density, nmax, "pair:diffused_density");
     memory->create(pressure, nmax, "pair:pressure");
     memory->create(viscosity, nmax, "pair:viscosity");
     memory->create(mass_of, nmax, "pair:mass_of");
@@ -204,7 +204,12 @@ void PairSPHHarmonicVisc::update_atom_state()
   const int *const type = atom->type;
   const int *const mask = atom->mask;
   const int nall = atom->nlocal + atom->nghost;
-  diffusion_rho = thermal_expansion ? diffused_density : rho;
+  // among grains (fix sph/grains) rho is the superficial density eps rho_f
+  // (sph_particle.h): the equation of state sees rho / eps, the density
+  // diffusion the departure of rho from eps rho_ref
+  const double *const porosity = SPHParticles::porosity_of(atom);
+  const bool diffuse_departure = thermal_expansion || porosity;
+  diffusion_rho = diffuse_departure ? diffused_density : rho;
   std::copy(state.mass(), state.mass() + nall, mass_of);
   // the viscosity's velocity: vest, but the solid wall particles' no-slip one
   double **const seen = solid_walls.empty() ? nullptr : velocity_seen_store;
@@ -226,7 +231,7 @@ void PairSPHHarmonicVisc::update_atom_state()
       density[i] = solid->fluid_density(i);
       viscosity[i] = solid->viscosity(i);
       mass_of[i] = density[i] * volume[i];
-      if (thermal_expansion) diffused_density[i] = rho[i];
+      if (diffuse_departure) diffused_density[i] = rho[i];
       continue;
     }
     const sphe_eos *eos = materials->eos(type[i]);
@@ -236,9 +241,11 @@ void PairSPHHarmonicVisc::update_atom_state()
       pressure[i] = viscosity[i] = 0.0;
       density[i] = rho[i];
       volume[i] = mass_of[i] / rho[i];
-      if (thermal_expansion) diffused_density[i] = rho[i];
+      if (diffuse_departure) diffused_density[i] = rho[i];
       continue;
     }
+    const double eps = porosity ? porosity[i] : 1.0;
+    const double fluid_rho = rho[i] / eps;
     if (eos->thermal) {
       const double t = temperature[i];
       const double rho_ref = sphe_reference_density(eos, t);
@@ -250,13 +257,13 @@ void PairSPHHarmonicVisc::update_atom_state()
                 "density: 1 + beta (T - T0) = {} of its equation of state's thermal "
                 "expansion must be > 0",
                 atom->tag[i], type[i], t, 1.0 + eos->beta * (t - eos->t0)));
-      pressure[i] = sphe_pressure_ref(eos, rho[i], rho_ref);
-      diffused_density[i] = rho[i] - (rho_ref - eos->rho0);
+      pressure[i] = sphe_pressure_ref(eos, fluid_rho, rho_ref);
+      diffused_density[i] = rho[i] - (eps * rho_ref - eos->rho0);
     } else {
       // with the buoyancy's potential: its pressure rho0 phi, carried without compression
-      pressure[i] = sphe_pressure(eos, rho[i]) +
+      pressure[i] = sphe_pressure(eos, fluid_rho) +
           eos->rho0 * SPHBodyForce::potential_of(pressure_buoyancy, mask[i], i);
-      if (thermal_expansion) diffused_density[i] = rho[i];
+      if (diffuse_departure) diffused_density[i] = rho[i] - (eps - 1.0) * eos->rho0;
     }
     viscosity[i] = materials->viscosity_at(type[i], viscosity_varies ? temperature[i] : 0.0,
                                            "Pair style sph/harmonic/visc");

@@ -17,6 +17,19 @@
               153-159; the drag of the SPH-DEM of Robinson, Ramaioli and
               Luding, Int. J. Multiphase Flow 59 (2014) 121-134). Cd's
               1/Re terms are expanded so that beta is finite at u = v.
+     gidaspow beta = V beta_v / (1 - eps), V = pi d^3 / 6, with the
+              momentum exchange coefficient per volume beta_v
+              eps < 0.8:  Ergun's 150 (1 - eps)^2 mu / (eps d^2)
+                          + 1.75 (1 - eps) rho |u - v| / d,
+              eps >= 0.8: Wen and Yu's (3/4) Cd eps (1 - eps) rho |u - v|
+                          eps^-2.65 / d, Cd = 24 (1 + 0.15 Re^0.687) / Re
+                          (0.44 from Re = 1000 on)
+              (D. Gidaspow, Multiphase Flow and Fluidization, Academic
+              Press 1994; S. Ergun, Fluid flow through packed columns,
+              Chem. Eng. Prog. 48 (1952) 89-94; C. Y. Wen and Y. H. Yu,
+              Mechanics of fluidization, Chem. Eng. Prog. Symp. Ser. 62
+              (1966) 100-111). A fixed bed with it has Ergun's pressure
+              drop: eps dP/L = beta_v (u - v), U = eps (u - v).
    Heat: Q = Nu k pi d (T_fluid - T_grain) (h = Nu k / d on the area pi d^2),
    Pr = mu cp / k.
      ranz-marshall Nu = 2 + 0.6 Re^(1/2) Pr^(1/3) (W. E. Ranz and W. R.
@@ -39,7 +52,12 @@
 #define M_PI 3.14159265358979323846
 #endif
 
-enum sphg_drag_kind { SPHG_DRAG_STOKES = 0, SPHG_DRAG_DIFELICE, SPHG_DRAG_NKINDS };
+enum sphg_drag_kind {
+  SPHG_DRAG_STOKES = 0,
+  SPHG_DRAG_DIFELICE,
+  SPHG_DRAG_GIDASPOW,
+  SPHG_DRAG_NKINDS
+};
 enum sphg_heat_kind {
   SPHG_HEAT_NONE = 0,
   SPHG_HEAT_RANZ_MARSHALL,
@@ -49,7 +67,7 @@ enum sphg_heat_kind {
 
 static inline const char *sphg_drag_name(int kind)
 {
-  static const char *names[SPHG_DRAG_NKINDS] = {"stokes", "difelice"};
+  static const char *names[SPHG_DRAG_NKINDS] = {"stokes", "difelice", "gidaspow"};
   return (kind >= 0 && kind < SPHG_DRAG_NKINDS) ? names[kind] : "?";
 }
 
@@ -96,8 +114,17 @@ static inline double sphg_difelice_chi(double re)
    viscosity mu */
 static inline double sphg_drag_beta(int kind, double d, double eps, double rho, double mu, double w)
 {
-  double scale, rho_w_cd;
+  double scale, rho_w_cd, re;
   if (kind == SPHG_DRAG_STOKES) return 3.0 * M_PI * mu * d;
+  if (kind == SPHG_DRAG_GIDASPOW) {
+    const double volume = M_PI * d * d * d / 6.0;
+    if (eps < 0.8) return volume * (150.0 * (1.0 - eps) * mu / (eps * d * d) + 1.75 * rho * w / d);
+    /* rho w Cd, finite at w = 0 */
+    re = sphg_reynolds(eps, rho, d, w, mu);
+    rho_w_cd = (re < 1000.0) ? 24.0 * mu / (eps * d) * (1.0 + 0.15 * pow(re, 0.687))
+                             : 0.44 * rho * w;
+    return volume * 0.75 * rho_w_cd * pow(eps, -1.65) / d;
+  }
   /* rho w Cd = rho w (0.63^2 + 2 (0.63)(4.8) / sqrt(Re) + 4.8^2 / Re) */
   scale = mu / (eps * d);
   rho_w_cd = 0.3969 * rho * w + 6.048 * sqrt(rho * w * scale) + 23.04 * scale;

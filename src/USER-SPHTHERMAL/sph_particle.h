@@ -28,16 +28,28 @@ namespace LAMMPS_NS {
 // also for an atom made since the last marking) and 'sph_energy_t0'
 // (T0_VECTOR, their T0), for owned and ghost atoms alike (sph_machdyn.h);
 // a scene whose atom style is not smd (hybrid) has no such vectors.
+// The fluid's density among unresolved grains (fix sph/grains), here and
+// nowhere else: there a fluid particle's rho is the superficial density
+// eps rho_f (mass of fluid per volume of fluid and grains, as the kernel sum
+// and the continuity equation make it), eps the porosity the grains leave
+// it, in the per-atom vector 'sph_porosity' (POROSITY_VECTOR, made by fix
+// sph/grains, owned and ghost atoms alike, 1 for an atom no grain is near).
+// The equation of state and the drag laws see the fluid's own density
+// rho_f = rho / eps (the locally averaged equations of the SPH-DEM of
+// Robinson, Ramaioli and Luding, Int. J. Multiphase Flow 59 (2014)
+// 121-134); without grains rho_f = rho.
 // A view of this step's arrays: make one where the arrays are read (they
 // move when atoms are added), for owned and ghost atoms alike.
 class SPHParticles {
  public:
   static constexpr const char *SOLID_VECTOR = "sph_machdyn";
   static constexpr const char *T0_VECTOR = "sph_energy_t0";
+  static constexpr const char *POROSITY_VECTOR = "sph_porosity";
 
   explicit SPHParticles(Atom *atom) :
       rmass((atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr), type_mass(atom->mass),
-      type(atom->type), esph(atom->esph), cv(atom->cv), rho(atom->rho), solid(nullptr), t0(nullptr)
+      type(atom->type), esph(atom->esph), cv(atom->cv), rho(atom->rho), solid(nullptr), t0(nullptr),
+      porosity(porosity_of(atom))
   {
     if (!atom->smd_flag) return;
     int flag, cols;
@@ -50,6 +62,17 @@ class SPHParticles {
 
   double mass(int i) const { return rmass ? rmass[i] : type_mass[type[i]]; }
   double volume(int i) const { return mass(i) / rho[i]; }
+  // the fluid's own density (the equation of state's): rho / eps among grains
+  double fluid_density(int i) const { return porosity ? rho[i] / porosity[i] : rho[i]; }
+  // eps of atom i: 1 without grains
+  double porosity_at(int i) const { return porosity ? porosity[i] : 1.0; }
+  // the per-atom porosity of fix sph/grains, or nullptr without one
+  static double *porosity_of(Atom *atom)
+  {
+    int flag, cols;
+    const int index = atom->find_custom(POROSITY_VECTOR, flag, cols);
+    return (index >= 0 && flag == 1 && cols == 0) ? atom->dvector[index] : nullptr;
+  }
   // whether atom i holds its energy as a MACHDYN solid does
   bool machdyn(int i) const { return solid && solid[i]; }
   double temperature(int i) const
@@ -105,8 +128,9 @@ class SPHParticles {
   const double *rmass, *type_mass;
   const int *type;
   const double *esph, *cv, *rho;
-  const int *solid;    // per atom: 1 for a MACHDYN solid
-  const double *t0;    // per atom: its T0
+  const int *solid;          // per atom: 1 for a MACHDYN solid
+  const double *t0;          // per atom: its T0
+  const double *porosity;    // per atom: eps among grains, or nullptr
 };
 
 }    // namespace LAMMPS_NS

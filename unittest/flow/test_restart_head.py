@@ -3,7 +3,7 @@ settings of the pairs and the global state of the fixes. A file whose head
 is missing (written before heads existed) or of another version is refused
 with an error naming the style, not misread.
 
-usage: test_restart_head.py --lmp LMP --plugin PLUGIN
+usage: test_restart_head.py --lmp LMP --plugin PLUGIN [--scene grains]
 
 A restart of pair hybrid/overlay sph/harmonic/visc + sph/cleary/heat and of
 every fix of the package that keeps a global state is written once; each
@@ -85,6 +85,50 @@ STYLES = ["sph/harmonic/visc", "sph/cleary/heat", "sph/wall/adami", "sph/wall/di
           "sph/dt/reset", "sph/heatflow", "sph/surface/flux", "sph/shift",
           "sph/inlet/temperature", "SPH/MIXING/REFERENCE", "sph/materials", "sph/hold/volume",
           "sph/open", "sph/flowrate"]
+# fix sph/grains, which needs a 3-d scene of atom style hybrid sph sphere
+# (its state: whether the fluid filled the pores)
+GRAINS_FIXES = """fix materials all sph/materials type 1 rho0 1000.0 cv 4000.0 viscosity constant 0.05 &
+    eos linear 0.1 type 2 rho0 2500.0 cv 800.0
+fix integrate fluid sph
+fix couple grains sph/grains fluid fluid heat none fill yes
+"""
+
+GRAINS_WRITE = """plugin load {plugin}
+units si
+dimension 3
+atom_style hybrid sph sphere
+boundary p p p
+comm_modify vel yes
+lattice sc 0.001
+region box block 0 6 0 6 0 6
+create_box 2 box
+create_atoms 1 box
+create_atoms 2 single 0.0031 0.0029 0.0033 units box
+group fluid type 1
+group grains type 2
+set group fluid diameter 0.0
+set group grains diameter 0.0004 density 2500.0
+set group grains sph/rho 2500.0
+set group grains sph/cv 800.0
+""" + GRAINS_FIXES + """sph/set fluid materials spacing 0.001 temperature 300.0
+pair_style hybrid/overlay sph/harmonic/visc wendland 0.003 granular
+pair_coeff 1 1 sph/harmonic/visc
+pair_coeff 1 2 none
+pair_coeff 2 2 granular hooke 1e3 0.5 tangential linear_nohistory 1.0 0.0
+timestep 1e-4
+run 2
+write_restart {path}
+"""
+
+GRAINS_READ = """plugin load {plugin}
+read_restart {path}
+comm_modify vel yes
+""" + GRAINS_FIXES + """print "READ BACK"
+"""
+
+SCENES = {"styles": (WRITE, READ, STYLES, "flow.restart_head"),
+          "grains": (GRAINS_WRITE, GRAINS_READ, ["sph/harmonic/visc", "sph/grains"],
+                     "granular.restart_head")}
 TAG = struct.pack("i", 0x53505448)
 
 
@@ -112,11 +156,14 @@ def owner(data, at):
 def main():
     p = lammps_arguments(argparse.ArgumentParser(description=__doc__), mpi=False)
     p.add_argument("--record", help="directory for the sites of the messages (robust.error_branches)")
+    p.add_argument("--scene", choices=sorted(SCENES), default="styles",
+                   help="styles: the package's pairs and fixes in 2-d; grains: fix sph/grains in 3-d")
     a = p.parse_args()
+    write_script, read_script, styles, site_prefix = SCENES[a.scene]
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
         written = os.path.join(tmp, "written.restart")
-        code, out = run_script(a.lmp, WRITE.format(plugin=a.plugin, path=written))
+        code, out = run_script(a.lmp, write_script.format(plugin=a.plugin, path=written))
         if code != 0:
             sys.exit("FAIL: writing the restart:\n" + out[-2000:])
         data = open(written, "rb").read()
@@ -127,20 +174,20 @@ def main():
             at = data.find(TAG, at + 1)
         owners = [owner(data, at) for at in heads]
         named = sorted(who.split()[1] if who else "?" for who, _ in owners)
-        if named != sorted(STYLES):
-            sys.exit(f"FAIL: heads in the restart file for {named}, expected {sorted(STYLES)}")
+        if named != sorted(styles):
+            sys.exit(f"FAIL: heads in the restart file for {named}, expected {sorted(styles)}")
 
         def reads(name, content, expect):
             path = os.path.join(tmp, name)
             with open(path, "wb") as f:
                 f.write(content)
-            code, out = run_script(a.lmp, READ.format(plugin=a.plugin, path=path))
+            code, out = run_script(a.lmp, read_script.format(plugin=a.plugin, path=path))
             if expect is None:
                 ok = code == 0 and "READ BACK" in out
             else:
                 ok = code != 0 and all(e in out for e in expect)
                 if ok and a.record:
-                    record_site(os.path.join(a.record, f"flow.restart_head.{name}.site"), a.plugin,
+                    record_site(os.path.join(a.record, f"{site_prefix}.{name}.site"), a.plugin,
                                 out, expect[0])
             print(f"{name}: exit {code}, {'as expected' if ok else 'NOT as expected'}")
             if not ok:

@@ -24,6 +24,31 @@ static double difelice_force(double d, double eps, double rho, double mu, double
   return 0.5 * cd * rho * 0.25 * M_PI * d * d * eps * eps * w * w * pow(eps, -chi);
 }
 
+/* Gidaspow's momentum exchange per volume of the mixture as published,
+   beta_v (Ergun below eps = 0.8, Wen and Yu above), and the force on one
+   grain beta_v w V / (1 - eps) */
+static double gidaspow_force(double d, double eps, double rho, double mu, double w)
+{
+  const double volume = M_PI * d * d * d / 6.0;
+  double beta_v;
+  if (eps < 0.8) {
+    beta_v = 150.0 * (1.0 - eps) * (1.0 - eps) * mu / (eps * d * d) + 1.75 * (1.0 - eps) * rho * w / d;
+  } else {
+    const double re = eps * rho * d * w / mu;
+    const double cd = (re < 1000.0) ? 24.0 / re * (1.0 + 0.15 * pow(re, 0.687)) : 0.44;
+    beta_v = 0.75 * cd * eps * (1.0 - eps) * rho * w * pow(eps, -2.65) / d;
+  }
+  return beta_v * w * volume / (1.0 - eps);
+}
+
+/* Ergun's pressure drop per length at superficial velocity U */
+static double ergun_gradient(double d, double eps, double rho, double mu, double U)
+{
+  const double e3 = eps * eps * eps;
+  return 150.0 * (1.0 - eps) * (1.0 - eps) * mu * U / (e3 * d * d) +
+      1.75 * (1.0 - eps) * rho * U * U / (e3 * d);
+}
+
 int main(void)
 {
   const double d = 1e-3, rho = 1000.0, mu = 1e-3;
@@ -46,6 +71,30 @@ int main(void)
   expect_near(sphg_drag_beta(SPHG_DRAG_DIFELICE, d, 1.0, rho, mu, 0.0), 0.96 * 3.0 * M_PI * mu * d,
               1e-14, "difelice at rest");
   expect_near(sphg_difelice_chi(pow(10.0, 1.5)), 3.05, 1e-15, "chi at its dip");
+
+  /* gidaspow as published, both branches and Cd's, over five decades */
+  {
+    const double gidaspow_eps[4] = {0.4, 0.7, 0.85, 0.99};
+    for (a = 0; a < 5; a++)
+      for (b = 0; b < 4; b++) {
+        char what[64];
+        const double w = speeds[a], eps = gidaspow_eps[b];
+        snprintf(what, sizeof what, "gidaspow at w %g eps %g", w, eps);
+        expect_near(sphg_drag_beta(SPHG_DRAG_GIDASPOW, d, eps, rho, mu, w) * w,
+                    gidaspow_force(d, eps, rho, mu, w), 1e-12, what);
+      }
+  }
+  /* a fixed bed: the grains' drag per volume over eps is Ergun's pressure
+     gradient, n beta w / eps with n = (1 - eps) / V and w = U / eps */
+  for (a = 0; a < 5; a++) {
+    const double eps = 0.45, U = 1e-2 * speeds[a], w = U / eps;
+    const double n = (1.0 - eps) / (M_PI * d * d * d / 6.0);
+    expect_near(n * sphg_drag_beta(SPHG_DRAG_GIDASPOW, d, eps, rho, mu, w) * w / eps,
+                ergun_gradient(d, eps, rho, mu, U), 1e-13, "gidaspow: ergun's bed");
+  }
+  /* one grain in a wide fluid: Stokes's drag as eps -> 1, finite at w = 0 */
+  expect_near(sphg_drag_beta(SPHG_DRAG_GIDASPOW, d, 1.0, rho, mu, 0.0), 3.0 * M_PI * mu * d, 1e-14,
+              "gidaspow at rest, eps 1");
   expect_near(sphg_difelice_chi(0.0), 3.7, 0.0, "chi at rest");
 
   /* heat: a sphere at rest conducts with Nu = 2, both laws (gunn at eps = 1) */
@@ -66,7 +115,7 @@ int main(void)
     if (sphg_drag_lookup(sphg_drag_name(a)) != a) failures++, printf("FAIL drag name %d\n", a);
   for (a = 0; a < SPHG_HEAT_NKINDS; a++)
     if (sphg_heat_lookup(sphg_heat_name(a)) != a) failures++, printf("FAIL heat name %d\n", a);
-  if (sphg_drag_lookup("ergun") != -1 || sphg_heat_lookup("whitaker") != -1)
+  if (sphg_drag_lookup("wen-yu") != -1 || sphg_heat_lookup("whitaker") != -1)
     failures++, printf("FAIL unknown names found\n");
 
   printf("grain laws: %s (%d failures)\n", failures ? "FAILED" : "passed", failures);

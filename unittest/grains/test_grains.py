@@ -13,6 +13,12 @@
       in.column), the mean force of the fluid on a grain of the liquid's
       density is its weight (the buoyancy of -V grad P) and its slip is
       nil; a glass bead's mean slip is the drag law's terminal slip
+  bed: liquid driven through a fixed packed bed (examples/grains-bed/in.bed,
+      --porosity, --gradient) reaches the superficial velocity of the drag
+      law's exact value for the bed (gidaspow: Ergun's equation), the grains'
+      drag balances the drive, the porosity the kernel gives the grains and
+      the fluid is the bed's, and the fluid fills the pores at its own rest
+      density
   mpi: the conservation scene on --np ranks gives the single rank's state
       to round-off
   restart: the conservation scene in two halves, the second from a restart
@@ -32,8 +38,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 INPUT = os.path.join(HERE, "in.grains")
 EXAMPLE = os.path.join(HERE, "..", "..", "examples", "grains-single", "in.single")
 COLUMN = os.path.join(HERE, "..", "..", "examples", "grains-single", "in.column")
+BED = os.path.join(HERE, "..", "..", "examples", "grains-bed", "in.bed")
 from checks import below, finish, that
-from grain_exact import lumped_temperature, nusselt, terminal_slip
+from grain_exact import bed_superficial, ergun_superficial, lumped_temperature, nusselt, terminal_slip
 from lammps_checks import run_input
 from sphtest import lammps_arguments
 
@@ -69,11 +76,15 @@ def conservation_line(text):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     lammps_arguments(parser)
-    parser.add_argument("--check", required=True, choices=["conservation", "settle", "heat", "column", "mpi", "restart"])
+    parser.add_argument("--check", required=True, choices=["conservation", "settle", "heat", "column", "bed", "mpi", "restart"])
     parser.add_argument("--drag", default="difelice")
     parser.add_argument("--heat", default="ranz-marshall")
     parser.add_argument("--steps", type=int, default=200)
     parser.add_argument("--conduction", type=int, default=0, help="1: the fluid also conducts")
+    parser.add_argument("--porosity", type=float, default=0.5, help="bed: the bed's porosity")
+    parser.add_argument("--gradient", type=float, default=300.0, help="bed: the pressure gradient, Pa/m")
+    parser.add_argument("--c0", type=float, default=0.5, help="bed: the speed of sound, m/s")
+    parser.add_argument("--time", type=float, default=0.1, help="bed: the simulated time, s")
     args = parser.parse_args()
     workdir = tempfile.mkdtemp(prefix="sph-grains-")
     plugin = os.path.abspath(args.plugin)
@@ -134,6 +145,23 @@ def main():
             if args.heat != "none":
                 below(abs(w[7] - e1) / abs(q0 * dt * args.steps), 1e-9, f"energy on {args.np} ranks against 1")
                 below(abs(w[9] - q1) / abs(q0), 1e-9, f"heat into the grains on {args.np} ranks against 1")
+    elif args.check == "bed":
+        text = run_input(args.lmp, BED, {"plugin": plugin, "drag": args.drag, "porosity": args.porosity,
+                                         "gradient": args.gradient, "c0": args.c0, "time": args.time}, workdir)
+        v, line = numbers(text, "bed bed", ["U", "drag", "drive", "d", "mu", "fluid porosity", "grain porosity",
+                                             "fluid density"])
+        exact = bed_superficial(args.drag, args.gradient, v["d"], args.porosity, RHO_F, v["mu"])
+        ergun = ergun_superficial(args.gradient, v["d"], args.porosity, RHO_F, v["mu"])
+        print(f"bed ({args.drag}, porosity {args.porosity:g}, G {args.gradient:g} Pa/m): U {v['U']:.6e}, "
+              f"the law's {exact:.6e}, Ergun's {ergun:.6e}")
+        below(abs(v["U"] / exact - 1.0), 1e-2, "superficial velocity against the drag law's for the bed")
+        if args.drag == "gidaspow":
+            below(abs(v["U"] / ergun - 1.0), 1e-2, "superficial velocity against Ergun's")
+        below(abs(v["drag"] / v["drive"] - 1.0), 1e-4, "the grains' drag balances the drive")
+        below(abs(v["grain porosity"] / args.porosity - 1.0), 5e-3, "the kernel's porosity at the grains")
+        below(abs(v["fluid porosity"] / args.porosity - 1.0), 5e-3, "the kernel's porosity at the fluid")
+        # filled: rho / eps is the fluid's rest density (1000), not 1000 / eps
+        below(abs(v["fluid density"] / RHO_F - 1.0), 1e-3, "the fluid's own density rho / eps")
     elif args.check == "settle":
         v, line = numbers(example("settle"), "settle", ["velocity", "slip", "weight", "porosity"])
         exact = terminal_slip(args.drag, v["weight"], D, RHO_F, MU, v["porosity"])

@@ -3,7 +3,7 @@
 
 # the exchange laws (sph_grain_laws.h) against their published forms
 add_header_test(test_grain_laws grains/test_grain_laws.c)
-sphthermal_test(grains.laws LABELS unit COMMAND test_grain_laws)
+sphthermal_test(granular.laws LABELS unit COMMAND test_grain_laws)
 
 set(grains_test ${CMAKE_CURRENT_LIST_DIR}/test_grains.py)
 # LAMMPS 4Feb2025 has the grains' temperature (fix heat/flow); 29Sep2021 none
@@ -13,25 +13,38 @@ else()
   set(grains_heat none)
 endif()
 # with the fluid's conduction (pair sph/cleary/heat) in the hybrid
-sphthermal_python_test(grains.conservation.conduction ${grains_test} LAMMPS
+sphthermal_python_test(granular.conservation.conduction ${grains_test} LAMMPS
   ARGS --check conservation --heat ${grains_heat} --conduction 1 LABELS unit)
 foreach(drag stokes difelice)
-  sphthermal_python_test(grains.conservation.${drag} ${grains_test} LAMMPS
+  sphthermal_python_test(granular.conservation.${drag} ${grains_test} LAMMPS
     ARGS --check conservation --drag ${drag} --heat ${grains_heat} LABELS unit)
-  sphthermal_python_test(grains.settle.${drag} ${grains_test} LAMMPS
+  sphthermal_python_test(granular.settle.${drag} ${grains_test} LAMMPS
     ARGS --check settle --drag ${drag} LABELS validation)
 endforeach()
 # buoyancy: in a column of liquid at rest under gravity
-sphthermal_python_test(grains.column ${grains_test} LAMMPS ARGS --check column LABELS validation)
+sphthermal_python_test(granular.column ${grains_test} LAMMPS ARGS --check column LABELS validation)
+# a fixed packed bed against the drag law's exact value and Ergun's equation
+# (examples/grains-bed): viscous at porosity 0.5, inertial at 0.7
+sphthermal_python_test(granular.bed.gidaspow_viscous ${grains_test} LAMMPS
+  ARGS --check bed --drag gidaspow --porosity 0.5 --gradient 300 LABELS validation)
+sphthermal_python_test(granular.bed.gidaspow_inertial ${grains_test} LAMMPS
+  ARGS --check bed --drag gidaspow --porosity 0.7 --gradient 1e4 --c0 0.9 --time 0.4
+  LABELS validation)
+sphthermal_python_test(granular.bed.difelice ${grains_test} LAMMPS
+  ARGS --check bed --drag difelice --porosity 0.5 --gradient 300 LABELS validation)
 if(LAMMPS_RELEASE STREQUAL "4Feb2025")
-  sphthermal_python_test(grains.heat.ranz-marshall ${grains_test} LAMMPS
+  sphthermal_python_test(granular.heat.ranz-marshall ${grains_test} LAMMPS
     ARGS --check heat --heat ranz-marshall LABELS validation)
 endif()
 foreach(np 2 4)
-  sphthermal_python_test(grains.mpi.conservation_np${np} ${grains_test} LAMMPS
+  sphthermal_python_test(granular.mpi.conservation_np${np} ${grains_test} LAMMPS
     ARGS --check mpi --heat ${grains_heat} --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
 endforeach()
 # no state of its own: a restart (on 2 ranks) continues as in one go
-sphthermal_python_test(grains.restart ${grains_test} LAMMPS
+sphthermal_python_test(granular.restart ${grains_test} LAMMPS
   ARGS --check restart --heat ${grains_heat} --np 2 --mpirun ${MPIRUN} LABELS unit PROCESSORS 2)
-add_error_cases(grains ${CMAKE_CURRENT_LIST_DIR}/errors.in)
+# a restart file whose fix sph/grains state has another layout is refused
+sphthermal_python_test(granular.restart.version_head flow/test_restart_head.py LAMMPS
+  ARGS --scene grains --record ${error_sites_dir} LABELS regression)
+set_property(GLOBAL APPEND PROPERTY sphthermal_error_tests granular.restart.version_head)
+add_error_cases(granular ${CMAKE_CURRENT_LIST_DIR}/errors.in)

@@ -252,7 +252,7 @@ STEPS = 10
 # styles whose scene the probes' 2-d atom style sph cannot hold, with the
 # tests that run them on 1 and 2 ranks and across a restart
 ELSEWHERE = {
-    "fix_sph_grains": "grains.mpi.conservation_np2, grains.restart (3-d, atom_style hybrid sph sphere)",
+    "fix_sph_grains": "granular.mpi.conservation_np2, granular.restart (3-d, atom_style hybrid sph sphere)",
 }
 
 
