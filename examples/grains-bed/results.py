@@ -1,13 +1,18 @@
-"""The table of examples/grains-bed (run.sh): the superficial velocity
+"""The tables of examples/grains-bed (run.sh): the superficial velocity
 through a fixed packed bed at each pressure gradient against the drag law's
 exact value for the bed and against Ergun's equation, from the lines the
-runs printed (in.bed).
-usage: results.py bed.txt > results.md"""
+runs printed (in.bed); the heated bed's temperatures against Schumann's
+solution (in.heatbed, tools/heatbed_compare.py) and their plot
+(heatbed.png, written where it runs).
+usage: results.py bed.txt heatbed.txt OUT > results.md"""
 
 import re
 import sys
 
+import os
+
 from grain_exact import bed_superficial, ergun_superficial
+from heatbed_compare import compare
 
 RHO_F = 1000.0
 NAMES = ["U", "drag", "drive", "gradient", "porosity", "fluid porosity", "grain porosity", "d", "mu",
@@ -56,6 +61,44 @@ def main():
     print()
     print(f"Largest error against the drag law's exact U: {100.0 * worst:.2f} %; with Gidaspow's "
           f"drag against Ergun's U: {100.0 * worst_ergun:.2f} %.")
+    heated(sys.argv[2], sys.argv[3])
+
+
+def heated(path, out):
+    """The heated bed's table and plot."""
+    print()
+    print("## Heated by a hot inflow: against Schumann's solution")
+    print()
+    print("The bed (porosity 0.5, Gidaspow's drag, Gunn's heat law) fed at T_in = 350 K through the")
+    print("periodic inlet (fix sph/inlet/temperature), bed and liquid at 300 K at the start. Largest")
+    print("deviation over the whole bed at the end, in % of T_in - T0; L_f = eps rho_f c_f u / (h a),")
+    print("the exchange length, against the kernel's support of 3 mm.")
+    print()
+    print("| k (W/m/K) | Re | L_f (mm) | time (s) | grains (%) | fluid (%) | fluid's lowest theta |")
+    print("|---|---|---|---|---|---|---|")
+    results = []
+    for n, line in enumerate(open(path)):
+        label = line.split(":", 1)[0].split()[1]
+        r = compare(line, os.path.join(out, f"{label}.grains.dump"), os.path.join(out, f"{label}.fluid.dump"))
+        results.append(r)
+        print(f"| {r['k']:g} | {r['re']:.3g} | {1e3 * r['exchange_length']:.3g} | {r['time']:g} | "
+              f"{100.0 * r['grains']:.2f} | {100.0 * r['fluid']:.2f} | {r['fluid_min']:.3g} |")
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        return
+    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    for r, style in zip(results, ["o", "s"]):
+        ax.plot(1e3 * r["x"][::5], r["grain_theta"][::5], style, ms=3, mfc="none",
+                label=f"grains, SPH (L_f = {1e3 * r['exchange_length']:.0f} mm, t = {r['time']:g} s)")
+        ax.plot(1e3 * r["x"], r["schumann_s"], "-", lw=1, label=f"Schumann, t = {r['time']:g} s")
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("(T - T0) / (T_in - T0)")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig("heatbed.png", dpi=120)
 
 
 if __name__ == "__main__":

@@ -14,6 +14,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_sph_inlet_temperature.h"
 #include "fix_sph_materials.h"
 #include "group.h"
 #include "memory.h"
@@ -213,6 +214,11 @@ void FixSPHGrains::init()
                      : !fields                   ? "the atoms have no temperature"
                                                  : "no fix heat/flow integrates them all");
   }
+  // a periodic inlet (fix sph/inlet/temperature): the grains' heat keeps to
+  // their side of its plane, as the fluid's conduction does
+  inlet_axis = -1;
+  for (FixSPHInletTemperature *inlet : hub.fixes<FixSPHInletTemperature>())
+    inlet_axis = inlet->flow_axis();
   SPHCompat::request_full_list(neighbor, this, instance_me, settings.cutoff);
 }
 
@@ -382,9 +388,13 @@ void FixSPHGrains::exchange()
     if (!(mask[i] & groupbit)) continue;
     const double d = 2.0 * radius[i];
     const double grain_volume = sphere_volume(radius[i]);
-    // Shepard sums of the fluid (weight V_j W_ij) and the grains' volume fraction
+    // Shepard sums of the fluid (weight V_j W_ij) and the grains' volume
+    // fraction; the heat's of the fluid on the grain's side of an inlet plane
     double weight = 0.0, u[3] = {0.0, 0.0, 0.0}, fluid_t = 0.0, fluid_rho = 0.0;
-    double fluid_mu = 0.0, fluid_k = 0.0, fluid_cp = 0.0;
+    double fluid_mu = 0.0, fluid_k = 0.0, fluid_cp = 0.0, heat_weight = 0.0;
+    const double side = (inlet_axis < 0)
+        ? 0.0
+        : FixSPHInletTemperature::periodic_cell(domain, x[i][inlet_axis], inlet_axis);
     double solid = grain_volume * w0;
     sphi_point pressure;
     sphi_begin(&pressure, 3);
@@ -404,16 +414,22 @@ void FixSPHGrains::exchange()
       if (!(mask[j] & fluid_groupbit)) continue;
       const double volume = particles.volume(j);
       const double vw = volume * w;
-      shares.emplace_back(j, vw);
+      const double vw_heat =
+          (inlet_axis < 0 ||
+           FixSPHInletTemperature::periodic_cell(domain, x[j][inlet_axis], inlet_axis) == side)
+          ? vw
+          : 0.0;
+      shares.push_back({j, vw, vw_heat, particles.temperature(j)});
       const double t = particles.temperature(j);
       weight += vw;
       for (int k = 0; k < 3; k++) u[k] += vw * v[j][k];
-      fluid_t += vw * t;
       fluid_rho += vw * particles.fluid_density(j);
       fluid_mu += vw * materials->viscosity_at(type[j], t, cmd);
+      heat_weight += vw_heat;
+      fluid_t += vw_heat * t;
       if (heat) {
-        fluid_k += vw * materials->conductivity_at(type[j], t, cmd);
-        fluid_cp += vw * cv[j];
+        fluid_k += vw_heat * materials->conductivity_at(type[j], t, cmd);
+        fluid_cp += vw_heat * cv[j];
       }
       const double g = minus_dwdr_r_scale * sphk_df_over_q(kernel.kind, r * kernel.inv_h);
       sphi_add_g(&pressure, dx, w, g, volume,
@@ -433,7 +449,7 @@ void FixSPHGrains::exchange()
                       cmd, id, solid, tag[i], sqrt(cutsq), d));
     local[5] = std::min(local[5], porosity);
     for (double &value : u) value /= weight;
-    fluid_t /= weight;
+    if (heat_weight > 0.0) fluid_t /= heat_weight;
     fluid_rho /= weight;
     fluid_mu /= weight;
     double pressure_value = 0.0, grad_p[3];
@@ -444,11 +460,13 @@ void FixSPHGrains::exchange()
     const double beta = sphg_drag_beta(drag_kind, d, porosity, fluid_rho, fluid_mu, speed);
     double force[3];
     for (int k = 0; k < 3; k++) force[k] = beta * slip[k] - grain_volume * grad_p[k];
-    double q = 0.0;
-    if (heat)
-      q = sphg_conductance(heat_kind, d, porosity, fluid_rho, fluid_mu, fluid_k / weight,
-                           fluid_cp / weight, speed) *
-          (fluid_t - grain_temperature[i]);
+    // h A, and the heat h A (T_f - T_i) with T_f the fluid's at the grain
+    double conductance = 0.0, q = 0.0;
+    if (heat && heat_weight > 0.0) {
+      conductance = sphg_conductance(heat_kind, d, porosity, fluid_rho, fluid_mu,
+                                     fluid_k / heat_weight, fluid_cp / heat_weight, speed);
+      q = conductance * (fluid_t - grain_temperature[i]);
+    }
     if (!std::isfinite(force[0] + force[1] + force[2] + q))
       SPHCheck::stop(
           lmp, FLERR,
@@ -473,12 +491,18 @@ void FixSPHGrains::exchange()
     at_grain[i][3] = porosity;
     at_grain[i][4] = fluid_t;
 
-    // the opposite, shared in proportion to V_j W_ij: the shares sum to one
+    // the opposite, shared in proportion to V_j W_ij: the shares sum to one.
+    // The heat pair by pair, h A (T_j - T_i) V_j W_ij / sum: the same total
+    // (T_f is linear in the T_j), and a fluid particle colder than the
+    // grain never gives it heat (a share in proportion to V_j W_ij alone
+    // would cool the fluid ahead of a hot front below its temperature)
     const double inv_weight = 1.0 / weight;
-    for (const auto &share_of : shares) {
-      const double share = share_of.second * inv_weight;
-      for (int k = 0; k < 3; k++) reaction[share_of.first][k] -= share * force[k];
-      reaction[share_of.first][3] -= share * q;
+    const double heat_scale = (heat_weight > 0.0) ? conductance / heat_weight : 0.0;
+    for (const Share &share : shares) {
+      for (int k = 0; k < 3; k++) reaction[share.atom][k] -= share.weight * inv_weight * force[k];
+      if (heat)
+        reaction[share.atom][3] -=
+            share.heat_weight * heat_scale * (share.temperature - grain_temperature[i]);
     }
   }
 

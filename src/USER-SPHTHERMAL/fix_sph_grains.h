@@ -67,8 +67,15 @@ class FixSPHGrains : public Fix {
   // temperature at it, this step's (zero for other atoms and for a grain
   // with no fluid around)
   double **at_grain;
-  // the fluid neighbours of the grain in hand and their weights V_j W_ij
-  std::vector<std::pair<int, double>> shares;
+  // the fluid neighbours of the grain in hand, their weights V_j W_ij in
+  // the interpolation and the momentum's shares, and in the heat's (0 for
+  // a neighbour across the plane of a periodic inlet)
+  struct Share {
+    int atom;
+    double weight, heat_weight, temperature;
+  };
+  std::vector<Share> shares;
+  int inlet_axis = -1;    // the flow axis of fix sph/inlet/temperature, -1 without one
   // this step's force of the fluid on the grains (3), the heat into them,
   // the grains with no fluid within the kernel's support, the smallest
   // porosity at a grain: this rank's, and all ranks' when asked

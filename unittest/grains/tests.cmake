@@ -33,6 +33,8 @@ sphthermal_python_test(granular.bed.gidaspow_inertial ${grains_test} LAMMPS
 sphthermal_python_test(granular.bed.difelice ${grains_test} LAMMPS
   ARGS --check bed --drag difelice --porosity 0.5 --gradient 300 LABELS validation)
 if(LAMMPS_RELEASE STREQUAL "4Feb2025")
+  # a packed bed heated by a hot inflow against Schumann's solution
+  sphthermal_python_test(granular.heatbed ${grains_test} LAMMPS ARGS --check heatbed LABELS validation)
   sphthermal_python_test(granular.heat.ranz-marshall ${grains_test} LAMMPS
     ARGS --check heat --heat ranz-marshall LABELS validation)
 endif()
