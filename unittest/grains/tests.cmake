@@ -5,6 +5,9 @@
 add_header_test(test_grain_laws grains/test_grain_laws.c)
 sphthermal_test(granular.laws LABELS unit COMMAND test_grain_laws)
 
+# Schumann's solution (tools/schumann.py) against its own marched equations
+sphthermal_python_test(granular.reference.schumann tools/test_schumann.py LABELS unit)
+
 set(grains_test ${CMAKE_CURRENT_LIST_DIR}/test_grains.py)
 # LAMMPS 4Feb2025 has the grains' temperature (fix heat/flow); 29Sep2021 none
 if(LAMMPS_RELEASE STREQUAL "4Feb2025")
