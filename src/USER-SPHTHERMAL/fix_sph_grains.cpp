@@ -98,7 +98,7 @@ FixSPHGrains::FixSPHGrains(LAMMPS *lmp, int narg, char **arg) :
   peratom_flag = 1;    // slip (3), porosity and fluid temperature at each grain
   size_peratom_cols = 5;
   peratom_freq = 1;
-  comm_reverse = 4;
+  comm_reverse = REACTION_VALUES;
   comm_forward = 1;
   restart_global = 1;
   for (double &v : local) v = 0.0;
@@ -340,7 +340,7 @@ void FixSPHGrains::refresh_arrays()
   memory->destroy(reaction);
   memory->destroy(at_grain);
   nmax = atom->nmax;
-  memory->create(reaction, nmax, 4, "sph/grains:reaction");
+  memory->create(reaction, nmax, REACTION_VALUES, "sph/grains:reaction");
   memory->create(at_grain, nmax, 5, "sph/grains:at_grain");
   array_atom = at_grain;
 }
@@ -360,7 +360,7 @@ void FixSPHGrains::exchange()
     if (atom->mask[i] & fluid_groupbit) at_grain[i][3] = porosity[i];
   }
   for (int i = 0; i < nall; i++)
-    reaction[i][0] = reaction[i][1] = reaction[i][2] = reaction[i][3] = 0.0;
+    for (int k = 0; k < REACTION_VALUES; k++) reaction[i][k] = 0.0;
 
   double **x = atom->x, **v = atom->v, **f = atom->f;
   const double *radius = atom->radius, *rmass = atom->rmass;
@@ -500,6 +500,7 @@ void FixSPHGrains::exchange()
     const double heat_scale = (heat_weight > 0.0) ? conductance / heat_weight : 0.0;
     for (const Share &share : shares) {
       for (int k = 0; k < 3; k++) reaction[share.atom][k] -= share.weight * inv_weight * force[k];
+      reaction[share.atom][4] += share.weight * inv_weight * beta;
       if (heat)
         reaction[share.atom][3] -=
             share.heat_weight * heat_scale * (share.temperature - grain_temperature[i]);
@@ -511,6 +512,15 @@ void FixSPHGrains::exchange()
     if (!(mask[i] & fluid_groupbit)) continue;
     for (int k = 0; k < 3; k++) f[i][k] += reaction[i][k];
     desph[i] += reaction[i][3] / particles.mass(i);
+    // the fluid's side of the explicit drag: its shares of the grains' beta
+    // relax its velocity in m / sum beta
+    if (dt * reaction[i][4] > particles.mass(i))
+      SPHCheck::stop(
+          lmp, FLERR,
+          fmt::format("{} {}: the grains' drag relaxes the velocity of fluid atom {} in m / "
+                      "(its share of their beta) = {}, less than the timestep {}: the "
+                      "explicit coupling is unstable; take a smaller timestep",
+                      cmd, id, tag[i], particles.mass(i) / reaction[i][4], dt));
   }
 }
 
@@ -518,7 +528,7 @@ void FixSPHGrains::exchange()
 
 int FixSPHGrains::pack_reverse_comm(int n, int first, double *buf)
 {
-  const int values = reverse_mode == REVERSE_POROSITY ? 1 : 4;
+  const int values = reverse_mode == REVERSE_POROSITY ? 1 : REACTION_VALUES;
   int m = 0;
   for (int i = first; i < first + n; i++)
     for (int k = 0; k < values; k++) buf[m++] = reaction[i][k];
@@ -527,7 +537,7 @@ int FixSPHGrains::pack_reverse_comm(int n, int first, double *buf)
 
 void FixSPHGrains::unpack_reverse_comm(int n, int *list_send, double *buf)
 {
-  const int values = reverse_mode == REVERSE_POROSITY ? 1 : 4;
+  const int values = reverse_mode == REVERSE_POROSITY ? 1 : REACTION_VALUES;
   int m = 0;
   for (int i = 0; i < n; i++)
     for (int k = 0; k < values; k++) reaction[list_send[i]][k] += buf[m++];
@@ -563,5 +573,5 @@ double FixSPHGrains::compute_vector(int n)
 
 double FixSPHGrains::memory_usage()
 {
-  return 9.0 * nmax * sizeof(double);
+  return (REACTION_VALUES + 5.0) * nmax * sizeof(double);
 }

@@ -60,7 +60,9 @@ class FixSPHGrains : public Fix {
   sphk_kernel kernel;
   double cutsq;
   // per atom, owned and ghost: the force (3) and the heat (1) that the
-  // grains give it, sent back to the owners
+  // grains give it and its share of their drag coefficients beta (1),
+  // sent back to the owners
+  static constexpr int REACTION_VALUES = 5;
   double **reaction;
   int nmax;
   // per atom, owned: a grain's slip u - v (3), porosity and the fluid's
