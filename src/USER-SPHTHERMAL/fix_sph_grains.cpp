@@ -423,7 +423,8 @@ void FixSPHGrains::exchange()
       const double t = particles.temperature(j);
       weight += vw;
       for (int k = 0; k < 3; k++) u[k] += vw * v[j][k];
-      fluid_rho += vw * particles.fluid_density(j);
+      const double rho_j = particles.fluid_density(j);
+      fluid_rho += vw * rho_j;
       fluid_mu += vw * materials->viscosity_at(type[j], t, cmd);
       heat_weight += vw_heat;
       fluid_t += vw_heat * t;
@@ -432,8 +433,7 @@ void FixSPHGrains::exchange()
         fluid_cp += vw_heat * cv[j];
       }
       const double g = minus_dwdr_r_scale * sphk_df_over_q(kernel.kind, r * kernel.inv_h);
-      sphi_add_g(&pressure, dx, w, g, volume,
-                 sphe_pressure_at(materials->eos(type[j]), particles.fluid_density(j), t));
+      sphi_add_g(&pressure, dx, w, g, volume, sphe_pressure_at(materials->eos(type[j]), rho_j, t));
     }
     if (!(weight > 0.0)) {    // out of the fluid (above its surface, say): no exchange
       local[4] += 1.0;
