@@ -69,6 +69,13 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   int xi_given;          // xi was given (only the cleary form reads it)
   double delta;          // density diffusion (Ng et al. 2020, eq 5), 0: none
   double heating;        // fraction of the viscous work turned into heat, 0: none
+  // the command's pressure form and delta (-1: not given, the scene's
+  // default at init) and the defaults last logged
+  int pressure_request, pressure_logged;
+  double delta_request;
+  int delta_logged;
+  int grain_forms_warned;    // choose_scene_forms() warned (once per style)
+  void choose_scene_forms();
   // 1: the pair terms see the pressure less an offset (pvector[0], for
   // compute pair) that holds the fluid's volume-weighted mean pressure at
   // mean_pressure

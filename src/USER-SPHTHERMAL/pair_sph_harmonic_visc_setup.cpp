@@ -69,6 +69,51 @@ bool PairSPHHarmonicVisc::provide_shift_sums(int groupbit)
 }
 
 /* ----------------------------------------------------------------------
+   the pressure form and the density diffusion not given in the command:
+   the scene's (sph_scene_defaults.h); the forms given, checked against
+   the scene: with the grains of fix sph/grains the fluid's density
+   follows the porosity, and the averaged and symmetric forms, or a weak
+   diffusion, let its speeds grow (sph_scene_defaults.cpp)
+------------------------------------------------------------------------- */
+
+void PairSPHHarmonicVisc::choose_scene_forms()
+{
+  static constexpr double MIN_GRAIN_DELTA = 0.2;    // measured stable with grains
+  const char *who = "Pair style sph/harmonic/visc";
+  if (pressure_request < 0) {
+    const SPHSceneDefaults::Choice choice =
+        SPHSceneDefaults::pressure_form(lmp, gradient_request == 1);
+    pressure_form = choice.value;
+    SPHSceneDefaults::log(lmp, who, "pressure", sphf_pressure_name(pressure_form), choice,
+                          pressure_logged);
+  } else
+    pressure_form = pressure_request;
+  if (delta_request < 0.0) {
+    const SPHSceneDefaults::Choice choice = SPHSceneDefaults::density_diffusion(lmp);
+    delta = choice.number;
+    SPHSceneDefaults::log(lmp, who, "delta", fmt::format("{}", delta).c_str(), choice,
+                          delta_logged);
+  } else
+    delta = delta_request;
+
+  const std::string grains = SPHSceneDefaults::grains_fix(lmp);
+  if (grains.empty() || comm->me != 0 || grain_forms_warned) return;
+  grain_forms_warned = 1;
+  if (pressure_form != SPHF_P_SUM)
+    error->warning(FLERR,
+                   "{}: pressure {} with the unresolved grains of fix sph/grains {}: where the "
+                   "porosity changes (a bed's surface, grains that move) the fluid's speeds can "
+                   "grow without bound; pressure sum (the default with grains) keeps them down",
+                   who, sphf_pressure_name(pressure_form), grains);
+  if (delta < MIN_GRAIN_DELTA)
+    error->warning(FLERR,
+                   "{}: delta {} with the unresolved grains of fix sph/grains {}: where the "
+                   "porosity changes the fluid's speeds can grow without bound below {} (the "
+                   "default with grains is 0.3)",
+                   who, delta, grains, MIN_GRAIN_DELTA);
+}
+
+/* ----------------------------------------------------------------------
    pair_style sph/harmonic/visc kernel cutoff [pressure symmetric|sum|averaged]
      [viscosity cleary|adami|morris] [xi value] [eta f] [delta value]
      [diffusion fourtakas|molteni] [fourtakas gx gy gz] [heating fraction]
@@ -79,12 +124,14 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
 {
   int iarg = parse_kernel(narg, arg);
   pressure_form = SPHF_P_AVERAGED;
+  pressure_request = -1;    // the scene's default at init
   viscosity_form = SPHF_V_ADAMI;
   xi = SPHF_XI_CLEARY;
   xi_given = 0;
-  eta_factor = -1.0;    // the default depends on the viscosity form
-  delta = 0.1;          // Ng et al. 2020: "not a tunable parameter", 0.1 for all flows
-  heating = 0.0;        // Reece et al. 2024 and Ng et al. 2020 neglect it
+  eta_factor = -1.0;       // the default depends on the viscosity form
+  delta = 0.1;             // Ng et al. 2020: "not a tunable parameter", 0.1 for all flows
+  delta_request = -1.0;    // the scene's default at init (0.1 without grains)
+  heating = 0.0;           // Reece et al. 2024 and Ng et al. 2020 neglect it
   mean_pressure_held = 0;
   mean_pressure = 0.0;
   gradient_request = -1;    // the scene's default at init
@@ -98,7 +145,7 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
       error->all(FLERR, "Illegal {} command: missing value after '{}'", cmd, arg[iarg]);
     const char *value = arg[iarg + 1];
     if (strcmp(arg[iarg], "pressure") == 0) {
-      pressure_form = sphf_pressure_lookup(value);
+      pressure_form = pressure_request = sphf_pressure_lookup(value);
       if (pressure_form < 0)
         error->all(FLERR,
                    "Illegal {} command: unknown pressure form '{}' (symmetric, sum or averaged)",
@@ -155,7 +202,7 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
         error->all(FLERR, "Illegal {} command: unknown correction '{}' (none or gradient)", cmd,
                    value);
     } else if (strcmp(arg[iarg], "delta") == 0) {
-      delta = utils::numeric(FLERR, value, false, lmp);
+      delta = delta_request = utils::numeric(FLERR, value, false, lmp);
       if (delta < 0.0) error->all(FLERR, "Illegal {} command: delta {} must be >= 0", cmd, value);
     } else
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
@@ -166,7 +213,7 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
                "Illegal {} command: xi is a factor of the cleary viscosity form only; viscosity {} "
                "does not use it",
                cmd, sphf_viscosity_name(viscosity_form));
-  if (gradient_request == 1 && pressure_form != SPHF_P_AVERAGED)
+  if (gradient_request == 1 && pressure_request >= 0 && pressure_form != SPHF_P_AVERAGED)
     error->all(FLERR,
                "Illegal {} command: correction gradient needs the averaged pressure form (the "
                "default), not pressure {}",
@@ -273,6 +320,7 @@ void PairSPHHarmonicVisc::init_style()
                                     "'diffusion fourtakas' (the default) reads it");
   }
 
+  choose_scene_forms();
   // without 'correction' in the command, the scene's default (the
   // correction is made for the averaged pressure form only)
   if (gradient_request < 0 && pressure_form == SPHF_P_AVERAGED) {
@@ -306,10 +354,11 @@ double PairSPHHarmonicVisc::init_one(int, int)
 
 void PairSPHHarmonicVisc::write_restart_settings(FILE *fp)
 {
-  const int ints[6] = {kernel_kind,    pressure_form,      viscosity_form,
+  // the pressure form and delta as the command gave them (-1: the scene's)
+  const int ints[6] = {kernel_kind,    pressure_request,   viscosity_form,
                        diffusion_form, mean_pressure_held, gradient_request};
   // xi_given only checks the command line
-  const double doubles[9] = {cut_global, xi,         eta_factor, delta,        gravity[0],
+  const double doubles[9] = {cut_global, xi,         eta_factor, delta_request, gravity[0],
                              gravity[1], gravity[2], heating,    mean_pressure};
   SPHCheck::write_restart_head(fp, RESTART_VERSION);
   fwrite(ints, sizeof(int), 6, fp);
@@ -332,12 +381,15 @@ void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
   hydrostatic = (diffusion_form == DIFFUSION_GIVEN);
   for (int k = 0; k < 3; k++) gravity[k] = doubles[4 + k];
   kernel_kind = ints[0];
-  pressure_form = ints[1];
+  // files written before the scene's defaults hold the forms taken
+  pressure_request = ints[1];
+  pressure_form = (pressure_request >= 0) ? pressure_request : SPHF_P_AVERAGED;
   viscosity_form = ints[2];
   cut_global = doubles[0];
   xi = doubles[1];
   eta_factor = doubles[2];
-  delta = doubles[3];
+  delta_request = doubles[3];
+  delta = (delta_request >= 0.0) ? delta_request : 0.1;
   heating = doubles[7];
   mean_pressure_held = ints[4];
   mean_pressure = doubles[8];

@@ -32,7 +32,21 @@
    volume of a closed convection cell held: the continuity equation lets
    its mean density rise where the flow meets walls (0.6 % per diffusion time in
    the Rayleigh-Benard layer), and the viscosity, diffusivity and Rayleigh
-   number the fluid sees drift with it.
+   number the fluid sees drift with it. With the unresolved grains of fix
+   sph/grains the fluid's density is its superficial one, which changes
+   with the porosity: at the top of a bed, and in a bed of free grains
+   poured at random (unittest/grains/in.freebed), the averaged and
+   the symmetric pressure forms and a density diffusion of 0.1 let
+   round-off grow to speeds of the order of the speed of sound within
+   tenths of a second, at every timestep tried (0.05 to 0.2 h / c); the
+   sum form with 0.2 and 0.3 keeps the bed at rest (the fluid's speeds
+   decay). The sum form's force on a particle carries its absolute
+   pressure times the kernel gradient's sum, which is not nil where the
+   porosity changes: a background pressure of 0.01 rho0 c0^2 (40 Pa)
+   lowered a free bed's pressure drop from 40.4 to 33.5 Pa (at U = 4.5
+   mm/s), but without it the liquid's largest speed in a bed at rest grew
+   from 4 to 100 mm/s in 0.3 s (unittest/grains/in.freebed): the scene's
+   background stays.
 ------------------------------------------------------------------------- */
 
 #include "sph_scene_defaults.h"
@@ -41,6 +55,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "fix_sph_boussinesq.h"
+#include "fix_sph_grains.h"
 #include "fix_sph_hold_volume.h"
 #include "fix_sph_materials.h"
 #include "fix_sph_shift.h"
@@ -49,6 +64,7 @@
 #include "sph_body_force.h"
 #include "sph_checks.h"
 #include "sph_conduction_weights.h"
+#include "sph_flow.h"
 #include "sph_hub.h"
 #include "utils.h"
 
@@ -154,6 +170,36 @@ SPHSceneDefaults::Choice SPHSceneDefaults::pressure_correction(LAMMPS *lmp)
             "not validated (the cylindrical tank lost its axisymmetry with it)",
             0.0};
   return buoyant;
+}
+
+std::string SPHSceneDefaults::grains_fix(LAMMPS *lmp)
+{
+  const auto grains = SPHHub(lmp).fixes<FixSPHGrains>();
+  return grains.empty() ? std::string() : std::string(grains.front()->id);
+}
+
+SPHSceneDefaults::Choice SPHSceneDefaults::pressure_form(LAMMPS *lmp, int gradient_given)
+{
+  const std::string grains = grains_fix(lmp);
+  if (grains.empty())
+    return {SPHF_P_AVERAGED, "the default without the unresolved grains of fix sph/grains", 0.0};
+  if (gradient_given) return {SPHF_P_AVERAGED, "the form that 'correction gradient' needs", 0.0};
+  return {SPHF_P_SUM,
+          fmt::format("the default with the unresolved grains of fix sph/grains {}: where the "
+                      "porosity changes, the averaged and symmetric forms grow unstable",
+                      grains),
+          0.0};
+}
+
+SPHSceneDefaults::Choice SPHSceneDefaults::density_diffusion(LAMMPS *lmp)
+{
+  const std::string grains = grains_fix(lmp);
+  if (grains.empty()) return {0, "the default, Ng et al. 2020", 0.1};
+  return {1,
+          fmt::format("the default with the unresolved grains of fix sph/grains {}: where the "
+                      "porosity changes, 0.1 lets the fluid's speeds grow",
+                      grains),
+          0.3};
 }
 
 SPHSceneDefaults::Choice SPHSceneDefaults::heat_eta(LAMMPS *lmp)

@@ -40,6 +40,19 @@ namespace SPHSceneDefaults {
   // of shifted particles, as the flow pair's, 0.1 (Cleary's) otherwise
   Choice heat_eta(LAMMPS *lmp);
 
+  // 'pressure' of pair sph/harmonic/visc (SPHF_P_* of sph_flow.h): the
+  // sum form (P_a + P_b) / (rho_a rho_b) with the unresolved grains of fix
+  // sph/grains, the averaged form otherwise; 'correction gradient' given
+  // keeps the averaged form it needs
+  Choice pressure_form(LAMMPS *lmp, int gradient_given);
+
+  // 'delta' of pair sph/harmonic/visc (number): 0.3 with the unresolved
+  // grains of fix sph/grains, 0.1 (Ng et al. 2020) otherwise
+  Choice density_diffusion(LAMMPS *lmp);
+
+  // the fix sph/grains of the scene (its ID), "" when there is none
+  std::string grains_fix(LAMMPS *lmp);
+
   // 'background' of an equation of state of fix sph/materials that gives
   // none (number: the pressure as a multiple of rho0 c0^2): 0.1 in a
   // buoyancy-driven flow of shifted particles, 0.01 in an unshifted flow

@@ -35,6 +35,8 @@ sphthermal_python_test(granular.bed.gidaspow_inertial ${grains_test} LAMMPS
   LABELS validation)
 sphthermal_python_test(granular.bed.difelice ${grains_test} LAMMPS
   ARGS --check bed --drag difelice --porosity 0.5 --gradient 300 LABELS validation)
+# a bed of free grains poured at random and coupled with liquid at rest
+sphthermal_python_test(granular.freebed ${grains_test} LAMMPS ARGS --check freebed LABELS validation)
 if(LAMMPS_RELEASE STREQUAL "4Feb2025")
   # a packed bed heated by a hot inflow against Schumann's solution
   sphthermal_python_test(granular.heatbed ${grains_test} LAMMPS ARGS --check heatbed LABELS validation)
