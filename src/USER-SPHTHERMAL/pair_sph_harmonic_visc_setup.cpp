@@ -99,6 +99,7 @@ void PairSPHHarmonicVisc::choose_scene_forms()
   const std::string grains = SPHSceneDefaults::grains_fix(lmp);
   if (grains.empty() || comm->me != 0 || grain_forms_warned) return;
   grain_forms_warned = 1;
+  const double grain_delta = SPHSceneDefaults::density_diffusion(lmp).number;
   if (pressure_form != SPHF_P_SUM)
     error->warning(FLERR,
                    "{}: pressure {} with the unresolved grains of fix sph/grains {}: where the "
@@ -109,8 +110,8 @@ void PairSPHHarmonicVisc::choose_scene_forms()
     error->warning(FLERR,
                    "{}: delta {} with the unresolved grains of fix sph/grains {}: where the "
                    "porosity changes the fluid's speeds can grow without bound below {} (the "
-                   "default with grains is 0.3)",
-                   who, delta, grains, MIN_GRAIN_DELTA);
+                   "default with grains is {})",
+                   who, delta, grains, MIN_GRAIN_DELTA, grain_delta);
 }
 
 /* ----------------------------------------------------------------------
@@ -123,14 +124,12 @@ void PairSPHHarmonicVisc::choose_scene_forms()
 void PairSPHHarmonicVisc::settings(int narg, char **arg)
 {
   int iarg = parse_kernel(narg, arg);
-  pressure_form = SPHF_P_AVERAGED;
-  pressure_request = -1;    // the scene's default at init
+  pressure_request = -1;    // the scene's default at init (choose_scene_forms)
   viscosity_form = SPHF_V_ADAMI;
   xi = SPHF_XI_CLEARY;
   xi_given = 0;
   eta_factor = -1.0;       // the default depends on the viscosity form
-  delta = 0.1;             // Ng et al. 2020: "not a tunable parameter", 0.1 for all flows
-  delta_request = -1.0;    // the scene's default at init (0.1 without grains)
+  delta_request = -1.0;    // the scene's default at init (choose_scene_forms)
   heating = 0.0;           // Reece et al. 2024 and Ng et al. 2020 neglect it
   mean_pressure_held = 0;
   mean_pressure = 0.0;
@@ -145,8 +144,8 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
       error->all(FLERR, "Illegal {} command: missing value after '{}'", cmd, arg[iarg]);
     const char *value = arg[iarg + 1];
     if (strcmp(arg[iarg], "pressure") == 0) {
-      pressure_form = pressure_request = sphf_pressure_lookup(value);
-      if (pressure_form < 0)
+      pressure_request = sphf_pressure_lookup(value);
+      if (pressure_request < 0)
         error->all(FLERR,
                    "Illegal {} command: unknown pressure form '{}' (symmetric, sum or averaged)",
                    cmd, value);
@@ -202,8 +201,9 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
         error->all(FLERR, "Illegal {} command: unknown correction '{}' (none or gradient)", cmd,
                    value);
     } else if (strcmp(arg[iarg], "delta") == 0) {
-      delta = delta_request = utils::numeric(FLERR, value, false, lmp);
-      if (delta < 0.0) error->all(FLERR, "Illegal {} command: delta {} must be >= 0", cmd, value);
+      delta_request = utils::numeric(FLERR, value, false, lmp);
+      if (delta_request < 0.0)
+        error->all(FLERR, "Illegal {} command: delta {} must be >= 0", cmd, value);
     } else
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
     iarg += 2;
@@ -213,11 +213,11 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
                "Illegal {} command: xi is a factor of the cleary viscosity form only; viscosity {} "
                "does not use it",
                cmd, sphf_viscosity_name(viscosity_form));
-  if (gradient_request == 1 && pressure_request >= 0 && pressure_form != SPHF_P_AVERAGED)
+  if (gradient_request == 1 && pressure_request >= 0 && pressure_request != SPHF_P_AVERAGED)
     error->all(FLERR,
                "Illegal {} command: correction gradient needs the averaged pressure form (the "
                "default), not pressure {}",
-               cmd, sphf_pressure_name(pressure_form));
+               cmd, sphf_pressure_name(pressure_request));
   if (diffusion_form == DIFFUSION_GIVEN && gravity[0] == 0.0 && gravity[1] == 0.0 &&
       gravity[2] == 0.0)
     error->all(FLERR,
@@ -381,15 +381,13 @@ void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
   hydrostatic = (diffusion_form == DIFFUSION_GIVEN);
   for (int k = 0; k < 3; k++) gravity[k] = doubles[4 + k];
   kernel_kind = ints[0];
-  // files written before the scene's defaults hold the forms taken
+  // files written before the scene's defaults hold the forms taken: read as given
   pressure_request = ints[1];
-  pressure_form = (pressure_request >= 0) ? pressure_request : SPHF_P_AVERAGED;
   viscosity_form = ints[2];
   cut_global = doubles[0];
   xi = doubles[1];
   eta_factor = doubles[2];
   delta_request = doubles[3];
-  delta = (delta_request >= 0.0) ? delta_request : 0.1;
   heating = doubles[7];
   mean_pressure_held = ints[4];
   mean_pressure = doubles[8];
