@@ -22,6 +22,7 @@
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "pair_sph_harmonic_visc.h"
+#include "sph_body_force.h"
 #include "sph_checks.h"
 #include "sph_compat.h"
 #include "sph_eos.h"
@@ -47,6 +48,7 @@ static double sphere_volume(double radius)
 
 /* ----------------------------------------------------------------------
    fix ID grains sph/grains fluid <group> [drag <law>] [heat <law>] [fill yes|no]
+                                  [pressure gradient|hydrostatic]
 ------------------------------------------------------------------------- */
 
 // the restart's layout: whether the fluid was filled into the pores
@@ -54,9 +56,9 @@ static constexpr int RESTART_VERSION = 1;
 
 FixSPHGrains::FixSPHGrains(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), fluid_groupbit(0), drag_kind(SPHG_DRAG_DIFELICE),
-    heat_kind(SPHG_HEAT_RANZ_MARSHALL), list(nullptr), materials(nullptr), kernel(), cutsq(0.0),
-    reaction(nullptr), nmax(0), at_grain(nullptr), totals_step(-1), fill(0), filled(0),
-    porosity(nullptr), reverse_mode(REVERSE_REACTION)
+    heat_kind(SPHG_HEAT_RANZ_MARSHALL), pressure_kind(SPHG_PRESSURE_GRADIENT), list(nullptr),
+    materials(nullptr), kernel(), cutsq(0.0), reaction(nullptr), nmax(0), at_grain(nullptr),
+    totals_step(-1), fill(0), filled(0), porosity(nullptr), reverse_mode(REVERSE_REACTION)
 {
   for (int iarg = 3; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
@@ -82,10 +84,18 @@ FixSPHGrains::FixSPHGrains(LAMMPS *lmp, int narg, char **arg) :
                    cmd, value);
     } else if (strcmp(arg[iarg], "fill") == 0) {
       fill = SPHCompat::yes_no(error, FLERR, cmd, "fill", value);
+    } else if (strcmp(arg[iarg], "pressure") == 0) {
+      pressure_kind = sphg_pressure_lookup(value);
+      if (pressure_kind < 0)
+        error->all(FLERR,
+                   "Illegal {} command: unknown pressure form {} (expected gradient or "
+                   "hydrostatic)",
+                   cmd, value);
     } else
       error->all(FLERR,
-                 "Illegal {} command: unknown keyword {} (expected fluid, drag, heat or fill)", cmd,
-                 arg[iarg]);
+                 "Illegal {} command: unknown keyword {} (expected fluid, drag, heat, fill or "
+                 "pressure)",
+                 cmd, arg[iarg]);
   }
   if (fluid_name.empty())
     error->all(FLERR, "Illegal {} command: keyword fluid (the fluid's group) is required", cmd);
@@ -219,6 +229,10 @@ void FixSPHGrains::init()
   inlet_axis = -1;
   for (FixSPHInletTemperature *inlet : hub.fixes<FixSPHInletTemperature>())
     inlet_axis = inlet->flow_axis();
+  // the hydrostatic form's buoyancy: the body force's (none: no buoyancy)
+  body_force = (pressure_kind == SPHG_PRESSURE_HYDROSTATIC)
+      ? SPHBodyForce::find(lmp, "Fix sph/grains")
+      : nullptr;
   SPHCompat::request_full_list(neighbor, this, instance_me, settings.cutoff);
 }
 
@@ -432,8 +446,11 @@ void FixSPHGrains::exchange()
         fluid_k += vw_heat * materials->conductivity_at(type[j], t, cmd);
         fluid_cp += vw_heat * cv[j];
       }
-      const double g = minus_dwdr_r_scale * sphk_df_over_q(kernel.kind, r * kernel.inv_h);
-      sphi_add_g(&pressure, dx, w, g, volume, sphe_pressure_at(materials->eos(type[j]), rho_j, t));
+      if (pressure_kind == SPHG_PRESSURE_GRADIENT) {
+        const double g = minus_dwdr_r_scale * sphk_df_over_q(kernel.kind, r * kernel.inv_h);
+        sphi_add_g(&pressure, dx, w, g, volume,
+                   sphe_pressure_at(materials->eos(type[j]), rho_j, t));
+      }
     }
     if (!(weight > 0.0)) {    // out of the fluid (above its surface, say): no exchange
       local[4] += 1.0;
@@ -452,14 +469,17 @@ void FixSPHGrains::exchange()
     if (heat_weight > 0.0) fluid_t /= heat_weight;
     fluid_rho /= weight;
     fluid_mu /= weight;
-    double pressure_value = 0.0, grad_p[3];
-    sphi_solve(&pressure, kernel.h, &pressure_value, grad_p);
+    double pressure_value = 0.0, grad_p[3] = {0.0, 0.0, 0.0};
+    if (pressure_kind == SPHG_PRESSURE_GRADIENT)
+      sphi_solve(&pressure, kernel.h, &pressure_value, grad_p);
 
     const double slip[3] = {u[0] - v[i][0], u[1] - v[i][1], u[2] - v[i][2]};
     const double speed = sqrt(slip[0] * slip[0] + slip[1] * slip[1] + slip[2] * slip[2]);
     const double beta = sphg_drag_beta(drag_kind, d, porosity, fluid_rho, fluid_mu, speed);
     double force[3];
-    for (int k = 0; k < 3; k++) force[k] = beta * slip[k] - grain_volume * grad_p[k];
+    sphg_fluid_force(pressure_kind, beta, porosity, slip, grain_volume, grad_p, fluid_rho,
+                     body_force, force);
+    const double slip_coefficient = sphg_slip_coefficient(pressure_kind, beta, porosity);
     // h A, and the heat h A (T_f - T_i) with T_f the fluid's at the grain
     double conductance = 0.0, q = 0.0;
     if (heat && heat_weight > 0.0) {
@@ -474,13 +494,13 @@ void FixSPHGrains::exchange()
                       "{}, heat {}; fluid at the grain: T {}, rho {}, viscosity {})",
                       cmd, id, tag[i], force[0], force[1], force[2], q, fluid_t, fluid_rho,
                       fluid_mu));
-    if (dt * beta > rmass[i])
+    if (dt * slip_coefficient > rmass[i])
       SPHCheck::stop(
           lmp, FLERR,
           fmt::format(
               "{} {}: the drag relaxes the slip of grain atom {} in m / beta = {}, less than "
               "the timestep {}: the explicit coupling is unstable; take a smaller timestep",
-              cmd, id, tag[i], rmass[i] / beta, dt));
+              cmd, id, tag[i], rmass[i] / slip_coefficient, dt));
     for (int k = 0; k < 3; k++) {
       f[i][k] += force[k];
       local[k] += force[k];
@@ -500,7 +520,7 @@ void FixSPHGrains::exchange()
     const double heat_scale = (heat_weight > 0.0) ? conductance / heat_weight : 0.0;
     for (const Share &share : shares) {
       for (int k = 0; k < 3; k++) reaction[share.atom][k] -= share.weight * inv_weight * force[k];
-      reaction[share.atom][4] += share.weight * inv_weight * beta;
+      reaction[share.atom][4] += share.weight * inv_weight * slip_coefficient;
       if (heat)
         reaction[share.atom][3] -=
             share.heat_weight * heat_scale * (share.temperature - grain_temperature[i]);

@@ -53,8 +53,10 @@ class FixSPHGrains : public Fix {
  private:
   std::string fluid_name;    // the fluid group
   int fluid_groupbit;
-  int drag_kind;    // SPHG_DRAG_* of sph_grain_laws.h
-  int heat_kind;    // SPHG_HEAT_*
+  int drag_kind;                         // SPHG_DRAG_* of sph_grain_laws.h
+  int heat_kind;                         // SPHG_HEAT_*
+  int pressure_kind;                     // SPHG_PRESSURE_*: the fluid's force on a grain
+  const double *body_force = nullptr;    // g of the hydrostatic form, nullptr: none
   class NeighList *list;
   class FixSPHMaterials *materials;
   sphk_kernel kernel;

@@ -30,6 +30,18 @@
               Mechanics of fluidization, Chem. Eng. Prog. Symp. Ser. 62
               (1966) 100-111). A fixed bed with it has Ergun's pressure
               drop: eps dP/L = beta_v (u - v), U = eps (u - v).
+   The fluid's force on the grain, in one of two forms (Zhou, Kuang, Chu and
+   Yu, Discrete particle simulation of particle-fluid flow: model
+   formulations and their applicability, J. Fluid Mech. 661 (2010)
+   482-510: their models A and B, sets II and III):
+     gradient    F = beta (u - v) - V grad P: the drag and the force of the
+                 fluid's pressure gradient at the grain (model A);
+     hydrostatic F = (beta / eps)(u - v) - V rho_f g: the pressure
+                 gradient beyond the hydrostatic one carried by the drag,
+                 the hydrostatic one's as buoyancy (model B).
+   In a steady uniform bed, where eps grad P = -n beta (u - v) with n =
+   (1 - eps) / V grains per volume (plus the weight of the fluid), they are
+   the same force.
    Heat: Q = Nu k pi d (T_fluid - T_grain) (h = Nu k / d on the area pi d^2),
    Pr = mu cp / k.
      ranz-marshall Nu = 2 + 0.6 Re^(1/2) Pr^(1/3) (W. E. Ranz and W. R.
@@ -65,6 +77,12 @@ enum sphg_heat_kind {
   SPHG_HEAT_NKINDS
 };
 
+enum sphg_pressure_kind {
+  SPHG_PRESSURE_GRADIENT = 0,
+  SPHG_PRESSURE_HYDROSTATIC,
+  SPHG_PRESSURE_NKINDS
+};
+
 static inline const char *sphg_drag_name(int kind)
 {
   static const char *names[SPHG_DRAG_NKINDS] = {"stokes", "difelice", "gidaspow"};
@@ -75,6 +93,12 @@ static inline const char *sphg_heat_name(int kind)
 {
   static const char *names[SPHG_HEAT_NKINDS] = {"none", "ranz-marshall", "gunn"};
   return (kind >= 0 && kind < SPHG_HEAT_NKINDS) ? names[kind] : "?";
+}
+
+static inline const char *sphg_pressure_name(int kind)
+{
+  static const char *names[SPHG_PRESSURE_NKINDS] = {"gradient", "hydrostatic"};
+  return (kind >= 0 && kind < SPHG_PRESSURE_NKINDS) ? names[kind] : "?";
 }
 
 /* -1 when the name is not a law */
@@ -91,6 +115,14 @@ static inline int sphg_heat_lookup(const char *name)
   int kind;
   for (kind = 0; kind < SPHG_HEAT_NKINDS; kind++)
     if (strcmp(name, sphg_heat_name(kind)) == 0) return kind;
+  return -1;
+}
+
+static inline int sphg_pressure_lookup(const char *name)
+{
+  int kind;
+  for (kind = 0; kind < SPHG_PRESSURE_NKINDS; kind++)
+    if (strcmp(name, sphg_pressure_name(kind)) == 0) return kind;
   return -1;
 }
 
@@ -130,6 +162,32 @@ static inline double sphg_drag_beta(int kind, double d, double eps, double rho, 
   rho_w_cd = 0.3969 * rho * w + 6.048 * sqrt(rho * w * scale) + 23.04 * scale;
   return 0.125 * M_PI * d * d * rho_w_cd *
       pow(eps, 2.0 - sphg_difelice_chi(sphg_reynolds(eps, rho, d, w, mu)));
+}
+
+/* the coefficient of the slip in the force of the given form: beta, or
+   beta / eps when the drag carries the pressure gradient */
+static inline double sphg_slip_coefficient(int pressure_kind, double beta, double eps)
+{
+  return pressure_kind == SPHG_PRESSURE_HYDROSTATIC ? beta / eps : beta;
+}
+
+/* the fluid's force f on a grain of volume V with drag coefficient beta,
+   slip u - v and porosity eps: 'gradient' reads the fluid's pressure
+   gradient grad_p, 'hydrostatic' its density rho_f and the body force's
+   acceleration g (which may be NULL: none) */
+static inline void sphg_fluid_force(int pressure_kind, double beta, double eps,
+                                    const double slip[3], double volume, const double grad_p[3],
+                                    double rho_f, const double *g, double f[3])
+{
+  const double c = sphg_slip_coefficient(pressure_kind, beta, eps);
+  int k;
+  for (k = 0; k < 3; k++) {
+    f[k] = c * slip[k];
+    if (pressure_kind == SPHG_PRESSURE_HYDROSTATIC) {
+      if (g) f[k] -= volume * rho_f * g[k];
+    } else
+      f[k] -= volume * grad_p[k];
+  }
 }
 
 /* the Nusselt number of a grain (0 for 'none') */

@@ -97,6 +97,37 @@ int main(void)
               "gidaspow at rest, eps 1");
   expect_near(sphg_difelice_chi(0.0), 3.7, 0.0, "chi at rest");
 
+  /* the fluid's force in both forms. A steady uniform bed under gravity g:
+     the fluid's pressure gradient is its weight less the drag per fluid
+     volume, grad P = rho g - n beta w / eps (n = (1 - eps) / V), and both
+     forms give the grain the drag over eps and the buoyancy -V rho g */
+  {
+    const double eps = 0.42, volume = M_PI * d * d * d / 6.0, n = (1.0 - eps) / volume;
+    const double beta = sphg_drag_beta(SPHG_DRAG_GIDASPOW, d, eps, rho, mu, 0.01);
+    const double slip[3] = {0.002, -0.004, 0.01}, g[3] = {0.0, 0.0, -9.81};
+    double grad_p[3], gradient_form[3], hydrostatic_form[3];
+    for (a = 0; a < 3; a++) grad_p[a] = rho * g[a] - n * beta * slip[a] / eps;
+    sphg_fluid_force(SPHG_PRESSURE_GRADIENT, beta, eps, slip, volume, grad_p, rho, g, gradient_form);
+    sphg_fluid_force(SPHG_PRESSURE_HYDROSTATIC, beta, eps, slip, volume, grad_p, rho, g,
+                     hydrostatic_form);
+    for (a = 0; a < 3; a++) {
+      expect_near(hydrostatic_form[a], gradient_form[a], 1e-13, "the two forms in a uniform bed");
+      expect_near(hydrostatic_form[a], beta * slip[a] / eps - volume * rho * g[a], 1e-15,
+                  "hydrostatic form");
+    }
+    /* no body force: no buoyancy */
+    sphg_fluid_force(SPHG_PRESSURE_HYDROSTATIC, beta, eps, slip, volume, grad_p, rho, NULL,
+                     hydrostatic_form);
+    expect_near(hydrostatic_form[2], beta * slip[2] / eps, 1e-15, "hydrostatic form without g");
+    expect_near(sphg_slip_coefficient(SPHG_PRESSURE_GRADIENT, beta, eps), beta, 0.0,
+                "slip coefficient, gradient");
+    if (sphg_pressure_lookup("hydrostatic") != SPHG_PRESSURE_HYDROSTATIC ||
+        sphg_pressure_lookup("gradient") != SPHG_PRESSURE_GRADIENT || sphg_pressure_lookup("B") != -1) {
+      failures++;
+      printf("FAIL the pressure forms' names\n");
+    }
+  }
+
   /* heat: a sphere at rest conducts with Nu = 2, both laws (gunn at eps = 1) */
   expect_near(sphg_nusselt(SPHG_HEAT_RANZ_MARSHALL, 0.5, 0.0, 7.0), 2.0, 1e-15, "ranz-marshall at rest");
   expect_near(sphg_nusselt(SPHG_HEAT_GUNN, 1.0, 0.0, 7.0), 2.0, 1e-15, "gunn at rest, eps 1");

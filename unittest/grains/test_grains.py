@@ -91,6 +91,7 @@ def main():
     parser.add_argument("--check", required=True, choices=["conservation", "settle", "heat", "column", "bed", "heatbed", "freebed",
                                                            "mpi", "restart"])
     parser.add_argument("--drag", default="difelice")
+    parser.add_argument("--pressure", default="gradient", help="the fluid's force on a grain (keyword pressure)")
     parser.add_argument("--heat", default="ranz-marshall")
     parser.add_argument("--steps", type=int, default=200)
     parser.add_argument("--conduction", type=int, default=0, help="1: the fluid also conducts")
@@ -104,7 +105,7 @@ def main():
 
     def run(np_=1, steps=args.steps, **more):
         return run_input(args.lmp, INPUT, {"plugin": plugin, "drag": args.drag, "heat": args.heat,
-                                           "heat_on": int(args.heat != "none"), "steps": steps,
+                                           "heat_on": int(args.heat != "none"), "steps": steps, "pressure": args.pressure,
                                            "conduction": args.conduction, **more}, workdir,
                          np_, args.mpirun)
 
@@ -211,7 +212,8 @@ def main():
         that(v["velocity"] < 0.0, "the grain sinks", f"{v['velocity']:.6e}")
     elif args.check == "column":
         for rho_p in (RHO_F, RHO_P):
-            text = run_input(args.lmp, COLUMN, {"plugin": plugin, "rho_grain": rho_p, "drag": args.drag}, workdir)
+            text = run_input(args.lmp, COLUMN, {"plugin": plugin, "rho_grain": rho_p, "drag": args.drag,
+                                                    "pressure": args.pressure}, workdir)
             v, line = numbers(text, "column", ["velocity", "slip", "force", "porosity"])
             weight = rho_p * math.pi * D ** 3 / 6.0 * G
             terminal = terminal_slip(args.drag, (rho_p - RHO_F) * math.pi * D ** 3 / 6.0 * G, D, RHO_F, MU,
