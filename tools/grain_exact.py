@@ -13,6 +13,16 @@ the laws as published (not from the package's sph_grain_laws.h):
       89-94), dP/L = 150 (1-eps)^2 mu U / (eps^3 d^2) + 1.75 (1-eps) rho U^2
       / (eps^3 d); ergun_superficial(gradient, ...) its inverse (the positive
       root of the quadratic)
+  ergun_fluidisation(d, eps, rho_f, rho_p, mu, g): the minimum fluidisation
+      velocity of a bed of porosity eps by Ergun's equation: the superficial
+      velocity at which the bed's pressure drop per length equals its weight
+      less buoyancy per volume, (1 - eps)(rho_p - rho_f) g
+  wen_yu_fluidisation(d, rho_f, rho_p, mu, g): Wen and Yu's estimate (Chem.
+      Eng. Prog. Symp. Ser. 62 (1966) 100-111), Re_mf = sqrt(33.7^2 +
+      0.0408 Ar) - 33.7, Ar = d^3 rho_f (rho_p - rho_f) g / mu^2: Ergun's
+      with its porosity and sphericity terms replaced by constants fitted
+      to measured beds, 1 / (phi eps^3) = 14 and (1 - eps) / (phi^2 eps^3)
+      = 11 (for spheres, eps = 0.415 and 0.383)
   bed_superficial(drag, gradient, d, eps, rho, mu): the superficial velocity
       U through a fixed bed of grains of diameter d at porosity eps whose
       drag law (difelice; gidaspow: Ergun's below eps = 0.8, Wen and Yu's
@@ -94,3 +104,12 @@ def lumped_temperature(t, t0, tf, d, rho_p, cp, k, nu_number):
     mass = rho_p * math.pi * d ** 3 / 6.0
     tau = mass * cp / (nu_number * k * math.pi * d)
     return tf + (t0 - tf) * math.exp(-t / tau), tau
+
+
+def ergun_fluidisation(d, eps, rho_f, rho_p, mu, g):
+    return ergun_superficial((1.0 - eps) * (rho_p - rho_f) * g, d, eps, rho_f, mu)
+
+
+def wen_yu_fluidisation(d, rho_f, rho_p, mu, g):
+    archimedes = d ** 3 * rho_f * (rho_p - rho_f) * g / mu ** 2
+    return (math.sqrt(33.7 ** 2 + 0.0408 * archimedes) - 33.7) * mu / (rho_f * d)

@@ -203,6 +203,7 @@ void FixSPHWallAdami::find_fluid_near()
 {
   double *const *const x = atom->x;
   const int *const mask = atom->mask;
+  const int *const type = atom->type;
   const int nall = atom->nlocal + atom->nghost;
   const double reach = cutoff + neighbor->skin;
   cells.bin(x, mask, nall, wall_groupbit, reach);
@@ -211,8 +212,10 @@ void FixSPHWallAdami::find_fluid_near()
       [&](int i) {
         return (mask[i] & groupbit) ? x[i] : nullptr;
       },
-      [](int) {
-        return true;
+      // the fluid: atoms with an equation of state (not the grains of fix
+      // sph/grains, nor solids of other groups)
+      [&](int j) {
+        return materials->eos(type[j]) != nullptr;
       },
       first_fluid, fluid_near, fluid_atoms);
   fluid_near_valid = true;

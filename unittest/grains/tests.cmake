@@ -42,9 +42,18 @@ sphthermal_python_test(granular.bed.difelice ${grains_test} LAMMPS
   ARGS --check bed --drag difelice --porosity 0.5 --gradient 300 LABELS validation)
 # a bed of free grains poured at random and coupled with liquid at rest
 sphthermal_python_test(granular.freebed ${grains_test} LAMMPS ARGS --check freebed LABELS validation)
+# the same bed at full size, poured through the liquid, fluidised by an
+# upward flow (examples/grains-fluidised), the hydrostatic form: below the
+# onset Ergun's pressure drop, above it the bed's weight
+sphthermal_python_test(granular.fluidised.fixed ${grains_test} LAMMPS
+  ARGS --check fluidised --pressure hydrostatic --velocity 0.0045 --time 1.2 --below 1 LABELS validation)
+sphthermal_python_test(granular.fluidised.lifted ${grains_test} LAMMPS
+  ARGS --check fluidised --pressure hydrostatic --velocity 0.0105 --time 0.6 --below 0 LABELS validation)
 if(LAMMPS_RELEASE STREQUAL "4Feb2025")
   # a packed bed heated by a hot inflow against Schumann's solution
   sphthermal_python_test(granular.heatbed ${grains_test} LAMMPS ARGS --check heatbed LABELS validation)
+  # the showcase: hot grains poured into a tank of cold oil (examples/grains-hot-pour)
+  sphthermal_python_test(granular.hot_pour ${grains_test} LAMMPS ARGS --check hot_pour LABELS validation)
   sphthermal_python_test(granular.heat.ranz-marshall ${grains_test} LAMMPS
     ARGS --check heat --heat ranz-marshall LABELS validation)
 endif()
