@@ -49,7 +49,7 @@ def main():
 
     print()
     print("In a column of liquid at rest under gravity (in.column, spacing 1 mm), the means over")
-    print("0.1 to 0.2 s: the force of the liquid on the grain (drag and -V grad P) against its")
+    print("0.1 to 0.2 s: the force of the liquid on the grain (drag and buoyancy) against its")
     print("weight, its slip against the drag law's terminal slip under its buoyant weight.")
     print()
     print("| grain density (kg/m^3) | force / weight - 1 (%) | slip (m/s) | drag law (m/s) | "

@@ -56,7 +56,7 @@ static constexpr int RESTART_VERSION = 1;
 
 FixSPHGrains::FixSPHGrains(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), fluid_groupbit(0), drag_kind(SPHG_DRAG_DIFELICE),
-    heat_kind(SPHG_HEAT_RANZ_MARSHALL), pressure_kind(SPHG_PRESSURE_GRADIENT), list(nullptr),
+    heat_kind(SPHG_HEAT_RANZ_MARSHALL), pressure_kind(SPHG_PRESSURE_HYDROSTATIC), list(nullptr),
     materials(nullptr), kernel(), cutsq(0.0), reaction(nullptr), nmax(0), at_grain(nullptr),
     totals_step(-1), fill(0), filled(0), porosity(nullptr), reverse_mode(REVERSE_REACTION)
 {

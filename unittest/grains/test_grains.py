@@ -111,7 +111,7 @@ def main():
                                                            "fluidised", "hot_pour",
                                                            "mpi", "restart"])
     parser.add_argument("--drag", default="difelice")
-    parser.add_argument("--pressure", default="gradient", help="the fluid's force on a grain (keyword pressure)")
+    parser.add_argument("--pressure", default="hydrostatic", help="the fluid's force on a grain (keyword pressure)")
     parser.add_argument("--heat", default="ranz-marshall")
     parser.add_argument("--steps", type=int, default=200)
     parser.add_argument("--conduction", type=int, default=0, help="1: the fluid also conducts")

@@ -24,13 +24,13 @@ foreach(drag stokes difelice)
   sphthermal_python_test(granular.settle.${drag} ${grains_test} LAMMPS
     ARGS --check settle --drag ${drag} LABELS validation)
 endforeach()
-# the fluid's force in the hydrostatic form (model B): still exchanged to round-off
-sphthermal_python_test(granular.conservation.hydrostatic ${grains_test} LAMMPS
-  ARGS --check conservation --drag difelice --heat ${grains_heat} --pressure hydrostatic LABELS unit)
+# the fluid's force in the gradient form (model A): still exchanged to round-off
+sphthermal_python_test(granular.conservation.gradient ${grains_test} LAMMPS
+  ARGS --check conservation --drag difelice --heat ${grains_heat} --pressure gradient LABELS unit)
 # buoyancy: in a column of liquid at rest under gravity, in both forms
 sphthermal_python_test(granular.column ${grains_test} LAMMPS ARGS --check column LABELS validation)
-sphthermal_python_test(granular.column.hydrostatic ${grains_test} LAMMPS
-  ARGS --check column --pressure hydrostatic LABELS validation)
+sphthermal_python_test(granular.column.gradient ${grains_test} LAMMPS
+  ARGS --check column --pressure gradient LABELS validation)
 # a fixed packed bed against the drag law's exact value and Ergun's equation
 # (examples/grains-bed): viscous at porosity 0.5, inertial at 0.7
 sphthermal_python_test(granular.bed.gidaspow_viscous ${grains_test} LAMMPS
