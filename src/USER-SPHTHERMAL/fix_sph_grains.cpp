@@ -233,7 +233,32 @@ void FixSPHGrains::init()
   body_force = (pressure_kind == SPHG_PRESSURE_HYDROSTATIC)
       ? SPHBodyForce::find(lmp, "Fix sph/grains")
       : nullptr;
+  if (body_force) warn_weightless_fluid();
   SPHCompat::request_full_list(neighbor, this, instance_me, settings.cutoff);
+}
+
+/* the buoyancy -V rho_f g is the reaction of the fluid's weight: a body
+   force on the grains that leaves some of the fluid out pushes that fluid
+   down with nothing to hold it (and without the hydrostatic form the
+   grains would float on nothing) */
+
+void FixSPHGrains::warn_weightless_fluid()
+{
+  int weighted = 0;
+  for (int i = 0; i < modify->nfix; i++) {
+    int dim = 0;
+    if (modify->fix[i]->extract("gvec", dim) && dim == 1) weighted |= modify->fix[i]->groupbit;
+  }
+  bigint mine = 0, weightless = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & fluid_groupbit) && !(atom->mask[i] & weighted)) mine++;
+  MPI_Allreduce(&mine, &weightless, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (weightless > 0 && comm->me == 0)
+    error->warning(FLERR,
+                   "{} {}: {} atoms of the fluid (group {}) are not under the body force that "
+                   "gives the grains their buoyancy (pressure hydrostatic): the buoyancy's "
+                   "reaction pushes them with no weight to balance it; apply it to the fluid too",
+                   cmd, id, weightless, fluid_name);
 }
 
 void FixSPHGrains::init_list(int /*id*/, NeighList *ptr)

@@ -103,6 +103,7 @@ class FixSPHGrains : public Fix {
   void fill_pores();
   void exchange();
   void check_atom_style() const;
+  void warn_weightless_fluid();
 };
 
 }    // namespace LAMMPS_NS
