@@ -244,11 +244,7 @@ void FixSPHGrains::init()
 
 void FixSPHGrains::warn_weightless_fluid()
 {
-  int weighted = 0;
-  for (int i = 0; i < modify->nfix; i++) {
-    int dim = 0;
-    if (modify->fix[i]->extract("gvec", dim) && dim == 1) weighted |= modify->fix[i]->groupbit;
-  }
+  const int weighted = SPHBodyForce::groupbits(lmp);
   bigint mine = 0, weightless = 0;
   for (int i = 0; i < atom->nlocal; i++)
     if ((atom->mask[i] & fluid_groupbit) && !(atom->mask[i] & weighted)) mine++;

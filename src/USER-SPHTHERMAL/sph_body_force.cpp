@@ -91,6 +91,17 @@ Fix *SPHBodyForce::source(LAMMPS *lmp)
   return nullptr;
 }
 
+int SPHBodyForce::groupbits(LAMMPS *lmp)
+{
+  int bits = 0;
+  for (int i = 0; i < lmp->modify->nfix; i++) {
+    int dim = 0;
+    if (lmp->modify->fix[i]->extract("gvec", dim) && dim == 1)
+      bits |= lmp->modify->fix[i]->groupbit;
+  }
+  return bits;
+}
+
 /* ----------------------------------------------------------------------
    fix gravity keeps how its magnitude is given (a number or a variable)
    protected: read it through a class derived from it (a member pointer

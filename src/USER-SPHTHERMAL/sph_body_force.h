@@ -102,6 +102,9 @@ namespace SPHBodyForce {
   // the fix whose acceleration find() returns, nullptr when there is none
   class Fix *source(LAMMPS *lmp);
 
+  // the group bits of the atoms some body-force fix acts on (0: none)
+  int groupbits(LAMMPS *lmp);
+
   // 1 when 'fix' is a fix gravity whose magnitude is a constant 0 (not a
   // variable, which may ramp it up later): its acceleration is 0 for good
   int constant_zero(class Fix *fix);
