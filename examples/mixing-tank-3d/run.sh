@@ -28,7 +28,7 @@ name=tank3d_${components}_${N}
 # tools/mixing_tank.py, write_tank_data).
 dx=$("$PYTHON" "$root/tools/mixing_tank.py" setup "$N" "$name.data")
 $run "$LMP" -in "$here/in.tank3d" -var plugin "$PLUGIN" -var data "$name.data" -var dx "$dx" \
-  -var components "$components" -var tend "$TEND" ${C0:+-var c0 "$C0"} -var out "$name.dump" -var mixing "$name.mixing.txt" \
+  -var components "$components" -var tend "$TEND" ${C0:+-var c0 "$C0"} -var out "$name.dump" -var mixing "$name.mixing.txt" -var density "$name.density.txt" \
   -log "log.$name" | grep -E "^Reece|^final"
 "$PYTHON" "$root/tools/mixing_tank.py" "$name.dump" --mixing "$name.mixing.txt" --dim 3 --dx "$dx" \
   --png "$name"

@@ -73,7 +73,8 @@ static constexpr double BIG = 1.0e300;
 /* ---------------------------------------------------------------------- */
 
 FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), dtmin(0.0), dtmax(BIG), h_user(0.0), h(0.0), until(-1.0), active(0),
+    Fix(lmp, narg, arg), dtmin(0.0), dtmax(BIG), h_user(0.0), h(0.0), until(-1.0), start_time(-1.0),
+    active(0),
     respa_flag(0), warned(0), bound_warned(0), halted(0), materials(nullptr), heat(nullptr),
     body_force(nullptr)
 {
@@ -113,6 +114,8 @@ FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
       h_user = parse_value(iarg, narg, arg, false);
     else if (strcmp(arg[iarg], "until") == 0)
       until = parse_value(iarg, narg, arg, false);
+    else if (strcmp(arg[iarg], "time") == 0)
+      start_time = parse_value(iarg, narg, arg, true);
     else
       error->all(FLERR, "Illegal {} command: unknown keyword '{}'", cmd, arg[iarg]);
     iarg += 2;
@@ -144,6 +147,12 @@ FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
   // that made those steps, as the 'timestep' command does; a no-op after a
   // run, and a restart file of this fix sets its own time below
   update->update_time();
+  // 'time': the elapsed time from here on (reset_timestep's own 'time'
+  // keyword is missing from LAMMPS 29Sep2021, whose reset_timestep keeps it)
+  if (start_time >= 0.0) {
+    update->atime = start_time;
+    update->atimestep = update->ntimestep;
+  }
 
   // the elapsed time depends on every dt: keep it across restarts, and
   // forbid reset_timestep while the fix exists (as fix dt/reset does)

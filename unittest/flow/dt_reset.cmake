@@ -28,6 +28,10 @@ dt_reset_test(restart ARGS ${mpirun} restart LABELS regression)
 # stopped by it, a run that starts at T stops at once with a warning
 dt_reset_test(until ARGS ${mpirun} until LABELS unit)
 
+# 'time t0': after a set-up run and reset_timestep 0 the next run starts at
+# t0 (LAMMPS 29Sep2021's reset_timestep keeps the time)
+dt_reset_test(time ARGS ${mpirun} time LABELS unit)
+
 # the same dt sequence and active limits on 2 and 4 ranks as on 1
 foreach(np 2 4)
   dt_reset_test(mpi.np${np} ARGS ${mpirun} mpi --np ${np} LABELS mpi PROCESSORS ${np})

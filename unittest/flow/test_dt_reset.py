@@ -25,6 +25,9 @@
               T stops before its first step with a warning, one that starts
               1e-8 before T takes two equal steps; with thermo every 7
               steps the stop step has its thermo row
+  time        'time t0' after a set-up run and reset_timestep 0: the next
+              run starts at t0 (0 and 1.5) on either release (29Sep2021's
+              reset_timestep keeps the time) and its time is the sum of dt
 
 The limits are written out here independently of the C++ code:
   acoustic C_a h / (c_i + |v_i|), force C_f sqrt(h m_i / |f_i|),
@@ -444,6 +447,21 @@ def cmd_until(a):
     return report()
 
 
+# ---------------------------------------------------------------- time
+
+def cmd_time(a):
+    with tempfile.TemporaryDirectory() as tmp:
+        for start in (0.0, 1.5):
+            output = run_lammps(a, "in.dt_reset", {"n": 12, "dump": 0, "steps": 20, "split": "reset",
+                                                   "dtargs2": f"min 0 time {start}"}, cwd=tmp)
+            first, second = thermo_runs(output)
+            check(first[-1]["time"] > 0.0 and second[0]["step"] == 0,
+                  f"time {start}: the set-up run reached {first[-1]['time']:.6g}, the next starts at step "
+                  f"{second[0]['step']}")
+            check_time(second, f"time {start}: the run after the set-up", start=start)
+    return report()
+
+
 # ---------------------------------------------------------------- mpi
 
 MPI_CONFIGS = {
@@ -492,13 +510,14 @@ def main():
     s.add_argument("--rtol", type=float, default=1e-12)
     sub.add_parser("restart")
     sub.add_parser("until")
+    sub.add_parser("time")
     s = sub.add_parser("mpi")
     s.add_argument("--np", type=int, required=True)
     s.add_argument("--rtol", type=float, default=1e-12)
     a = p.parse_args()
     a.lmp = os.path.abspath(a.lmp)
     a.plugin = os.path.abspath(a.plugin)
-    return {"conduction": cmd_conduction, "flow": cmd_flow, "restart": cmd_restart, "until": cmd_until,
+    return {"conduction": cmd_conduction, "flow": cmd_flow, "restart": cmd_restart, "until": cmd_until, "time": cmd_time,
             "mpi": cmd_mpi}[a.cmd](a)
 
 
