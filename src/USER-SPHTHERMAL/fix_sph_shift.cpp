@@ -439,7 +439,6 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
   double *const *const x = atom->x;
   double *const *const v = atom->v;
   double *const rho = atom->rho;
-  const double *const cv = atom->cv;
   const int *const mask = atom->mask;
   const int nlocal = atom->nlocal;
   const int newton = force->newton_pair;
@@ -606,8 +605,10 @@ template <int FORM, int CORRECT, int CONTINUITY> void FixSPHShift::shift_group()
     if (!(mask[i] & groupbit)) continue;
     for (int a = 0; a < 3; a++) x[i][a] += shift[3 * (size_t) i + a];
     if (CORRECT) {
-      atom->esph[i] += cv[i] * dtemp[i];
-      energy_local += particles.mass(i) * cv[i] * dtemp[i];
+      // (a melting atom's enthalpy moves with T by its mushy heat capacity)
+      const double desph = particles.esph_per_temperature(i) * dtemp[i];
+      atom->esph[i] += desph;
+      energy_local += particles.mass(i) * desph;
     }
     if (CORRECT == CORRECT_ALL) {
       rho[i] += dflow[4 * (size_t) i];

@@ -7,6 +7,7 @@
 #define LMP_SPH_PARTICLE_H
 
 #include "atom.h"
+#include "sph_phase_laws.h"
 
 namespace LAMMPS_NS {
 
@@ -38,6 +39,12 @@ namespace LAMMPS_NS {
 // rho_f = rho / eps (the locally averaged equations of the SPH-DEM of
 // Robinson, Ramaioli and Luding, Int. J. Multiphase Flow 59 (2014)
 // 121-134); without grains rho_f = rho.
+// The atoms of a type that melts and solidifies (fix sph/phase) hold in
+// esph their specific enthalpy, the latent heat included; T and the liquid
+// fraction follow from it by their type's law (sph_phase_laws.h), whose
+// solidus, liquidus and latent heat fix sph/phase puts on every atom in the
+// per-atom vectors PHASE_*_VECTOR (latent 0: the atom does not change
+// phase), owned and ghost atoms alike.
 // A view of this step's arrays: make one where the arrays are read (they
 // move when atoms are added), for owned and ghost atoms alike.
 class SPHParticles {
@@ -45,12 +52,17 @@ class SPHParticles {
   static constexpr const char *SOLID_VECTOR = "sph_machdyn";
   static constexpr const char *T0_VECTOR = "sph_energy_t0";
   static constexpr const char *POROSITY_VECTOR = "sph_porosity";
+  static constexpr const char *PHASE_SOLIDUS_VECTOR = "sph_phase_solidus";
+  static constexpr const char *PHASE_LIQUIDUS_VECTOR = "sph_phase_liquidus";
+  static constexpr const char *PHASE_LATENT_VECTOR = "sph_phase_latent";
 
   explicit SPHParticles(Atom *atom) :
       rmass((atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr), type_mass(atom->mass),
       type(atom->type), esph(atom->esph), cv(atom->cv), rho(atom->rho), solid(nullptr), t0(nullptr),
-      porosity(porosity_of(atom))
+      porosity(porosity_of(atom)), solidus(vector_of(atom, PHASE_SOLIDUS_VECTOR)),
+      liquidus(vector_of(atom, PHASE_LIQUIDUS_VECTOR)), latent(vector_of(atom, PHASE_LATENT_VECTOR))
   {
+    if (!solidus || !liquidus) latent = nullptr;
     if (!atom->smd_flag) return;
     int flag, cols;
     const int isolid = atom->find_custom(SOLID_VECTOR, flag, cols);
@@ -67,17 +79,43 @@ class SPHParticles {
   // eps of atom i: 1 without grains
   double porosity_at(int i) const { return porosity ? porosity[i] : 1.0; }
   // the per-atom porosity of fix sph/grains, or nullptr without one
-  static double *porosity_of(Atom *atom)
+  static double *porosity_of(Atom *atom) { return vector_of(atom, POROSITY_VECTOR); }
+  // the per-atom double vector 'name' of a fix property/atom, or nullptr
+  static double *vector_of(Atom *atom, const char *name)
   {
     int flag, cols;
-    const int index = atom->find_custom(POROSITY_VECTOR, flag, cols);
+    const int index = atom->find_custom(name, flag, cols);
     return (index >= 0 && flag == 1 && cols == 0) ? atom->dvector[index] : nullptr;
   }
   // whether atom i holds its energy as a MACHDYN solid does
   bool machdyn(int i) const { return solid && solid[i]; }
+  // whether atom i melts and solidifies (its esph includes the latent heat)
+  bool changes_phase(int i) const { return latent && latent[i] > 0.0; }
+  SPHPhaseLaw phase_law(int i) const { return SPHPhaseLaw{solidus[i], liquidus[i], latent[i]}; }
   double temperature(int i) const
   {
-    return machdyn(i) ? temperature_of_solid(i, t0[i]) : esph[i] / cv[i];
+    if (machdyn(i)) return temperature_of_solid(i, t0[i]);
+    if (changes_phase(i)) {
+      const SPHPhaseLaw law = phase_law(i);
+      return sphp_temperature(esph[i], cv[i], &law);
+    }
+    return esph[i] / cv[i];
+  }
+  // the liquid fraction of atom i: 0 or 1 for an atom that does not change
+  // phase is not defined; 0 is returned
+  double liquid_fraction(int i) const
+  {
+    if (!changes_phase(i)) return 0.0;
+    const SPHPhaseLaw law = phase_law(i);
+    return sphp_liquid_fraction(esph[i], cv[i], &law);
+  }
+  // d esph / dT of atom i at its state (not a MACHDYN solid): cv, or in a
+  // mushy zone cv + L / (Tl - Ts), 0 at a single melting temperature
+  double esph_per_temperature(int i) const
+  {
+    if (!changes_phase(i)) return cv[i];
+    const SPHPhaseLaw law = phase_law(i);
+    return sphp_heat_capacity(esph[i], cv[i], &law);
   }
   // the temperature of a MACHDYN solid atom whose type's T0 is t0_type
   // (also before the atoms are marked)
@@ -88,7 +126,12 @@ class SPHParticles {
   // the esph of atom i at temperature T
   double energy_at(int i, double T) const
   {
-    return machdyn(i) ? machdyn_energy(mass(i), cv[i], T, t0[i]) : cv[i] * T;
+    if (machdyn(i)) return machdyn_energy(mass(i), cv[i], T, t0[i]);
+    if (changes_phase(i)) {
+      const SPHPhaseLaw law = phase_law(i);
+      return sphp_energy(T, cv[i], &law);
+    }
+    return cv[i] * T;
   }
   // a MACHDYN solid particle's esph: its energy above T0
   static double machdyn_energy(double m, double cv, double T, double T0)
@@ -118,7 +161,7 @@ class SPHParticles {
   }
   void temperatures(double *out, int n) const
   {
-    if (solid)
+    if (solid || latent)
       for (int i = 0; i < n; i++) out[i] = temperature(i);
     else
       for (int i = 0; i < n; i++) out[i] = esph[i] / cv[i];
@@ -131,6 +174,8 @@ class SPHParticles {
   const int *solid;          // per atom: 1 for a MACHDYN solid
   const double *t0;          // per atom: its T0
   const double *porosity;    // per atom: eps among grains, or nullptr
+  // per atom: the phase law (fix sph/phase), or nullptr
+  const double *solidus, *liquidus, *latent;
 };
 
 }    // namespace LAMMPS_NS

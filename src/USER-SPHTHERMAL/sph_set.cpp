@@ -279,9 +279,10 @@ void SPHSet::set_temperature(const std::string &value)
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const int t = atom->type[i];
+    // (a melting type's enthalpy by its law of fix sph/phase, sph_particle.h)
     atom->esph[i] = solid[t] ? SPHParticles::machdyn_energy(particles.mass(i), atom->cv[i],
                                                             temperature[i], materials->tref(t))
-                             : atom->cv[i] * temperature[i];
+                             : particles.energy_at(i, temperature[i]);
     range[0] = fmax(range[0], -temperature[i]);
     range[1] = fmax(range[1], temperature[i]);
   }

@@ -210,6 +210,9 @@ PROBES = {
         "cavity", "fix dt fluid sph/dt/reset 3 acoustic 0.2 force 0.2 viscous 0.1 thermal 0.1 "
         "min 1.0e-6 max 1.0e-3", "dt time", {}),
     "fix_sph_heatflow": ("cavity", "fix into fluid sph/heatflow hot", "f_into", {}),
+    # a mushy zone about the mean temperature: some atoms melt and freeze
+    "fix_sph_phase": ("cavity", "fix phase all sph/phase type 1 solidus 0.45 liquidus 0.55 latent 0.05",
+                      "f_phase[1] f_phase[2]", {}),
     "fix_sph_hold_volume": ("cavity", "fix hold fluid sph/hold/volume", "f_hold", {}),
     "fix_sph_flowrate": ("channel", "fix rate fluid sph/flowrate x 0.05 relax 0.01", "f_rate[*]", {}),
     # T0 by layers: sums over a few atoms per layer, whose order the ranks

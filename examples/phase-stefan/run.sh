@@ -1,0 +1,25 @@
+#!/bin/sh
+# Melting by fix sph/phase against Neumann's exact solution of the Stefan
+# problem (tools/stefan.py): the one-phase problem (the solid at its melting
+# point), the two-phase one (the solid 0.5 below it) and a mushy zone 0.1
+# wide, at 40, 80, 160 and 320 particles on [0, 4] (the melt 0.94 to 1.24
+# deep at t = 1): the depth's error against time and resolution, the
+# temperature profile, and the energy balance.
+#   ./run.sh          every case (about 3 min on one core)
+# The CI runs 20 and 80 (tests phase.stefan.*: unittest/phase/test_phase.py).
+# Environment: LMP, PLUGIN, OUT (default ./out).
+set -e
+here=$(cd "$(dirname "$0")" && pwd)
+. "$here/../common.sh"
+
+for n in 40 80 160 320; do
+  $run "$LMP" -in "$here/in.stefan" -var plugin "$PLUGIN" -var n $n -var every 20 \
+    -var out "one_$n.dump" -log "log.one_$n" > /dev/null
+  $run "$LMP" -in "$here/in.stefan" -var plugin "$PLUGIN" -var n $n -var every 20 -var ti -0.5 \
+    -var out "two_$n.dump" -log "log.two_$n" > /dev/null
+done
+$run "$LMP" -in "$here/in.stefan" -var plugin "$PLUGIN" -var n 80 -var every 20 -var ti -0.05 \
+  -var mushy 0.1 -var out "mushy_80.dump" -log "log.mushy_80" > /dev/null
+cd "$here"
+"$PYTHON" results.py "$OUT" > results.md
+cat results.md

@@ -1,0 +1,259 @@
+/* ----------------------------------------------------------------------
+   USER-SPHTHERMAL: thermal SPH for LAMMPS.
+   This software is distributed under the GNU General Public License.
+
+   fix sph/phase: melting and solidification by the enthalpy method. The
+   types that change phase get a latent heat and a solidus and liquidus
+   temperature; their particles keep integrating esph, which then includes
+   the latent heat (sph_phase_laws.h), and every style reads their
+   temperature through SPHParticles, which finds the laws in per-atom
+   vectors that this fix keeps.
+------------------------------------------------------------------------- */
+
+#include "fix_sph_phase.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "memory.h"
+#include "modify.h"
+#include "sph_hub.h"
+#include "sph_particle.h"
+#include "utils.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static const char cmd[] = "fix sph/phase";
+// the internal fix property/atom that holds the per-atom vectors
+static const char VECTOR_FIX[] = "SPH_PHASE_LAWS";
+
+/* ----------------------------------------------------------------------
+   fix ID group sph/phase type I melting Tm latent L
+                          type I solidus Ts liquidus Tl latent L ...
+------------------------------------------------------------------------- */
+
+FixSPHPhase::FixSPHPhase(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), vectors_made(0), nmax(0), fraction(nullptr), totals{0.0, 0.0},
+    totals_current(0)
+{
+  if (!atom->esph_flag || !atom->cv_flag)
+    error->all(FLERR, "{} requires atom style sph (esph, cv)", cmd);
+  if (atom->smd_flag)
+    error->all(FLERR, "{}: MACHDYN solids (atom style smd) cannot change phase yet", cmd);
+  if (narg < 4) error->all(FLERR, "Illegal {} command: expected 'type I ...' after the style", cmd);
+
+  const int ntypes = atom->ntypes;
+  laws.assign(ntypes + 1, SPHPhaseLaw{0.0, 0.0, 0.0});
+  changes.assign(ntypes + 1, 0);
+  int iarg = 3;
+  while (iarg < narg) parse_type(narg, arg, iarg);
+
+  peratom_flag = 1;    // the liquid fraction
+  size_peratom_cols = 0;
+  peratom_freq = 1;
+  vector_flag = 1;    // the group's liquid mass fraction, the latent heat it holds
+  size_vector = 2;
+  extvector = -1;
+  extlist = new int[2]{0, 1};
+  global_freq = 1;
+  nevery = 1;
+  FixSPHPhase::grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixSPHPhase::~FixSPHPhase()
+{
+  atom->delete_callback(id, Atom::GROW);
+  memory->destroy(fraction);
+  delete[] extlist;
+  // the laws go with the fix: without it the atoms are of one phase again
+  if (vectors_made && modify->nfix && modify->find_fix(VECTOR_FIX) >= 0)
+    modify->delete_fix(VECTOR_FIX);
+}
+
+/* ----------------------------------------------------------------------
+   'type I ...' at arg[iarg]; moves iarg past it
+------------------------------------------------------------------------- */
+
+void FixSPHPhase::parse_type(int narg, char **arg, int &iarg)
+{
+  if (strcmp(arg[iarg], "type") != 0)
+    error->all(FLERR, "Illegal {} command: unknown keyword '{}' (expected 'type I ...')", cmd,
+               arg[iarg]);
+  if (iarg + 1 >= narg) error->all(FLERR, "Illegal {} command: missing I after 'type'", cmd);
+  int ilo, ihi;
+  utils::bounds(FLERR, arg[iarg + 1], 1, atom->ntypes, ilo, ihi, error);
+  const std::string where = fmt::format("{} command: type {}", cmd, arg[iarg + 1]);
+  iarg += 2;
+
+  double melting = NAN, solidus = NAN, liquidus = NAN, latent = NAN;
+  while (iarg < narg && strcmp(arg[iarg], "type") != 0) {
+    const char *name = arg[iarg];
+    double *slot = !strcmp(name, "melting") ? &melting
+        : !strcmp(name, "solidus")          ? &solidus
+        : !strcmp(name, "liquidus")         ? &liquidus
+        : !strcmp(name, "latent")           ? &latent
+                                            : nullptr;
+    if (!slot)
+      error->all(FLERR, "Illegal {}: unknown property '{}' (melting, solidus, liquidus or latent)",
+                 where, name);
+    if (iarg + 1 >= narg) error->all(FLERR, "Illegal {}: missing value after '{}'", where, name);
+    *slot = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    iarg += 2;
+  }
+
+  if (std::isnan(latent)) error->all(FLERR, "Illegal {}: no latent heat (latent L)", where);
+  if (!(latent > 0.0)) error->all(FLERR, "Illegal {}: latent {} must be > 0", where, latent);
+  if (!std::isnan(melting) && (!std::isnan(solidus) || !std::isnan(liquidus)))
+    error->all(FLERR, "Illegal {}: give melting Tm or solidus Ts and liquidus Tl, not both", where);
+  if (!std::isnan(melting)) solidus = liquidus = melting;
+  if (std::isnan(solidus) || std::isnan(liquidus))
+    error->all(FLERR,
+               "Illegal {}: latent {} without its melting temperature (melting Tm, or solidus "
+               "Ts and liquidus Tl)",
+               where, latent);
+  if (liquidus < solidus)
+    error->all(FLERR, "Illegal {}: liquidus {} is below solidus {}", where, liquidus, solidus);
+  for (int t = ilo; t <= ihi; t++) {
+    laws[t] = SPHPhaseLaw{solidus, liquidus, latent};
+    changes[t] = 1;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the per-atom vectors, held by an internal fix property/atom that moves
+   them with the atoms and to the ghosts; marked at once, so that sph/set
+   after this fix sets the phase-changing atoms' energy with their laws
+------------------------------------------------------------------------- */
+
+void FixSPHPhase::post_constructor()
+{
+  int flag, cols;
+  if (atom->find_custom(SPHParticles::PHASE_LATENT_VECTOR, flag, cols) < 0) {
+    modify->add_fix(fmt::format("{} all property/atom d_{} d_{} d_{} ghost yes", VECTOR_FIX,
+                                SPHParticles::PHASE_SOLIDUS_VECTOR,
+                                SPHParticles::PHASE_LIQUIDUS_VECTOR,
+                                SPHParticles::PHASE_LATENT_VECTOR));
+    vectors_made = 1;
+  }
+  mark();
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixSPHPhase::setmask()
+{
+  return POST_NEIGHBOR | END_OF_STEP;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHPhase::init()
+{
+  if (SPHHub(lmp).fixes<FixSPHPhase>().size() > 1)
+    error->all(FLERR, "{}: only one fix sph/phase may be defined", cmd);
+  mark();
+}
+
+/* ----------------------------------------------------------------------
+   the laws follow the atom types: owned and ghost atoms alike, also those
+   made since the last marking (fix sph/open, deposit)
+------------------------------------------------------------------------- */
+
+void FixSPHPhase::mark()
+{
+  int flag, cols;
+  const int isolidus = atom->find_custom(SPHParticles::PHASE_SOLIDUS_VECTOR, flag, cols);
+  const int iliquidus = atom->find_custom(SPHParticles::PHASE_LIQUIDUS_VECTOR, flag, cols);
+  const int ilatent = atom->find_custom(SPHParticles::PHASE_LATENT_VECTOR, flag, cols);
+  if (isolidus < 0 || iliquidus < 0 || ilatent < 0) return;
+  double *const solidus = atom->dvector[isolidus];
+  double *const liquidus = atom->dvector[iliquidus];
+  double *const latent = atom->dvector[ilatent];
+  const int *const type = atom->type;
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) {
+    const SPHPhaseLaw &law = laws[type[i]];
+    solidus[i] = law.solidus;
+    liquidus[i] = law.liquidus;
+    latent[i] = law.latent;    // 0: the type does not change phase
+  }
+}
+
+void FixSPHPhase::setup_post_neighbor()
+{
+  mark();
+}
+
+void FixSPHPhase::post_neighbor()
+{
+  mark();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHPhase::setup(int /*vflag*/)
+{
+  update_fraction();
+}
+
+void FixSPHPhase::end_of_step()
+{
+  update_fraction();
+}
+
+/* ----------------------------------------------------------------------
+   the liquid fraction of every owned atom; the group's totals on demand
+------------------------------------------------------------------------- */
+
+void FixSPHPhase::update_fraction()
+{
+  if (atom->nmax > nmax) grow_arrays(atom->nmax);
+  const SPHParticles particles(atom);
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; i++) fraction[i] = particles.liquid_fraction(i);
+  totals_current = 0;
+}
+
+double FixSPHPhase::compute_vector(int n)
+{
+  if (!totals_current) {
+    const SPHParticles particles(atom);
+    const int *const mask = atom->mask;
+    const int *const type = atom->type;
+    double local[3] = {0.0, 0.0, 0.0};    // liquid mass, mass of phase-changing types, latent
+    for (int i = 0; i < atom->nlocal; i++) {
+      if (!(mask[i] & groupbit) || !changes[type[i]]) continue;
+      const double m = particles.mass(i), f = particles.liquid_fraction(i);
+      local[0] += m * f;
+      local[1] += m;
+      local[2] += m * f * laws[type[i]].latent;
+    }
+    double all[3];
+    MPI_Allreduce(local, all, 3, MPI_DOUBLE, MPI_SUM, world);
+    totals[0] = all[1] > 0.0 ? all[0] / all[1] : 0.0;
+    totals[1] = all[2];
+    totals_current = 1;
+  }
+  return totals[n];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHPhase::grow_arrays(int n)
+{
+  memory->grow(fraction, n, "sph/phase:fraction");
+  vector_atom = fraction;
+  nmax = n;
+}
+
+double FixSPHPhase::memory_usage()
+{
+  return (double) nmax * sizeof(double);
+}

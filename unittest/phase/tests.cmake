@@ -1,0 +1,22 @@
+# Melting and solidification (fix sph/phase), included by unittest/CMakeLists.txt.
+
+# the enthalpy law (sph_phase_laws.h) against the law written out, from C
+add_header_test(test_phase_laws phase/test_phase_laws.c)
+sphthermal_test(phase.laws LABELS unit COMMAND test_phase_laws)
+
+# Neumann's Stefan problem (tools/stefan.py) on in.stefan: the melt's depth
+# and T against the exact solution, the energy through the wall against the
+# change of the particles' energies
+set(phase_test phase/test_phase.py)
+sphthermal_python_test(phase.stefan.one_phase ${phase_test} LAMMPS ARGS --check one_phase LABELS unit)
+sphthermal_python_test(phase.stefan.two_phase ${phase_test} LAMMPS ARGS --check two_phase LABELS unit)
+sphthermal_python_test(phase.stefan.converging ${phase_test} LAMMPS ARGS --check converging
+  LABELS regression)
+sphthermal_python_test(phase.energy.mushy ${phase_test} LAMMPS ARGS --check mushy LABELS unit)
+sphthermal_python_test(phase.energy.freezing ${phase_test} LAMMPS ARGS --check freezing LABELS unit)
+foreach(np 2 4)
+  sphthermal_python_test(phase.mpi.np${np} ${phase_test} LAMMPS
+    ARGS --check mpi --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
+endforeach()
+
+add_error_cases(phase ${CMAKE_CURRENT_LIST_DIR}/errors.in)
