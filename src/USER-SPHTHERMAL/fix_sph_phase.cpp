@@ -15,10 +15,12 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "force.h"
 #include "memory.h"
 #include "modify.h"
 #include "sph_hub.h"
 #include "sph_particle.h"
+#include "update.h"
 #include "utils.h"
 
 #include <cmath>
@@ -32,13 +34,14 @@ static const char cmd[] = "fix sph/phase";
 static const char VECTOR_FIX[] = "SPH_PHASE_LAWS";
 
 /* ----------------------------------------------------------------------
-   fix ID group sph/phase type I melting Tm latent L
-                          type I solidus Ts liquidus Tl latent L ...
+   fix ID group sph/phase type I melting Tm latent L [mushy C]
+                          type I solidus Ts liquidus Tl latent L [mushy C] ...
+                          [epsilon e]
 ------------------------------------------------------------------------- */
 
 FixSPHPhase::FixSPHPhase(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), vectors_made(0), nmax(0), fraction(nullptr), totals{0.0, 0.0},
-    totals_current(0)
+    Fix(lmp, narg, arg), mushy_eps(1.0e-3), damps(0), order_warned(0), vectors_made(0), nmax(0),
+    fraction(nullptr), totals{0.0, 0.0}, totals_current(0)
 {
   if (!atom->esph_flag || !atom->cv_flag)
     error->all(FLERR, "{} requires atom style sph (esph, cv)", cmd);
@@ -49,8 +52,20 @@ FixSPHPhase::FixSPHPhase(LAMMPS *lmp, int narg, char **arg) :
   const int ntypes = atom->ntypes;
   laws.assign(ntypes + 1, SPHPhaseLaw{0.0, 0.0, 0.0});
   changes.assign(ntypes + 1, 0);
+  mushy.assign(ntypes + 1, 0.0);
   int iarg = 3;
-  while (iarg < narg) parse_type(narg, arg, iarg);
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "epsilon") == 0) {
+      if (iarg + 1 >= narg)
+        error->all(FLERR, "Illegal {} command: missing value after 'epsilon'", cmd);
+      mushy_eps = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(mushy_eps > 0.0))
+        error->all(FLERR, "Illegal {} command: epsilon {} must be > 0", cmd, arg[iarg + 1]);
+      iarg += 2;
+    } else
+      parse_type(narg, arg, iarg);
+  }
+  for (int t = 1; t <= ntypes; t++) damps |= (mushy[t] > 0.0);
 
   peratom_flag = 1;    // the liquid fraction
   size_peratom_cols = 0;
@@ -93,15 +108,18 @@ void FixSPHPhase::parse_type(int narg, char **arg, int &iarg)
   iarg += 2;
 
   double melting = NAN, solidus = NAN, liquidus = NAN, latent = NAN;
-  while (iarg < narg && strcmp(arg[iarg], "type") != 0) {
+  double damping = 0.0;
+  while (iarg < narg && strcmp(arg[iarg], "type") != 0 && strcmp(arg[iarg], "epsilon") != 0) {
     const char *name = arg[iarg];
     double *slot = !strcmp(name, "melting") ? &melting
         : !strcmp(name, "solidus")          ? &solidus
         : !strcmp(name, "liquidus")         ? &liquidus
         : !strcmp(name, "latent")           ? &latent
+        : !strcmp(name, "mushy")            ? &damping
                                             : nullptr;
     if (!slot)
-      error->all(FLERR, "Illegal {}: unknown property '{}' (melting, solidus, liquidus or latent)",
+      error->all(FLERR,
+                 "Illegal {}: unknown property '{}' (melting, solidus, liquidus, latent or mushy)",
                  where, name);
     if (iarg + 1 >= narg) error->all(FLERR, "Illegal {}: missing value after '{}'", where, name);
     *slot = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -120,9 +138,11 @@ void FixSPHPhase::parse_type(int narg, char **arg, int &iarg)
                where, latent);
   if (liquidus < solidus)
     error->all(FLERR, "Illegal {}: liquidus {} is below solidus {}", where, liquidus, solidus);
+  if (!(damping >= 0.0)) error->all(FLERR, "Illegal {}: mushy {} must be >= 0", where, damping);
   for (int t = ilo; t <= ihi; t++) {
     laws[t] = SPHPhaseLaw{solidus, liquidus, latent};
     changes[t] = 1;
+    mushy[t] = damping;
   }
 }
 
@@ -149,7 +169,7 @@ void FixSPHPhase::post_constructor()
 
 int FixSPHPhase::setmask()
 {
-  return POST_NEIGHBOR | END_OF_STEP;
+  return POST_NEIGHBOR | END_OF_STEP | (damps ? POST_FORCE : 0);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -159,6 +179,56 @@ void FixSPHPhase::init()
   if (SPHHub(lmp).fixes<FixSPHPhase>().size() > 1)
     error->all(FLERR, "{}: only one fix sph/phase may be defined", cmd);
   mark();
+  // the damping must see every force: one added by a fix after it would
+  // move the solid
+  if (damps && !order_warned) {
+    order_warned = 1;
+    for (int i = modify->find_fix(id) + 1; i < modify->nfix; i++)
+      if ((modify->fmask[i] & POST_FORCE) && comm->me == 0)
+        error->warning(FLERR,
+                       "{} {}: fix {} (style {}) is defined after it and acts after the forces: "
+                       "its force on solid and mushy atoms is not damped (define fix {} after it)",
+                       cmd, id, modify->fix[i]->id, modify->fix[i]->style, id);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   'mushy C': the solid part of a melting fluid stops. A mushy atom's
+   velocity is damped by the Carman-Kozeny term of the enthalpy-porosity
+   method (Voller and Prakash 1987; Brent, Voller and Reid 1988), per mass
+   A = C (1 - f)^2 / ((f^3 + epsilon) rho), implicitly: fix sph moves the
+   velocity between two steps' half steps by dt f / m with the force left
+   here, and f = (F - m A v) / (1 + dt A) makes that move backward Euler's,
+   v' = (v + dt F / m) / (1 + dt A): a decay by 1 / (1 + dt A) per step,
+   stable and monotonic whatever A dt, and the terminal velocity F / (m A)
+   under a steady force F. A solid atom (f = 0) is held: no velocity and
+   no force, so it does not move.
+------------------------------------------------------------------------- */
+
+void FixSPHPhase::post_force(int /*vflag*/)
+{
+  const SPHParticles particles(atom);
+  double **const v = atom->v;
+  double **const f = atom->f;
+  double **const vest = atom->vest;
+  const double *const rho = atom->rho;
+  const int *const mask = atom->mask;
+  const int *const type = atom->type;
+  const double dt = update->dt, ftm2v = force->ftm2v;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit) || mushy[type[i]] <= 0.0) continue;
+    const double liquid = particles.liquid_fraction(i);
+    if (liquid <= 0.0) {
+      for (int a = 0; a < 3; a++) v[i][a] = vest[i][a] = f[i][a] = 0.0;
+      continue;
+    }
+    const double solid = 1.0 - liquid;
+    const double rate =
+        mushy[type[i]] * solid * solid / ((liquid * liquid * liquid + mushy_eps) * rho[i]);
+    if (rate <= 0.0) continue;
+    const double m_rate = particles.mass(i) * rate / ftm2v;    // force per velocity
+    for (int a = 0; a < 3; a++) f[i][a] = (f[i][a] - m_rate * v[i][a]) / (1.0 + dt * rate);
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -198,8 +268,10 @@ void FixSPHPhase::post_neighbor()
 
 /* ---------------------------------------------------------------------- */
 
-void FixSPHPhase::setup(int /*vflag*/)
+void FixSPHPhase::setup(int vflag)
 {
+  // the forces of the run's first step are damped too
+  if (damps) post_force(vflag);
   update_fraction();
 }
 

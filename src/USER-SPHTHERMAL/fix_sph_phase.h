@@ -34,6 +34,7 @@ class FixSPHPhase : public Fix {
   void setup_post_neighbor() override;
   void post_neighbor() override;
   void setup(int) override;
+  void post_force(int) override;
   void end_of_step() override;
   double compute_vector(int) override;
   double memory_usage() override;
@@ -45,6 +46,10 @@ class FixSPHPhase : public Fix {
  protected:
   std::vector<SPHPhaseLaw> laws;    // per type (1..ntypes)
   std::vector<int> changes;         // per type: 1 where a law is given
+  std::vector<double> mushy;        // per type: Carman-Kozeny constant C (0: no damping)
+  double mushy_eps;                 // its epsilon
+  int damps;                        // some type has a C
+  int order_warned;
   int vectors_made;
   int nmax;
   double *fraction;    // per atom: the liquid fraction (0 for the other types)

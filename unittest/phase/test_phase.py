@@ -25,6 +25,12 @@ number 1; n particles on [0, 4] (dx = 4 / n), to t = 1 (exact depth
               every particle's T within the bounds
   mpi         one_phase's depth and heat on --np ranks equal to 1 rank's to
               1e-12
+  damping     keyword mushy on a uniform box (in.mushy; solidus 0, liquidus
+              1): a mushy atom's velocity falls by 1 / (1 + dt A) per step,
+              A = C (1 - f)^2 / ((f^3 + 1e-3) rho), to 1e-12 (at A dt = 2e5
+              to 1e-9, the pair's round-off), never below 0; under a steady push g its velocity goes
+              to g / A; a solid atom does not move, pushed or not; a liquid
+              one is not damped (v = v0 + g t)
 """
 
 import argparse
@@ -43,6 +49,7 @@ from lammps_checks import lammps_arguments, read_dump, run_input, thermo_tables 
 import stefan  # noqa: E402
 
 INPUT = os.path.join(HERE, "..", "..", "examples", "phase-stefan", "in.stefan")
+MUSHY = os.path.join(HERE, "in.mushy")
 LX, TW, TM = 4.0, 1.0, 0.0
 
 
@@ -131,10 +138,45 @@ def check_mpi(args):
         below(deviation, 1e-12, f"{args.np} ranks against 1: {column} (largest relative deviation)")
 
 
+def run_mushy(args, variables):
+    with tempfile.TemporaryDirectory() as tmp:
+        out = run_input(args.lmp, MUSHY, {"plugin": args.plugin, **variables}, tmp, 1, args.mpirun)
+    return thermo_tables(out)[-1]
+
+
+def check_damping(args):
+    dt, vx0 = 1.0e-4, 1.0e-3
+
+    def rate(c, f=0.5, rho=1.0):
+        return c * (1.0 - f) ** 2 / ((f ** 3 + 1.0e-3) * rho)
+
+    # (at A dt = 2e5 the velocity falls to 1e-9 of vx0 in one step, where the
+    # pair's round-off accelerations, about 1e-11, weigh 1e-11 of it)
+    for c, limit in ((1000.0, 1e-12), (1.0e9, 1e-9)):
+        table = run_mushy(args, {"T": 0.5, "C": c})
+        v = table["c_vx"]
+        ratios = v[2:] / v[1:-1]
+        want = 1.0 / (1.0 + dt * rate(c))
+        below(np.abs(ratios[v[2:] > 1e-9 * vx0] / want - 1.0).max(), limit,
+              f"C = {c:g} (A dt = {dt * rate(c):.3g}): the velocity falls by 1 / (1 + dt A) per step")
+        that(np.all(v >= 0.0) and np.all(np.diff(v) <= 0.0), f"C = {c:g}: the velocity falls monotonically to 0",
+             f"last {v[-1]:.3g}")
+    g = 0.01
+    table = run_mushy(args, {"T": 0.5, "g": g, "steps": 300})
+    below(abs(table["c_vx"][-1] / (g / rate(1000.0)) - 1.0), 1e-9,
+          "pushed by g: the mushy atoms' velocity reaches g / A (relative difference)")
+    table = run_mushy(args, {"T": -0.5, "g": g})
+    that(np.all(table["c_vx"] == 0.0) and np.all(table["c_x"] == table["c_x"][0]),
+         "solid atoms pushed by g do not move", f"largest |vx| {np.abs(table['c_vx']).max():.3g}")
+    table = run_mushy(args, {"T": 2.0, "g": g})
+    below(np.abs(table["c_vx"] - (vx0 + g * table["Time"])).max() / vx0, 1e-12,
+          "liquid atoms are not damped: vx = vx0 + g t (largest difference / vx0)")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--check", required=True,
-                        choices=["one_phase", "two_phase", "converging", "mushy", "freezing", "mpi"])
+                        choices=["one_phase", "two_phase", "converging", "mushy", "freezing", "mpi", "damping"])
     lammps_arguments(parser)
     args = parser.parse_args()
     if args.check == "one_phase":
@@ -147,6 +189,8 @@ def main():
         check_mushy(args)
     elif args.check == "freezing":
         check_freezing(args)
+    elif args.check == "damping":
+        check_damping(args)
     else:
         check_mpi(args)
     finish()

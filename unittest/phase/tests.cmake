@@ -14,6 +14,8 @@ sphthermal_python_test(phase.stefan.converging ${phase_test} LAMMPS ARGS --check
   LABELS regression)
 sphthermal_python_test(phase.energy.mushy ${phase_test} LAMMPS ARGS --check mushy LABELS unit)
 sphthermal_python_test(phase.energy.freezing ${phase_test} LAMMPS ARGS --check freezing LABELS unit)
+# keyword mushy: the Carman-Kozeny damping as specified, solids held
+sphthermal_python_test(phase.damping ${phase_test} LAMMPS ARGS --check damping LABELS unit)
 foreach(np 2 4)
   sphthermal_python_test(phase.mpi.np${np} ${phase_test} LAMMPS
     ARGS --check mpi --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
