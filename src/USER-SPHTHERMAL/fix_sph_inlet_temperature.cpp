@@ -398,7 +398,6 @@ void FixSPHInletTemperature::post_integrate()
 {
   const SPHParticles particles(atom);
   double *const esph = atom->esph;
-  const double *const cv = atom->cv;
   const int *const mask = atom->mask;
 
   double energy_local = 0.0;
@@ -411,7 +410,7 @@ void FixSPHInletTemperature::post_integrate()
     passes[i] = now;
     if (!passed) continue;
     crossed_along++;
-    const double esph_inlet = cv[i] * t_inlet;
+    const double esph_inlet = particles.energy_at(i, t_inlet);
     energy_local += particles.mass(i) * (esph_inlet - esph[i]);
     esph[i] = esph_inlet;
   }

@@ -362,11 +362,12 @@ void FixSPHOpen::setup_pre_exchange()
   next_reneighbor = -1;
   check_sides();
   if (kind != INLET) return;
+  const SPHParticles particles(atom);
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     inlet_velocity(atom->x[i], atom->v[i]);
     for (int k = 0; k < 3; k++) atom->vest[i][k] = atom->v[i][k];
-    if (temperature_given) atom->esph[i] = atom->cv[i] * temperature;
+    if (temperature_given) atom->esph[i] = particles.energy_at(i, temperature);
   }
 }
 
@@ -437,7 +438,6 @@ void FixSPHOpen::extrapolate()
   double *const *const vest = atom->vest;
   double *const rho = atom->rho;
   double *const esph = atom->esph;
-  const double *const cv = atom->cv;
   const int *const mask = atom->mask;
   const int *const type = atom->type;
   const int nlocal = atom->nlocal;
@@ -497,7 +497,7 @@ void FixSPHOpen::extrapolate()
       }
       if (!found) continue;    // no fluid near: it keeps its own
       for (int k = 0; k < 3; k++) v[i][k] = vest[i][k] = value[k];
-      esph[i] = cv[i] * value[3];
+      esph[i] = particles.energy_at(i, value[3]);
     }
   }
   SPHCompat::forward_comm(comm, this);

@@ -189,13 +189,13 @@ void FixSPHWallAdiabatic::pre_force(int /*vflag*/)
   // the atoms' own state before the wall mirrors it
   SPHCheck::particles(lmp, FLERR, "Fix sph/wall/adiabatic", SPHCheck::RHO | SPHCheck::ESPH);
   mirror->interpolate(t_ghost, ghost_how);
-  const double *const cv = atom->cv;
+  const SPHParticles particles(atom);
   const int *const mask = atom->mask;
   double *const esph = atom->esph;
   shepard_local = 0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit) || ghost_how[i] == SPHI_NONE) continue;
-    esph[i] = cv[i] * t_ghost[i];
+    esph[i] = particles.energy_at(i, t_ghost[i]);
     if (ghost_how[i] == SPHI_SHEPARD) shepard_local++;
   }
   summed = 0;

@@ -147,19 +147,19 @@ void FixSPHWallDirichlet::pre_force(int /*vflag*/)
 void FixSPHWallDirichlet::dummies_mirrored()
 {
   mirror->interpolate(t_ghost, ghost_how, &ghost_depth);
-  const double *const cv = atom->cv;
+  const SPHParticles particles(atom);
   const int *const mask = atom->mask;
   double *const esph = atom->esph;
   for (int i = 0; i < atom->nlocal; i++)
     if (mask[i] & groupbit)
-      esph[i] = cv[i] * ((ghost_how[i] != SPHI_NONE) ? 2.0 * t_wall - t_ghost[i] : t_wall);
+      esph[i] =
+          particles.energy_at(i, (ghost_how[i] != SPHI_NONE) ? 2.0 * t_wall - t_ghost[i] : t_wall);
 }
 
 void FixSPHWallDirichlet::dummies_shepard()
 {
   const SPHParticles particles(atom);
   const double *const *const x = atom->x;
-  const double *const cv = atom->cv;
   const int *const mask = atom->mask;
   double *const esph = atom->esph;
   const sphk_kernel kernel = sphk_make(kernel_kind, domain->dimension, cutoff);
@@ -181,7 +181,7 @@ void FixSPHWallDirichlet::dummies_shepard()
       weighted_t += w * particles.temperature(j);
     }
     const double t_dummy = (weight > 0.0) ? 2.0 * t_wall - weighted_t / weight : t_wall;
-    esph[i] = cv[i] * t_dummy;
+    esph[i] = particles.energy_at(i, t_dummy);
   }
 }
 

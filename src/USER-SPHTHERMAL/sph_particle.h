@@ -101,8 +101,7 @@ class SPHParticles {
     }
     return esph[i] / cv[i];
   }
-  // the liquid fraction of atom i: 0 or 1 for an atom that does not change
-  // phase is not defined; 0 is returned
+  // the liquid fraction of atom i (0 for an atom that does not change phase)
   double liquid_fraction(int i) const
   {
     if (!changes_phase(i)) return 0.0;
