@@ -15,6 +15,9 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_sph_boussinesq.h"
+#include "fix_sph_flowrate.h"
+#include "fix_sph_grains.h"
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
@@ -32,6 +35,16 @@ using namespace FixConst;
 static const char cmd[] = "fix sph/phase";
 // the internal fix property/atom that holds the per-atom vectors
 static const char VECTOR_FIX[] = "SPH_PHASE_LAWS";
+
+// whether a fix changes the atoms' forces after the pair styles: LAMMPS's
+// fixes with post_force, and the package's that add forces there (buoyancy,
+// drive, grains); its others there tally or hold the walls' states
+static bool adds_forces_after_pair(const Fix *fix, int mask)
+{
+  if (!(mask & POST_FORCE)) return false;
+  return !SPHHub::ours(fix) || dynamic_cast<const FixSPHBoussinesq *>(fix) ||
+      dynamic_cast<const FixSPHFlowRate *>(fix) || dynamic_cast<const FixSPHGrains *>(fix);
+}
 
 /* ----------------------------------------------------------------------
    fix ID group sph/phase type I melting Tm latent L [mushy C]
@@ -184,7 +197,7 @@ void FixSPHPhase::init()
   if (damps && !order_warned) {
     order_warned = 1;
     for (int i = modify->find_fix(id) + 1; i < modify->nfix; i++)
-      if ((modify->fmask[i] & POST_FORCE) && comm->me == 0)
+      if (adds_forces_after_pair(modify->fix[i], modify->fmask[i]) && comm->me == 0)
         error->warning(FLERR,
                        "{} {}: fix {} (style {}) is defined after it and acts after the forces: "
                        "its force on solid and mushy atoms is not damped (define fix {} after it)",
