@@ -73,8 +73,7 @@ static constexpr double BIG = 1.0e300;
 /* ---------------------------------------------------------------------- */
 
 FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), dtmin(0.0), dtmax(BIG), h_user(0.0), h(0.0), until(-1.0), start_time(-1.0),
-    active(0),
+    Fix(lmp, narg, arg), dtmin(0.0), dtmax(BIG), h_user(0.0), h(0.0), until(-1.0), active(0),
     respa_flag(0), warned(0), bound_warned(0), halted(0), materials(nullptr), heat(nullptr),
     body_force(nullptr)
 {
@@ -99,6 +98,7 @@ FixSPHDtReset::FixSPHDtReset(LAMMPS *lmp, int narg, char **arg) :
   for (int k = 0; k < NLIMITS; k++) coeff[k] = defaults[k];
 
   static const char *const names[NLIMITS] = {"acoustic", "force", "viscous", "thermal"};
+  double start_time = -1.0;    // 'time': < 0, the time is kept
   int iarg = 4;
   while (iarg < narg) {
     int which = -1;

@@ -46,7 +46,6 @@ class FixSPHDtReset : public Fix {
   double h_user;            // 'h' keyword, 0 = from the pair style
   double h;                 // smoothing length used
   double until;             // 'until': stop the run at this elapsed time; < 0: no end
-  double start_time;        // 'time': the elapsed time when the fix is defined; < 0: kept
   int reset_every;          // N: choose dt every N steps
   double limit[NLIMITS];    // global minimum of each limit, coefficient applied
   int active;               // 1..4 a limit, 5 the min/max bound, 0 none computed yet
