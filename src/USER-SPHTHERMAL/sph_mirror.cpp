@@ -64,8 +64,9 @@ void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
   fix_id = id ? id : "";
   // the region is checked at every run's start: strictly against the scene
   // as set up (step 0); later a fluid particle next to the wall may have
-  // moved past the surface by a fraction of a spacing, which is the flow's,
-  // not the region's, doing: up to half the depth of the nearest wall atom
+  // moved past the surface by a fraction of a spacing (an impact pushes it
+  // there), which is the flow's, not the region's, doing: up to the depth
+  // of the nearest wall atom, the first wall row
   medium_check_pending = true;
   groupbit = groupbit_in;
   kernel_kind = kind;
@@ -131,7 +132,7 @@ void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
   double dmax = 0.0, dmin = INFINITY;
   MPI_Allreduce(&dmax_local, &dmax, 1, MPI_DOUBLE, MPI_MAX, world);
   MPI_Allreduce(&dmin_local, &dmin, 1, MPI_DOUBLE, MPI_MIN, world);
-  medium_tolerance = (update->ntimestep == 0 || !std::isfinite(dmin)) ? 0.0 : 0.5 * dmin;
+  medium_tolerance = (update->ntimestep == 0 || !std::isfinite(dmin)) ? 0.0 : dmin;
 
   // the medium around a ghost point up to 2 dmax away, also on other ranks
   const double needed = cutoff + 2.0 * dmax + neighbor->skin;

@@ -6,12 +6,12 @@ At each run's start the mirror walls check that the medium next to the wall
 lies inside the surface region. As set up (step 0) strictly: an atom
 outside means a region that is not the wall's. At a later run's start
 (after a restart, or a run before) a fluid particle may have drifted past
-the surface by a fraction of a spacing, which is the flow's doing: up to
-half the depth of the nearest wall atom (0.025 here, the wall's first row
-0.05 beyond the surface) it is taken, farther it is not. Checked: fluid
-atom 45, next to the bottom wall (surface y = 0), moved to y = -0.01 stops
-the run at step 0 and passes at step 5; moved to y = -0.04 it stops the run
-at step 5 too.
+the surface by a fraction of a spacing, which is the flow's doing (an
+impact pushes it there): up to the depth of the nearest wall atom (the
+wall's first row, 0.05 beyond the surface here) it is taken, farther it is
+not. Checked: fluid atom 45, next to the bottom wall (surface y = 0),
+moved to y = -0.04 stops the run at step 0 and passes at step 5; moved to
+y = -0.06 (past the first wall row) it stops the run at step 5 too.
 """
 import argparse
 import re
@@ -52,7 +52,7 @@ def main():
     parser = lammps_arguments(argparse.ArgumentParser(description=__doc__), mpi=False)
     args = parser.parse_args()
     check = Checks()
-    for y, step, refused in ((-0.01, 0, True), (-0.01, 5, False), (-0.04, 5, True)):
+    for y, step, refused in ((-0.04, 0, True), (-0.04, 5, False), (-0.06, 5, True)):
         code, output = run_script(args.lmp, SCRIPT.format(plugin=args.plugin, y=y, step=step))
         errors = [line for line in output.splitlines() if line.startswith("ERROR")]
         if refused:
