@@ -3,9 +3,10 @@
    This software is distributed under the GNU General Public License.
 
    compute sph/thermal: thermal energy E = sum m e, heat capacity
-   C = sum m cv, mean temperature E / C and heating rate sum m de/dt of a
-   group (e = cv T: E / C is the temperature the group would reach if its
-   heat were spread evenly).
+   C = sum m cv, mean temperature sum m cv T / C and heating rate
+   sum m de/dt of a group (without a change of phase e = cv T: the mean
+   temperature is E / C, the temperature the group would reach if its heat
+   were spread evenly).
 ------------------------------------------------------------------------- */
 
 #include "compute_sph_thermal.h"
@@ -34,9 +35,9 @@ ComputeSPHThermal::ComputeSPHThermal(LAMMPS *lmp, int narg, char **arg) :
   size_vector = 4;
   extvector = 0;    // intensive: thermo does not divide by the atom count
   vector = new double[size_vector];
+  for (int k = 0; k < size_vector; k++) vector[k] = 0.0;
   peratom_flag = 1;    // the temperature of each atom (0 outside the group)
   size_peratom_cols = 0;
-  sums[0] = sums[1] = sums[2] = 0.0;
 }
 
 ComputeSPHThermal::~ComputeSPHThermal()
@@ -71,7 +72,8 @@ void ComputeSPHThermal::compute_vector()
   const SPHParticles particles(atom);
   invoked_vector = update->ntimestep;
   const int *const mask = atom->mask;
-  double local[3] = {0.0, 0.0, 0.0};
+  // energy, heat capacity, heating rate, sum of m cv T
+  double local[4] = {0.0, 0.0, 0.0, 0.0};
   const double half_step = 0.5 * update->dt;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -79,15 +81,21 @@ void ComputeSPHThermal::compute_vector()
     // fix sph half of it (the rest at the next step's start): the books count
     // a MACHDYN particle at fix sph's stage, so that what the two kinds
     // exchange sums to zero at every step
-    local[0] += particles.thermal_energy(i) -
+    const double energy = particles.thermal_energy(i) -
         (particles.machdyn(i) ? half_step * particles.heating_rate(i, atom->desph) : 0.0);
-    local[1] += particles.mass(i) * atom->cv[i];
+    const double capacity = particles.mass(i) * atom->cv[i];
+    local[0] += energy;
+    local[1] += capacity;
     local[2] += particles.heating_rate(i, atom->desph);
+    // the energy of a melting particle includes its latent heat: its share
+    // of the mean temperature is its own temperature's
+    local[3] += particles.changes_phase(i) ? capacity * particles.temperature(i) : energy;
   }
-  MPI_Allreduce(local, sums, 3, MPI_DOUBLE, MPI_SUM, world);
+  double sums[4];
+  MPI_Allreduce(local, sums, 4, MPI_DOUBLE, MPI_SUM, world);
   vector[0] = sums[0];
   vector[1] = sums[1];
-  vector[2] = (sums[1] > 0.0) ? sums[0] / sums[1] : 0.0;
+  vector[2] = (sums[1] > 0.0) ? sums[3] / sums[1] : 0.0;
   vector[3] = sums[2];
 }
 

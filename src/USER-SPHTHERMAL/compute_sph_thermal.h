@@ -31,7 +31,6 @@ class ComputeSPHThermal : public Compute {
   double memory_usage() override;
 
  protected:
-  double sums[3];    // sum m e, sum m cv, sum m de/dt over the group
   int nmax;
   double *temperature;    // per atom
 };
