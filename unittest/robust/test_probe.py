@@ -213,6 +213,10 @@ PROBES = {
     # a mushy zone about the mean temperature: some atoms melt and freeze
     "fix_sph_phase": ("cavity", "fix phase all sph/phase type 1 solidus 0.45 liquidus 0.55 latent 0.05",
                       "f_phase[1] f_phase[2]", {}),
+    # the same with the mushy zone's damping, whose solid atoms are held
+    "fix_sph_phase_mushy": (
+        "cavity", "fix phase fluid sph/phase type 1 solidus 0.45 liquidus 0.55 latent 0.05 mushy 2.0",
+        "f_phase[1] f_phase[2]", {}),
     "fix_sph_hold_volume": ("cavity", "fix hold fluid sph/hold/volume", "f_hold", {}),
     "fix_sph_flowrate": ("channel", "fix rate fluid sph/flowrate x 0.05 relax 0.01", "f_rate[*]", {}),
     # T0 by layers: sums over a few atoms per layer, whose order the ranks
