@@ -4,7 +4,7 @@ ed., Oxford 1959; V. Alexiades and A. D. Solomon, Mathematical Modeling of
 Melting and Freezing Processes, Hemisphere 1993): the solid, at T_i <= T_m, is held at T_w > T_m on x = 0 from
 t = 0; the melt front is at s(t) = 2 lam sqrt(alpha_l t), lam the root of
 
-  St_l / (exp(lam^2) erf(lam)) - St_s nu / (exp(nu^2 lam^2) erfc(nu lam))
+  St_l / (exp(lam^2) erf(lam)) - St_s / (nu exp(nu^2 lam^2) erfc(nu lam))
       = lam sqrt(pi),
 
 St_l = c_l (T_w - T_m) / L, St_s = c_s (T_m - T_i) / L, nu = sqrt(alpha_l
@@ -35,7 +35,7 @@ def neumann_lambda(st_l, st_s=0.0, nu=1.0):
             # exp(x^2) erfc(x) without overflow for large x
             x = nu * lam
             scaled = math.exp(x * x) * math.erfc(x) if x < 25.0 else 1.0 / (x * math.sqrt(math.pi))
-            solid = st_s * nu / scaled
+            solid = st_s / (nu * scaled)
         return st_l / (math.exp(lam * lam) * math.erf(lam)) - solid - lam * math.sqrt(math.pi)
 
     lo, hi = 1e-12, 1.0

@@ -10,6 +10,8 @@ sphthermal_test(phase.laws LABELS unit COMMAND test_phase_laws)
 set(phase_test phase/test_phase.py)
 sphthermal_python_test(phase.stefan.one_phase ${phase_test} LAMMPS ARGS --check one_phase LABELS unit)
 sphthermal_python_test(phase.stefan.two_phase ${phase_test} LAMMPS ARGS --check two_phase LABELS unit)
+sphthermal_python_test(phase.stefan.conductivity_jump ${phase_test} LAMMPS ARGS --check conductivity_jump
+  LABELS unit)
 sphthermal_python_test(phase.stefan.converging ${phase_test} LAMMPS ARGS --check converging
   LABELS regression)
 sphthermal_python_test(phase.energy.mushy ${phase_test} LAMMPS ARGS --check mushy LABELS unit)
