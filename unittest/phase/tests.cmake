@@ -18,6 +18,10 @@ sphthermal_python_test(phase.energy.mushy ${phase_test} LAMMPS ARGS --check mush
 sphthermal_python_test(phase.energy.freezing ${phase_test} LAMMPS ARGS --check freezing LABELS unit)
 # keyword mushy: the Carman-Kozeny damping as specified, solids held
 sphthermal_python_test(phase.damping ${phase_test} LAMMPS ARGS --check damping LABELS unit)
+# melting of gallium heated from one side, coarse (examples/phase-gallium):
+# the melted volume and the fronts against the experiment and conduction,
+# the solid at rest
+sphthermal_python_test(phase.gallium phase/test_gallium.py LAMMPS LABELS validation)
 foreach(np 2 4)
   sphthermal_python_test(phase.mpi.np${np} ${phase_test} LAMMPS
     ARGS --check mpi --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
