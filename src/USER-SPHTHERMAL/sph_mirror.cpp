@@ -42,7 +42,8 @@ using namespace LAMMPS_NS;
 SPHMirror::SPHMirror(LAMMPS *lmp, const std::string &cmd, bool returns, Field what) :
     Pointers(lmp), command(cmd), returns_heat(returns), field(what), region(nullptr), groupbit(0),
     medium_exclude(0), held_walls(0), kernel_kind(0), cutoff(0.0), inlet_axis(-1),
-    candidates_valid(false), medium_check_pending(false), medium_tolerance(0.0)
+    candidates_valid(false), medium_check_pending(false), medium_tolerance(0.0),
+    crossing_check_pending(false), crossing_warned(false), first_row_depth(0.0)
 {
 }
 
@@ -133,6 +134,9 @@ void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
   MPI_Allreduce(&dmax_local, &dmax, 1, MPI_DOUBLE, MPI_MAX, world);
   MPI_Allreduce(&dmin_local, &dmin, 1, MPI_DOUBLE, MPI_MIN, world);
   medium_tolerance = (update->ntimestep == 0 || !std::isfinite(dmin)) ? 0.0 : dmin;
+  first_row_depth = std::isfinite(dmin) ? dmin : 0.0;
+  crossing_check_pending = false;
+  crossing_warned = false;
 
   // the medium around a ghost point up to 2 dmax away, also on other ranks
   const double needed = cutoff + 2.0 * dmax + neighbor->skin;
@@ -188,9 +192,14 @@ int SPHMirror::ghost_point(const double *x, double *ghost, double *depth)
    the periodic box first, where the region is.
 ------------------------------------------------------------------------- */
 
-void SPHMirror::check_medium()
+void SPHMirror::check_medium(bool during_run)
 {
-  medium_check_pending = false;
+  if (during_run) {
+    crossing_check_pending = false;
+    if (crossing_warned || first_row_depth <= 0.0) return;
+  } else
+    medium_check_pending = false;
+  const double tolerance = during_run ? first_row_depth : medium_tolerance;
   double *const *const x = atom->x;
   const tagint *const tag = atom->tag;
   const int *const mask = atom->mask;
@@ -206,9 +215,9 @@ void SPHMirror::check_medium()
     domain->remap(at);
     if (region->match(at[0], at[1], at[2])) return;
     // just past the surface (on the wall's side, within the tolerance)
-    if (medium_tolerance > 0.0 &&
-        (region->interior ? region->surface_exterior(at, medium_tolerance)
-                          : region->surface_interior(at, medium_tolerance)) > 0)
+    if (tolerance > 0.0 &&
+        (region->interior ? region->surface_exterior(at, tolerance)
+                          : region->surface_interior(at, tolerance)) > 0)
       return;
     first_local = tag[j];
     info[0] = atom->type[j];
@@ -230,6 +239,22 @@ void SPHMirror::check_medium()
   if (first_local != first) info[0] = info[1] = info[2] = info[3] = -INFINITY;
   double where[4];
   MPI_Allreduce(info, where, 4, MPI_DOUBLE, MPI_MAX, world);
+  if (during_run) {
+    // the flow pushed a particle through the surface, past the first wall
+    // atoms: the wall's values around it no longer hold it (a warning, once
+    // a run: the run may recover)
+    crossing_warned = true;
+    if (comm->me == 0)
+      error->warning(FLERR,
+                     "{}: medium atom {} (type {}) at ({:.8g} {:.8g} {:.8g}) has crossed the "
+                     "surface of region {} to the first wall atoms' depth ({:.4g}) or beyond at "
+                     "step {}: "
+                     "the flow pushed it into the wall, whose values there do not hold it (a "
+                     "larger speed of sound or a finer resolution keeps it out)",
+                     who(), first, (int) where[0], where[1], where[2], where[3], region_name,
+                     first_row_depth, update->ntimestep);
+    return;
+  }
   error->all(FLERR,
              "{}: medium atom {} (type {}) at ({:.8g} {:.8g} {:.8g}), within the kernel's reach "
              "of the wall atoms or their ghost points, lies outside surface region {} (side {}); "
@@ -343,7 +368,10 @@ void SPHMirror::prepare(std::vector<int> &how, std::vector<double> *depth)
       stale = true;
   }
   if (stale || medium_check_pending) find_candidates();
-  if (medium_check_pending) check_medium();
+  if (medium_check_pending)
+    check_medium();
+  else if (crossing_check_pending)
+    check_medium(true);
   const int nmedium = medium_atoms.size();
   medium_volume.resize(nmedium);
   medium_x.resize(3 * (size_t) nmedium);

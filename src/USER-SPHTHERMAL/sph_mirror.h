@@ -70,7 +70,11 @@ class SPHMirror : protected Pointers {
 
   // after atoms were exchanged or sorted (the owner's pre_neighbor): the
   // candidates kept from the last neighbour build are stale
-  void neighbours_changed() { candidates_valid = false; }
+  void neighbours_changed()
+  {
+    candidates_valid = false;
+    crossing_check_pending = true;
+  }
 
   // mark the owned wall atoms within the kernel's reach of a particle of a
   // wall that holds a temperature (a corner with a Dirichlet or isothermal
@@ -122,6 +126,9 @@ class SPHMirror : protected Pointers {
   bool candidates_valid;
   bool medium_check_pending;    // check_medium() at the next interpolate()
   double medium_tolerance;      // how far past the surface a medium atom may be
+  bool crossing_check_pending;  // check_medium(true) at the next interpolate()
+  bool crossing_warned;         // a medium atom was found in the wall this run
+  double first_row_depth;       // the depth of the nearest wall atom
   // per medium atom: its volume and the field (T, or the 3 components of v)
   std::vector<double> medium_volume, medium_values;
   // their positions this step, 3 per medium atom: the candidate loop reads
@@ -132,7 +139,7 @@ class SPHMirror : protected Pointers {
   std::vector<int> has_ghost;
 
   int ghost_point(const double *x, double *ghost, double *depth = nullptr);
-  void check_medium();
+  void check_medium(bool during_run = false);
   // "Fix <ID> <style>", or the command when the ID is not known
   std::string who() const
   {
