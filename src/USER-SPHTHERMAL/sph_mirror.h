@@ -126,9 +126,9 @@ class SPHMirror : protected Pointers {
   bool candidates_valid;
   bool medium_check_pending;    // check_medium() at the next interpolate()
   double medium_tolerance;      // how far past the surface a medium atom may be
-  bool crossing_check_pending;  // check_medium(true) at the next interpolate()
-  bool crossing_warned;         // a medium atom was found in the wall this run
-  double first_row_depth;       // the depth of the nearest wall atom
+  bool crossing_check_pending;    // check_medium(true) at the next interpolate()
+  bool crossing_warned;           // a medium atom was found in the wall this run
+  double first_row_depth;         // the depth of the nearest wall atom
   // per medium atom: its volume and the field (T, or the 3 components of v)
   std::vector<double> medium_volume, medium_values;
   // their positions this step, 3 per medium atom: the candidate loop reads
