@@ -85,6 +85,12 @@ def conduction_melt_fraction(t):
     return stefan.front(t, lam, ALPHA) / WIDTH
 
 
+def melted_fraction(frame):
+    """The melted volume fraction of a snapshot: every particle has the same
+    mass, so the liquid mass fraction is the mean liquid fraction."""
+    return float(frame["f_phase"].mean())
+
+
 def front_positions(frame, spacing):
     """The melt front (fraction of W) in the rows of particles at the top,
     middle and bottom of the cavity: where the liquid fraction f_phase falls

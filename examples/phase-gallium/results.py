@@ -32,11 +32,6 @@ def snapshots(out, n):
     return dict(sorted(frames.items()))
 
 
-def melt_fraction(frame):
-    # every particle has the same mass: the liquid mass fraction is the mean
-    return float(frame["f_phase"].mean())
-
-
 def main():
     out, resolutions = sys.argv[1], [int(n) for n in sys.argv[2:]]
     runs = {n: snapshots(out, n) for n in resolutions}
@@ -51,7 +46,7 @@ def main():
     for n in resolutions:
         for t in (60.0, 120.0):
             if t in runs[n]:
-                sim, exact = melt_fraction(runs[n][t]), ref.conduction_melt_fraction(t)
+                sim, exact = ref.melted_fraction(runs[n][t]), ref.conduction_melt_fraction(t)
                 print(f"| {n} | {t:g} | {sim:.4f} | {exact:.4f} | {100 * (sim / exact - 1):+.1f} % |")
 
     print("\n## Melted volume fraction against the experiment and Blais and Ilinca (2018)\n")
@@ -64,7 +59,7 @@ def main():
         cells = []
         for n in resolutions:
             if t in runs[n]:
-                sim = melt_fraction(runs[n][t])
+                sim = ref.melted_fraction(runs[n][t])
                 worst[n] = max(worst[n], abs(sim - measured))
                 cells.append(f"{sim:.3f} ({sim - measured:+.3f})")
             else:
@@ -100,7 +95,7 @@ def main():
                 label="conduction only (Neumann)")
     for n in resolutions:
         times = np.array(list(runs[n]))
-        volume.plot(times / 60, [melt_fraction(runs[n][tt]) for tt in times], "o-", ms=3,
+        volume.plot(times / 60, [ref.melted_fraction(runs[n][tt]) for tt in times], "o-", ms=3,
                     label=f"fix sph/phase, n = {n}")
     volume.set_xlabel("t (min)")
     volume.set_ylabel("melted volume fraction")

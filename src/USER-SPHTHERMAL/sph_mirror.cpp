@@ -42,8 +42,8 @@ using namespace LAMMPS_NS;
 SPHMirror::SPHMirror(LAMMPS *lmp, const std::string &cmd, bool returns, Field what) :
     Pointers(lmp), command(cmd), returns_heat(returns), field(what), region(nullptr), groupbit(0),
     medium_exclude(0), held_walls(0), kernel_kind(0), cutoff(0.0), inlet_axis(-1),
-    candidates_valid(false), medium_check_pending(false), medium_tolerance(0.0),
-    crossing_check_pending(false), crossing_warned(false), first_row_depth(0.0)
+    candidates_valid(false), medium_check_pending(false), crossing_check_pending(false),
+    crossing_warned(false), first_row_depth(0.0)
 {
 }
 
@@ -133,7 +133,6 @@ void SPHMirror::init(int groupbit_in, int kind, double cut, const char *id)
   double dmax = 0.0, dmin = INFINITY;
   MPI_Allreduce(&dmax_local, &dmax, 1, MPI_DOUBLE, MPI_MAX, world);
   MPI_Allreduce(&dmin_local, &dmin, 1, MPI_DOUBLE, MPI_MIN, world);
-  medium_tolerance = (update->ntimestep == 0 || !std::isfinite(dmin)) ? 0.0 : dmin;
   first_row_depth = std::isfinite(dmin) ? dmin : 0.0;
   crossing_check_pending = false;
   crossing_warned = false;
@@ -185,7 +184,7 @@ int SPHMirror::ghost_point(const double *x, double *ghost, double *depth)
    once after each init, with this step's ghost points and candidates: every
    medium atom within the kernel's reach of a wall atom of the group or of
    a ghost point (those the wall reads) must lie in the region (after step
-   0: or past its surface by at most medium_tolerance), the
+   0: or past its surface by at most first_row_depth), the
    medium's side of the surface; one that does not means a region too small
    (or on the wrong side), whose surface is not the wall's: a collective
    error naming the lowest such atom ID. Ghost images are taken back into
@@ -199,7 +198,8 @@ void SPHMirror::check_medium(bool during_run)
     if (crossing_warned || first_row_depth <= 0.0) return;
   } else
     medium_check_pending = false;
-  const double tolerance = during_run ? first_row_depth : medium_tolerance;
+  // strict for the scene as set up (step 0)
+  const double tolerance = (during_run || update->ntimestep > 0) ? first_row_depth : 0.0;
   double *const *const x = atom->x;
   const tagint *const tag = atom->tag;
   const int *const mask = atom->mask;
@@ -248,9 +248,8 @@ void SPHMirror::check_medium(bool during_run)
       error->warning(FLERR,
                      "{}: medium atom {} (type {}) at ({:.8g} {:.8g} {:.8g}) has crossed the "
                      "surface of region {} to the first wall atoms' depth ({:.4g}) or beyond at "
-                     "step {}: "
-                     "the flow pushed it into the wall, whose values there do not hold it (a "
-                     "larger speed of sound or a finer resolution keeps it out)",
+                     "step {}: the flow pushed it into the wall, whose values there do not hold "
+                     "it (a larger speed of sound or a finer resolution keeps it out)",
                      who(), first, (int) where[0], where[1], where[2], where[3], region_name,
                      first_row_depth, update->ntimestep);
     return;

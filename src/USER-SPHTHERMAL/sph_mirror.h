@@ -124,8 +124,7 @@ class SPHMirror : protected Pointers {
   bigint deep_count = 0;
   tagint deep_first = 0;
   bool candidates_valid;
-  bool medium_check_pending;    // check_medium() at the next interpolate()
-  double medium_tolerance;      // how far past the surface a medium atom may be
+  bool medium_check_pending;      // check_medium() at the next interpolate()
   bool crossing_check_pending;    // check_medium(true) at the next interpolate()
   bool crossing_warned;           // a medium atom was found in the wall this run
   double first_row_depth;         // the depth of the nearest wall atom
