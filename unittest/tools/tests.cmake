@@ -43,6 +43,11 @@ if(LAMMPS_RELEASE STREQUAL "4Feb2025")
          --out ${CMAKE_CURRENT_BINARY_DIR}/rheo_quick
          --results ${CMAKE_CURRENT_BINARY_DIR}/rheo_quick
     LABELS validation)
+  # melting by fix sph/phase and by RHEO's Tfreeze on the Stefan problem
+  sphthermal_python_test(bench.rheo_stefan_quick ${SPHTHERMAL_ROOT}/bench/rheo/run_stefan.py
+    ARGS --quick --lmp ${SPHTHERMAL_LMP} --plugin ${SPHTHERMAL_PLUGIN}
+         --out ${CMAKE_CURRENT_BINARY_DIR}/rheo_stefan_quick
+    LABELS validation)
 endif()
 
 # the stress suite's CI subset (bench/stress): a jittered cavity and a
