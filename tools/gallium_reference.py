@@ -33,6 +33,7 @@ import math
 import numpy as np
 
 import stefan
+from sphthermal_tools import phase
 
 WIDTH, HEIGHT = 0.0889, 0.0635  # m
 T_HOT, T_INITIAL, T_MELT = 273.15 + 38.0, 273.15 + 28.3, 273.15 + 29.78  # K
@@ -86,34 +87,14 @@ def conduction_melt_fraction(t):
 
 
 def melted_fraction(frame):
-    """The melted volume fraction of a snapshot: every particle has the same
-    mass, so the liquid mass fraction is the mean liquid fraction."""
-    return float(frame["f_phase"].mean())
+    """The melted volume fraction of a snapshot."""
+    return phase.liquid_fraction(frame)
 
 
 def front_positions(frame, spacing):
     """The melt front (fraction of W) in the rows of particles at the top,
-    middle and bottom of the cavity: where the liquid fraction f_phase falls
-    through 0.5 going from the hot wall, linear between particles."""
-    x, y, f = frame["x"], frame["y"], frame["f_phase"]
-    rows = {"top": HEIGHT - 0.5 * spacing, "middle": None, "bottom": 0.5 * spacing}
-    centres = np.unique(np.round(y / spacing - 0.5)) * spacing + 0.5 * spacing
-    rows["middle"] = centres[np.argmin(np.abs(centres - 0.5 * HEIGHT))]
-    fronts = {}
-    for name, level in rows.items():
-        row = np.abs(y - level) < 0.5 * spacing
-        order = np.argsort(x[row])
-        xs, fs = x[row][order], f[row][order]
-        front = xs[-1]
-        for i in range(1, len(xs)):
-            if fs[i] < 0.5 <= fs[i - 1]:
-                front = xs[i - 1] + (fs[i - 1] - 0.5) / (fs[i - 1] - fs[i]) * (xs[i] - xs[i - 1])
-                break
-            if i == 1 and fs[0] < 0.5:
-                front = xs[0] * fs[0] / 0.5
-                break
-        fronts[name] = front / WIDTH
-    return fronts
+    middle and bottom of the cavity (sphthermal_tools.phase)."""
+    return phase.front_positions(frame, spacing, WIDTH, HEIGHT, "liquid")
 
 
 def experiment_at(times, values, t):

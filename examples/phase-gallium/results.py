@@ -14,6 +14,7 @@ import sys
 import numpy as np
 
 import gallium_reference as ref
+import phase_fv
 from sphthermal_tools.dump import read_frames
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -36,6 +37,8 @@ def main():
     out, resolutions = sys.argv[1], [int(n) for n in sys.argv[2:]]
     runs = {n: snapshots(out, n) for n in resolutions}
     finest = resolutions[-1]
+    fv, fv2, grid, grid2 = phase_fv.reference_series("gallium")
+    fv_row = {"top": f"top_{finest}", "middle": f"mid_row_{finest}", "bottom": f"bottom_{finest}"}
     print("# Melting of gallium heated from one side (fix sph/phase)\n")
     print(f"Experiment's abscissae against the times taken: within "
           f"{100 * ref.abscissa_ratio_spread():.1f} %.\n")
@@ -49,10 +52,12 @@ def main():
                 sim, exact = ref.melted_fraction(runs[n][t]), ref.conduction_melt_fraction(t)
                 print(f"| {n} | {t:g} | {sim:.4f} | {exact:.4f} | {100 * (sim / exact - 1):+.1f} % |")
 
-    print("\n## Melted volume fraction against the experiment and Blais and Ilinca (2018)\n")
+    print("\n## Melted volume fraction against the experiment, Blais and Ilinca (2018) and the finite volume\n")
+    print(f"Finite volume: the same model (Brent et al.'s) by tools/phase_fv.py on {grid} cells (in "
+          f"brackets: its change from {grid2}, the measure of its own error).\n")
     head = " | ".join(f"n = {n}" for n in resolutions)
-    print(f"| t (min) | experiment | Blais and Ilinca | {head} |")
-    print("|---" * (3 + len(resolutions)) + "|")
+    print(f"| t (min) | experiment | Blais and Ilinca | finite volume | {head} |")
+    print("|---" * (4 + len(resolutions)) + "|")
     worst = {n: 0.0 for n in resolutions}
     for t, measured in zip(ref.MELT_TIMES, ref.MELT_FRACTION):
         blais = np.interp(t, ref.BLAIS_TIMES, ref.BLAIS_FRACTION)
@@ -64,14 +69,17 @@ def main():
                 cells.append(f"{sim:.3f} ({sim - measured:+.3f})")
             else:
                 cells.append("")
-        print(f"| {t / 60:g} | {measured:.3f} | {blais:.3f} | {' | '.join(cells)} |")
-    print("\n(in brackets: minus the experiment)\n")
+        volume = fv[t]["liquid_fraction"]
+        fv_cell = f"{volume:.3f} ({volume - fv2[t]['liquid_fraction']:+.3f})"
+        print(f"| {t / 60:g} | {measured:.3f} | {blais:.3f} | {fv_cell} | {' | '.join(cells)} |")
+    print("\n(SPH: in brackets minus the experiment)\n")
     for n in resolutions:
         print(f"- n = {n}: largest difference from the experiment {worst[n]:.3f}")
 
-    print("\n## Melt front (fraction of W) against the experiment\n")
-    print("| t (min) | row | experiment | " + " | ".join(f"n = {n}" for n in resolutions) + " |")
-    print("|---" * (3 + len(resolutions)) + "|")
+    print("\n## Melt front (fraction of W) against the experiment and the finite volume\n")
+    print(f"Finite volume: in the rows of n = {finest}, on {grid} cells (in brackets: its change from {grid2}).\n")
+    print("| t (min) | row | experiment | finite volume | " + " | ".join(f"n = {n}" for n in resolutions) + " |")
+    print("|---" * (4 + len(resolutions)) + "|")
     for i, t in enumerate(ref.FRONT_TIMES):
         for row in ROWS:
             cells = []
@@ -81,7 +89,9 @@ def main():
                     cells.append(f"{front:.3f} ({front - EXPERIMENT_FRONTS[row][i]:+.3f})")
                 else:
                     cells.append("")
-            print(f"| {t / 60:g} | {row} | {EXPERIMENT_FRONTS[row][i]:.3f} | {' | '.join(cells)} |")
+            front = fv[t]["fronts"][fv_row[row]]
+            fv_cell = f"{front:.3f} ({front - fv2[t]['fronts'][fv_row[row]]:+.3f})"
+            print(f"| {t / 60:g} | {row} | {EXPERIMENT_FRONTS[row][i]:.3f} | {fv_cell} | {' | '.join(cells)} |")
 
     import matplotlib
     matplotlib.use("Agg")
@@ -90,6 +100,9 @@ def main():
     volume, fronts, liquid, temperature = axes.ravel()
     volume.plot(ref.MELT_TIMES / 60, ref.MELT_FRACTION, "ks", label="experiment (Gau and Viskanta 1986)")
     volume.plot(ref.BLAIS_TIMES / 60, ref.BLAIS_FRACTION, "k--", lw=0.8, label="Blais and Ilinca 2018")
+    fv_times = np.array(sorted(fv))
+    volume.plot(fv_times / 60, [fv[tt]["liquid_fraction"] for tt in fv_times], "k-", lw=0.8,
+                label=f"finite volume, {grid} (tools/phase_fv.py)")
     t = np.linspace(1.0, 300.0, 50)
     volume.plot(t / 60, [ref.conduction_melt_fraction(tt) for tt in t], "k:", lw=0.8,
                 label="conduction only (Neumann)")
@@ -102,6 +115,8 @@ def main():
     volume.legend(fontsize=7)
     for row, colour in zip(ROWS, ("C3", "C2", "C0")):
         fronts.plot(ref.FRONT_TIMES / 60, EXPERIMENT_FRONTS[row], "s", color=colour, label=f"experiment, {row}")
+        fronts.plot(fv_times / 60, [fv[tt]["fronts"][fv_row[row]] for tt in fv_times], ":", color=colour,
+                    label=f"finite volume, {row}")
         times = np.array(list(runs[finest]))
         fronts.plot(times / 60, [ref.front_positions(runs[finest][tt], ref.HEIGHT / finest)[row] for tt in times],
                     "-", color=colour, label=f"n = {finest}, {row}")

@@ -34,6 +34,8 @@ sphthermal_python_test(tools.sphplot tools/test_sphplot.py ARGS --python ${PYTHO
 sphthermal_python_test(tools.series tools/test_series.py LABELS unit)
 # the 2-d Wendland C2 of the examples' analysis scripts (tools/wendland2d.py)
 sphthermal_python_test(tools.wendland2d tools/test_wendland2d.py LABELS unit)
+# the finite-volume reference of the phase-change examples (tools/phase_fv.py)
+sphthermal_python_test(tools.phase_fv tools/test_phase_fv.py LABELS unit)
 
 # the RHEO comparison (bench/rheo) runs, coarse, with its error bounds: RHEO
 # is built on LAMMPS 4Feb2025 only
