@@ -75,6 +75,10 @@ def main():
     print("\n(SPH: in brackets minus the experiment)\n")
     for n in resolutions:
         print(f"- n = {n}: largest difference from the experiment {worst[n]:.3f}")
+    for n in resolutions:
+        gap = max(abs(ref.melted_fraction(runs[n][t]) - fv[t]["liquid_fraction"]) for t in ref.MELT_TIMES
+                  if t in runs[n])
+        print(f"- n = {n}: largest difference from the finite volume {gap:.3f}")
 
     print("\n## Melt front (fraction of W) against the experiment and the finite volume\n")
     print(f"Finite volume: in the rows of n = {finest}, on {grid} cells (in brackets: its change from {grid2}).\n")

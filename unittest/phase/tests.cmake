@@ -22,6 +22,16 @@ sphthermal_python_test(phase.damping ${phase_test} LAMMPS ARGS --check damping L
 # the melted volume and the fronts against the experiment and conduction,
 # the solid at rest
 sphthermal_python_test(phase.gallium phase/test_gallium.py LAMMPS LABELS validation)
+# freezing in a cavity cooled from one side, coarse (examples/phase-freezing):
+# with convection against the finite-volume reference (tools/phase_fv.py),
+# without gravity against Neumann and the linear steady state
+sphthermal_python_test(phase.freezing.convection phase/test_freezing.py LAMMPS ARGS --check convection
+  LABELS validation)
+sphthermal_python_test(phase.freezing.conduction phase/test_freezing.py LAMMPS ARGS --check conduction
+  LABELS regression)
+# the casting-like scene, coarse (examples/phase-casting): a shell on the
+# chilled stretch only, thicker downstream, symmetric, at rest; the flow through
+sphthermal_python_test(phase.casting phase/test_casting.py LAMMPS LABELS regression)
 foreach(np 2 4)
   sphthermal_python_test(phase.mpi.np${np} ${phase_test} LAMMPS
     ARGS --check mpi --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
