@@ -473,7 +473,7 @@ def cavity_runs(cases=((1e4, (32, 64)), (1e5, (32, 64)))):
     return out
 
 
-def gallium_runs(grids=((42, 30), (63, 45), (84, 60))):
+def gallium_runs(grids=((42, 30), (63, 45), (84, 60), (126, 90))):
     out = {"conduction_1min": gref.conduction_melt_fraction(60.0), "grids": {}}
     for nx, ny in grids:
         res, _ = run(make_case("gallium"), nx, ny, verbose=True)
