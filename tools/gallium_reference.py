@@ -28,8 +28,6 @@ the melted volume fraction read off their figure by the same project, on
 the same abscissa as the experiment's melted volume.
 """
 
-import math
-
 import numpy as np
 
 import stefan

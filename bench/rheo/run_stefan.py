@@ -47,6 +47,7 @@ from sphthermal_tools.dump import read_frames
 from sphthermal_tools.log import loop_runs, thermo_tables
 
 LX, TW, TM, STL = 4.0, 1.0, 0.0, 1.0
+ROWS = 4  # rows of particles across the strip (in.stefan, in.rheo.stefan)
 CASES = (("one", 0.0, "one-phase (the solid at the melting point)"),
          ("two", -0.5, "two-phase (the solid 0.5 below it)"))
 
@@ -106,12 +107,12 @@ def main():
             m = re.search(r"^LAMMPS \((.*?)\)", text, re.M)
             version = f"LAMMPS {m.group(1)}" if m else version
             table = thermo_tables(text)[-2]
-            loop, steps, natoms = max(loop_runs(text), key=lambda r: r[1])
-            natoms -= 3 * 4                       # the medium's particles (the cost is per medium particle)
+            medium = ROWS * n                     # the cost is per medium particle, the walls left out
+            loop, steps, _ = max(loop_runs(text), key=lambda r: r[1])
             # the medium's energy per unit height: f_heat is the heat in through the face
             ours = measure(read_frames(os.path.join(a.out, f"ours_{tag}.dump"))[-1][1], "c_T",
-                           table["v_depth"][-1], table["f_heat"][-1] / (4 * dx), heat_exact, ti,
-                           depth_exact, temp, loop, natoms, steps)
+                           table["v_depth"][-1], table["f_heat"][-1] / (ROWS * dx), heat_exact, ti,
+                           depth_exact, temp, loop, medium, steps)
             ours["balance"] = table["v_balance"][-1]
             rows.append((title, n, "USER-SPHTHERMAL fix sph/phase (the example)", ours))
             dt = float(table["Dt"][0])
@@ -128,11 +129,11 @@ def main():
                     f.write("\n".join(lines) + "\n")
                 text = run(a.lmp, ["-in", f"in.{rtag}"], f"log.{rtag}", a.out)
                 table = thermo_tables(text)[-1]
-                loop, steps, natoms = max(loop_runs(text), key=lambda r: r[1])
+                loop, steps, _ = max(loop_runs(text), key=lambda r: r[1])
                 frame = read_frames(os.path.join(a.out, f"{rtag}.dump"))[-1][1]
                 gain = table["c_energy"][-1] - table["c_energy"][0]
-                res = measure(frame, "v_T", table["v_depth"][-1], gain / (4 * dx),
-                              heat_exact, ti, depth_exact, temp, loop, natoms - 12, steps)
+                res = measure(frame, "v_T", table["v_depth"][-1], gain / (ROWS * dx),
+                              heat_exact, ti, depth_exact, temp, loop, medium, steps)
                 res["balance"] = None
                 rows.append((title, n, label, res))
             for r in rows[-3:]:
