@@ -49,13 +49,13 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     PairSPHKernel(lmp, "sph/harmonic/visc",
                   "viscosities and equations of state come from fix sph/materials"),
     pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI), xi(SPHF_XI_CLEARY), delta(0.1),
-    heating(0.0), pressure_request(-1), pressure_logged(-1), delta_request(-1.0), delta_logged(-1),
-    grain_forms_warned(0), mean_pressure_held(0), mean_pressure(0.0), gradient_correction(0),
-    gradient_request(-1), gradient_logged(-1), gradient_inverse(nullptr), nmax_gradient(0),
-    diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr), buoyancy(nullptr),
-    pressure_buoyancy(nullptr), eta2(0.0), materials(nullptr), viscosity_varies(0),
-    wall_groupbit(0), pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr),
-    density(nullptr), diffused_density(nullptr), diffusion_rho(nullptr),
+    heating(0.0), artificial(0.0), pressure_request(-1), pressure_logged(-1), delta_request(-1.0),
+    delta_logged(-1), grain_forms_warned(0), mean_pressure_held(0), mean_pressure(0.0),
+    gradient_correction(0), gradient_request(-1), gradient_logged(-1), gradient_inverse(nullptr),
+    nmax_gradient(0), diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr),
+    buoyancy(nullptr), pressure_buoyancy(nullptr), eta2(0.0), materials(nullptr),
+    viscosity_varies(0), wall_groupbit(0), pressure(nullptr), viscosity(nullptr), mass_of(nullptr),
+    volume(nullptr), density(nullptr), diffused_density(nullptr), diffusion_rho(nullptr),
     velocity_seen_store(nullptr), velocity_seen(nullptr), thermal_expansion(0), nmax(0),
     heat(nullptr), shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0), background_warned(0),
     soft_fluid_warned(0)
@@ -145,6 +145,16 @@ struct PairSPHHarmonicVisc::EvalCall {
   }
 };
 
+struct PairSPHHarmonicVisc::ArtificialCall {
+  PairSPHHarmonicVisc *pair;
+  int ifrom, ito;
+  const Rates *rates;
+  template <int KERNEL, int DIM> void run()
+  {
+    pair->eval_artificial<KERNEL, DIM>(ifrom, ito, *rates);
+  }
+};
+
 struct PairSPHHarmonicVisc::HeatingCall {
   PairSPHHarmonicVisc *pair;
   int ifrom, ito;
@@ -166,6 +176,12 @@ void PairSPHHarmonicVisc::eval_pairs(int ifrom, int ito, const Rates &rates)
                         HEAT_ON | HEAT_ATOM_K | HEAT_RELAX, DIFFUSION, DIFFUSION | HEAT_ON,
                         DIFFUSION | HEAT_ON | HEAT_ATOM_K, DIFFUSION | HEAT_ON | HEAT_RELAX,
                         DIFFUSION | HEAT_ON | HEAT_ATOM_K | HEAT_RELAX>>::to(call, settings);
+  // Monaghan's artificial viscosity: a pass of its own, only when asked for
+  if (artificial > 0.0) {
+    ArtificialCall artificial_call = {this, ifrom, ito, &rates};
+    const int artificial_settings[] = {kernel_kind, domain->dimension};
+    SPHDispatch<SPHKernelKinds, SPHDimensions>::to(artificial_call, artificial_settings);
+  }
   // viscous heating: a pass of its own, only when asked for
   if (heating > 0.0) {
     HeatingCall heating_call = {this, ifrom, ito, &rates};
@@ -524,5 +540,97 @@ void PairSPHHarmonicVisc::eval_heating(int ifrom, int ito, const Rates &rates)
         desph[j] += (wall_i ? 1.0 : 0.5) * heat / mass_of[j];
     }
     if (!wall_i) desph[i] += desph_i / mass_of[i];
+  }
+}
+
+/* ----------------------------------------------------------------------
+   Monaghan's artificial viscosity (sph_flow.h, sphf_artificial_pair) of
+   the pair i, j: s with force on i = s r_ij, vr = v_ij . r_ij with the
+   fluid's vest and a wall particle's own velocity (its no-slip mirror
+   velocity would make the term a friction twice as strong on a thin layer
+   sliding along the wall: a dam break's front fell 12 % behind the
+   experiment); c_ij the mean speed of sound of the two (a solid wall's,
+   which has none, is the fluid's).
+------------------------------------------------------------------------- */
+
+double PairSPHHarmonicVisc::artificial_pair(int i, int j, double vr, double rsq,
+                                            double dwdr_r) const
+{
+  const int *const type = atom->type;
+  const sphe_eos *const eos_i = eos_of[type[i]], *const eos_j = eos_of[type[j]];
+  const double c_i = eos_i ? eos_i->c0 : eos_j->c0;
+  const double c_j = eos_j ? eos_j->c0 : c_i;
+  return sphf_artificial_pair(artificial * kernel.h * 0.5 * (c_i + c_j), mass_of[i], mass_of[j],
+                              density[i], density[j], vr, rsq, kernel.h * kernel.h, dwdr_r);
+}
+
+/* ----------------------------------------------------------------------
+   the artificial viscosity's forces, and with 'heating' its work as heat
+   (shared as eval_heating() shares the viscous work)
+------------------------------------------------------------------------- */
+
+template <int KERNEL, int DIM>
+void PairSPHHarmonicVisc::eval_artificial(int ifrom, int ito, const Rates &rates)
+{
+  const int newton_pair = force->newton_pair;
+  const double *const *const x = atom->x;
+  const double *const *const v = atom->v;
+  const double *const *const vest = velocity_seen;
+  double *const *const f = rates.f;
+  double *const desph = rates.desph;
+  const int *const mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const int wall_groupbit = this->wall_groupbit;
+  const double heating = this->heating;
+  const double cutsq_kernel = cut_global * cut_global;
+  const double inv_h = kernel.inv_h;
+  const double dwdr_r_scale = kernel.dw_scale * kernel.inv_h;
+  const int *const ilist = list->ilist;
+  const int *const numneigh = list->numneigh;
+  int **const firstneigh = list->firstneigh;
+
+  for (int ii = ifrom; ii < ito; ii++) {
+    const int i = ilist[ii];
+    const int wall_i = mask[i] & wall_groupbit;
+    const double *const u_i = wall_i ? v[i] : vest[i];
+    const int *const jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+    double fx_i = 0.0, fy_i = 0.0, fz_i = 0.0, desph_i = 0.0;
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const int wall_j = mask[j] & wall_groupbit;
+      if (wall_i && wall_j) continue;
+      const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1],
+                             (DIM == 3) ? x[i][2] - x[j][2] : 0.0};
+      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+      if (rsq >= cutsq_kernel) continue;
+      const double *const u_j = wall_j ? v[j] : vest[j];
+      const double du[3] = {u_i[0] - u_j[0], u_i[1] - u_j[1], (DIM == 3) ? u_i[2] - u_j[2] : 0.0};
+      const double vr = du[0] * del[0] + du[1] * del[1] + du[2] * del[2];
+      if (!(vr < 0.0)) continue;
+      const double dwdr_r = dwdr_r_scale * sphk_df_over_q(KERNEL, sqrt(rsq) * inv_h);
+      const double s = artificial_pair(i, j, vr, rsq, dwdr_r);
+      const double fx = s * del[0], fy = s * del[1], fz = (DIM == 3) ? s * del[2] : 0.0;
+      fx_i += fx;
+      fy_i += fy;
+      fz_i += fz;
+      if (newton_pair || j < nlocal) {
+        f[j][0] -= fx;
+        f[j][1] -= fy;
+        if (DIM == 3) f[j][2] -= fz;
+      }
+      if (heating > 0.0) {
+        const double zero[3] = {0.0, 0.0, 0.0};
+        const double heat = heating * sphf_viscous_power(s, 0.0, del, zero, du);
+        desph_i += (wall_i ? 0.0 : (wall_j ? 1.0 : 0.5)) * heat;
+        if (!wall_j && (newton_pair || j < nlocal))
+          desph[j] += (wall_i ? 1.0 : 0.5) * heat / mass_of[j];
+      }
+      if (evflag) tally_pair(i, j, fx, fy, fz, del[0], del[1], del[2], rates.thread);
+    }
+    f[i][0] += fx_i;
+    f[i][1] += fy_i;
+    if (DIM == 3) f[i][2] += fz_i;
+    if (heating > 0.0 && !wall_i) desph[i] += desph_i / mass_of[i];
   }
 }

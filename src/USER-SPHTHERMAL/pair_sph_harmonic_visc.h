@@ -69,6 +69,7 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   int xi_given;          // xi was given (only the cleary form reads it)
   double delta;          // density diffusion (Ng et al. 2020, eq 5), 0: none
   double heating;        // fraction of the viscous work turned into heat, 0: none
+  double artificial;     // alpha of Monaghan's artificial viscosity, 0: none
   // the command's pressure form and delta (-1: not given, the scene's
   // default at init) and the defaults last logged
   int pressure_request, pressure_logged;
@@ -198,6 +199,7 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   struct GradientCall;
   struct EvalCall;
   struct HeatingCall;
+  struct ArtificialCall;
   // the run's corrected gradient and shift sums added to TERMS, then the dimension
   template <int KERNEL, int PRESSURE, int VISCOSITY, int TERMS>
   void eval_dimension(int ifrom, int ito, const Rates &rates);
@@ -210,6 +212,9 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   template <int KERNEL> void eval_heating_kernel(int ifrom, int ito, const Rates &rates);
   template <int KERNEL, int VISCOSITY, int DIM>
   void eval_heating(int ifrom, int ito, const Rates &rates);
+  // Monaghan's artificial viscosity, a pass of its own (only when on)
+  template <int KERNEL, int DIM> void eval_artificial(int ifrom, int ito, const Rates &rates);
+  double artificial_pair(int i, int j, double vr, double rsq, double dwdr_r) const;
 };
 
 }    // namespace LAMMPS_NS

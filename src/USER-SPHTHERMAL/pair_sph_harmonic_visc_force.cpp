@@ -86,6 +86,17 @@ void PairSPHHarmonicVisc::group_force(GroupForce &request) const
       double s_r, s_rv, s_v, c_i, c_j, inv_other;
       sphf_pair(pressure_form, viscosity_form, xi, &a, &b, rsq, dwdr_r, eta2, vr_est, 1.0, &s_r,
                 &s_rv, &s_v, &c_i, &c_j, &inv_other);
+      // the artificial viscosity is a viscous force along r_ij (its own pass)
+      if (artificial > 0.0) {
+        // (with a wall particle's own velocity, as eval_artificial())
+        const double *const u_i = wall_i ? atom->v[i] : vest[i];
+        const double *const u_j = wall_j ? atom->v[j] : vest[j];
+        double vr_u = 0.0;
+        for (int k = 0; k < 3; k++) vr_u += (u_i[k] - u_j[k]) * del[k];
+        const double s_a = artificial_pair(i, j, vr_u, rsq, dwdr_r);
+        s_r += s_a;
+        s_rv += s_a;
+      }
       double direction[3] = {del[0], del[1], del[2]};
       if (corrected) corrected_direction(gradient_inverse, i, j, wall_i, wall_j, del, direction);
       // the force on the group's atom: F_ij on i, -F_ij on j

@@ -41,7 +41,7 @@ using namespace LAMMPS_NS;
 static const char cmd[] = "pair_style sph/harmonic/visc";
 
 // the layout of the restart settings: raise it when a setting is added
-static constexpr int RESTART_VERSION = 1;
+static constexpr int RESTART_VERSION = 2;
 
 /* ---------------------------------------------------------------------- */
 
@@ -118,7 +118,7 @@ void PairSPHHarmonicVisc::choose_scene_forms()
    pair_style sph/harmonic/visc kernel cutoff [pressure symmetric|sum|averaged]
      [viscosity cleary|adami|morris] [xi value] [eta f] [delta value]
      [diffusion fourtakas|molteni] [fourtakas gx gy gz] [heating fraction]
-     [mean_pressure P|none] [correction none|gradient]
+     [mean_pressure P|none] [correction none|gradient] [artificial alpha]
 ------------------------------------------------------------------------- */
 
 void PairSPHHarmonicVisc::settings(int narg, char **arg)
@@ -131,6 +131,7 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
   eta_factor = -1.0;       // the default depends on the viscosity form
   delta_request = -1.0;    // the scene's default at init (choose_scene_forms)
   heating = 0.0;           // Reece et al. 2024 and Ng et al. 2020 neglect it
+  artificial = 0.0;
   mean_pressure_held = 0;
   mean_pressure = 0.0;
   gradient_request = -1;    // the scene's default at init
@@ -188,6 +189,13 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
         error->all(FLERR,
                    "Illegal {} command: heating {} must be in [0, 1] (the fraction of the "
                    "viscous work turned into heat)",
+                   cmd, value);
+    } else if (strcmp(arg[iarg], "artificial") == 0) {
+      artificial = utils::numeric(FLERR, value, false, lmp);
+      if (!(artificial >= 0.0 && artificial <= 1.0))
+        error->all(FLERR,
+                   "Illegal {} command: artificial {} must be in [0, 1] (alpha of Monaghan's "
+                   "artificial viscosity; 0: none)",
                    cmd, value);
     } else if (strcmp(arg[iarg], "mean_pressure") == 0) {
       mean_pressure_held = (strcmp(value, "none") != 0);
@@ -358,24 +366,24 @@ void PairSPHHarmonicVisc::write_restart_settings(FILE *fp)
   const int ints[6] = {kernel_kind,    pressure_request,   viscosity_form,
                        diffusion_form, mean_pressure_held, gradient_request};
   // xi_given only checks the command line
-  const double doubles[9] = {cut_global, xi,         eta_factor, delta_request, gravity[0],
-                             gravity[1], gravity[2], heating,    mean_pressure};
+  const double doubles[10] = {cut_global, xi,         eta_factor, delta_request, gravity[0],
+                              gravity[1], gravity[2], heating,    mean_pressure, artificial};
   SPHCheck::write_restart_head(fp, RESTART_VERSION);
   fwrite(ints, sizeof(int), 6, fp);
-  fwrite(doubles, sizeof(double), 9, fp);
+  fwrite(doubles, sizeof(double), 10, fp);
 }
 
 void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
 {
   SPHCheck::read_restart_head(lmp, FLERR, fp, "pair sph/harmonic/visc", RESTART_VERSION);
   int ints[6];
-  double doubles[9];
+  double doubles[10];
   if (comm->me == 0) {
     utils::sfread(FLERR, ints, sizeof(int), 6, fp, nullptr, error);
-    utils::sfread(FLERR, doubles, sizeof(double), 9, fp, nullptr, error);
+    utils::sfread(FLERR, doubles, sizeof(double), 10, fp, nullptr, error);
   }
   MPI_Bcast(ints, 6, MPI_INT, 0, world);
-  MPI_Bcast(doubles, 9, MPI_DOUBLE, 0, world);
+  MPI_Bcast(doubles, 10, MPI_DOUBLE, 0, world);
   // the body force is read again from fix gravity at init
   diffusion_form = ints[3];
   hydrostatic = (diffusion_form == DIFFUSION_GIVEN);
@@ -389,6 +397,7 @@ void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
   eta_factor = doubles[2];
   delta_request = doubles[3];
   heating = doubles[7];
+  artificial = doubles[9];
   mean_pressure_held = ints[4];
   mean_pressure = doubles[8];
   gradient_request = ints[5];    // -1: the scene's default, again at init

@@ -129,6 +129,23 @@ static inline double sphf_diffusion_pair(double delta_h_c0, double volume_b, dou
   return -2.0 * delta_h_c0 * volume_b * dwdr_r;
 }
 
+/* artificial viscosity of Monaghan (1992; used for free-surface flows in
+   Monaghan 1994): Pi_ab = -alpha h c_ab mu_ab / rho_ab for approaching
+   pairs (v_ab . r_ab < 0), 0 otherwise, mu_ab = (v_ab . r_ab) / (r^2 +
+   0.01 h^2), c_ab and rho_ab the pair's mean speed of sound and density;
+   dv_a/dt += -m_b Pi_ab grad_a W. Returns s with force on a = s r_ab
+   (>= 0: it only pushes approaching particles apart). alpha_h_c = alpha h
+   c_ab; vr = v_ab . r_ab; h2 = h^2; dwdr_r = dW/dr / r. */
+static inline double sphf_artificial_pair(double alpha_h_c, double m_a, double m_b, double rho_a,
+                                          double rho_b, double vr, double rsq, double h2,
+                                          double dwdr_r)
+{
+  if (!(vr < 0.0)) return 0.0;
+  const double mu_ab = vr / (rsq + 0.01 * h2);
+  const double pi_ab = -alpha_h_c * mu_ab * 2.0 / (rho_a + rho_b);
+  return -m_a * m_b * pi_ab * dwdr_r;
+}
+
 /* The pair loop's form of the terms above, with one division per pair
    instead of six (the divisions dominate the cost of a pair): the
    denominators of pressure, viscosity and 1/(r^2 + eta^2) are multiplied

@@ -1,5 +1,6 @@
 /* Unit tests of sph_eos.h and sph_flow.h with sph_kernels.h, in C99.
-   usage: test_flow_terms eos | symmetry | dissipation | laplacian | fused | heating | expansion */
+   usage: test_flow_terms eos | symmetry | dissipation | laplacian | fused | heating | expansion |
+   artificial */
 
 #include "sph_eos.h"
 #include "sph_flow.h"
@@ -374,6 +375,43 @@ static void check_heating(void)
   }
 }
 
+/* Monaghan's artificial viscosity: zero for receding pairs, the formula
+   -m_a m_b Pi_ab dW/dr / r for approaching ones, symmetric in a and b (the
+   pair's forces cancel), and it does no positive work */
+static void check_artificial(void)
+{
+  sphk_kernel k = sphk_make(SPHK_QUINTIC, 2, 0.03);
+  int approaching = 0;
+  for (int n = 0; n < 2000; n++) {
+    const double r_ab[2] = {uniform(-0.03, 0.03), uniform(-0.03, 0.03)};
+    const double v_ab[2] = {uniform(-1, 1), uniform(-1, 1)};
+    const double rsq = r_ab[0] * r_ab[0] + r_ab[1] * r_ab[1], r = sqrt(rsq);
+    if (r >= 0.03 || r < 1e-6) continue;
+    const double dwdr_r = sphk_dwdr(&k, r) / r;
+    const double vr = v_ab[0] * r_ab[0] + v_ab[1] * r_ab[1];
+    const double m_a = 0.09, m_b = 0.11, rho_a = 1010.0, rho_b = 980.0,
+                 alpha_h_c = 0.1 * k.h * 20.0;
+    const double s =
+        sphf_artificial_pair(alpha_h_c, m_a, m_b, rho_a, rho_b, vr, rsq, k.h * k.h, dwdr_r);
+    const double s_ba =
+        sphf_artificial_pair(alpha_h_c, m_b, m_a, rho_b, rho_a, vr, rsq, k.h * k.h, dwdr_r);
+    expect(s == s_ba, "artificial viscosity symmetric in a and b", s, s_ba);
+    if (vr >= 0.0) {
+      expect(s == 0.0, "no artificial viscosity between receding particles", s, 0.0);
+      continue;
+    }
+    approaching++;
+    const double mu = vr / (rsq + 0.01 * k.h * k.h);
+    const double pi = -alpha_h_c * mu / (0.5 * (rho_a + rho_b));
+    const double want = -m_a * m_b * pi * dwdr_r;
+    expect(near(s, want, 1e-13), "artificial viscosity: -m_a m_b Pi_ab dW/dr / r", s, want);
+    expect(s * vr <= 0.0 && (dwdr_r == 0.0 || s > 0.0),
+           "artificial viscosity pushes approaching particles apart, no positive work", s * vr,
+           0.0);
+  }
+  expect(approaching > 500, "approaching pairs sampled", approaching, 500);
+}
+
 int main(int argc, char **argv)
 {
   const char *check = (argc > 1) ? argv[1] : "";
@@ -391,8 +429,12 @@ int main(int argc, char **argv)
     check_heating();
   else if (strcmp(check, "expansion") == 0)
     check_expansion();
+  else if (strcmp(check, "artificial") == 0)
+    check_artificial();
   else {
-    printf("usage: test_flow_terms eos | symmetry | dissipation | laplacian | fused | heating | expansion\n");
+    printf("usage: test_flow_terms eos | symmetry | dissipation | laplacian | fused | heating | "
+           "expansion "
+           "| artificial\n");
     return 2;
   }
   if (failures == 0) printf("PASS %s\n", check);

@@ -4,7 +4,8 @@
 add_header_test(test_flow_terms flow/test_flow_terms.c)
 # the same checks with the headers compiled as C++
 add_header_test_cxx(test_flow_terms_cxx flow/test_flow_terms_cxx.cpp)
-sphthermal_unit_checks(flow.terms test_flow_terms eos symmetry dissipation laplacian fused)
+sphthermal_unit_checks(flow.terms test_flow_terms eos symmetry dissipation laplacian fused
+  artificial)
 sphthermal_test(flow.terms.cxx LABELS unit COMMAND test_flow_terms_cxx laplacian)
 
 # ------------------------------------------------------------ rates
@@ -252,3 +253,9 @@ sphthermal_lammps_test(flow.momentum.gradient flow/in.momentum
 
 # ------------------------------------------------------------ bad input
 add_error_cases(flow flow/errors.in)
+
+# a dam break (examples/flow-dam-break) with Monaghan's artificial viscosity:
+# the front against Martin and Moyce's experiment, no particle lost through
+# the far wall after the impact, 1 and 2 ranks
+sphthermal_python_test(flow.dam_break flow/test_dam_break.py LAMMPS
+  ARGS --np 2 --mpirun ${MPIRUN} LABELS validation mpi PROCESSORS 2)
