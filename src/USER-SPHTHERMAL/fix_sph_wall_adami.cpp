@@ -55,6 +55,11 @@ using namespace FixConst;
 static constexpr int RESTART_VERSION = 1;
 
 static const char cmd[] = "fix sph/wall/adami";
+// a fluid atom whose two nearest wall atoms are together this near, in
+// wall spacings, has gone 0.4 (midway between two wall atoms) to 0.48 (in
+// line with one) spacings past a flat wall's surface, about as far as the
+// first wall row (the mirror walls' check; warn_entered_wall())
+static constexpr double ENTERED = 1.02;
 
 /* ---------------------------------------------------------------------- */
 
@@ -62,8 +67,8 @@ FixSPHWallAdami::FixSPHWallAdami(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), body_given(0), moving_keyword(-1), moving(0), v_sampled(nullptr),
     accel(nullptr), remaining_sampled(0.0), sampled(0), body_force(nullptr), buoyancy(nullptr),
     wall_groupbit(0), kernel_kind(0), cutoff(0.0), materials(nullptr), thermal_expansion(0),
-    fluid_near_valid(false), solid_type(nullptr), any_solid(0), solid_state(nullptr), nmax(0),
-    mirror(nullptr)
+    fluid_near_valid(false), entered_warned(0), solid_type(nullptr), any_solid(0),
+    solid_state(nullptr), nmax(0), mirror(nullptr)
 {
   if (!atom->rho_flag || !atom->vest_flag)
     error->all(FLERR, "Fix sph/wall/adami requires atom style sph (rho, vest)");
@@ -133,6 +138,7 @@ void FixSPHWallAdami::init()
   cutoff = given.cutoff;
   if (mirror) mirror->init(groupbit, kernel_kind, cutoff, id);
   materials = FixSPHMaterials::find(lmp, "Fix sph/wall/adami");
+  entered_warned = 0;    // once a run
   // ghost velocities: turned on and checked by the pair, which this fix requires
   SPHCheck::group_of_kind(lmp, FLERR, this, hub.fixes_of_any<FixSPHWallAdami>(), false, false);
   // a wall type without an equation of state is a solid of its own density
@@ -219,6 +225,78 @@ void FixSPHWallAdami::find_fluid_near()
       },
       first_fluid, fluid_near, fluid_atoms);
   fluid_near_valid = true;
+  if (!entered_warned) warn_entered_wall();
+}
+
+/* ----------------------------------------------------------------------
+   a fluid atom whose two nearest wall atoms (owned here) are together
+   nearer than ENTERED wall spacings (the spacing from the wall atom's
+   volume, (m / rho0)^(1/d)): at a flat wall's surface they are at least
+   1.41 spacings (midway between two) and 1.5 (in line with one), in a
+   corner 1.41; on the first wall row's line 1 spacing. Named by the lowest atom
+   ID of all ranks, once a run.
+------------------------------------------------------------------------- */
+
+void FixSPHWallAdami::warn_entered_wall()
+{
+  double *const *const x = atom->x;
+  const int *const type = atom->type;
+  const tagint *const tag = atom->tag;
+  const double inv_dim = 1.0 / domain->dimension;
+  // per fluid atom of fluid_atoms: its two nearest wall atoms' distances,
+  // the nearest one's ID and spacing
+  const int nfluid = fluid_atoms.size();
+  std::vector<double> near1(nfluid, INFINITY), near2(nfluid, INFINITY), spacing(nfluid, 0.0);
+  std::vector<tagint> wall_of(nfluid, 0);
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (first_fluid[i] == first_fluid[i + 1]) continue;
+    const double rho0 = materials->rho0(type[i]);
+    const double mass_i = atom->rmass_flag ? atom->rmass[i] : atom->mass[type[i]];
+    if (!(rho0 > 0.0) || !(mass_i > 0.0)) continue;
+    const double spacing_i = pow(mass_i / rho0, inv_dim);
+    for (int n = first_fluid[i]; n < first_fluid[i + 1]; n++) {
+      const int m = fluid_near[n], j = fluid_atoms[m];
+      const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+      const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      if (r < near1[m]) {
+        near2[m] = near1[m];
+        near1[m] = r;
+        spacing[m] = spacing_i;
+        wall_of[m] = tag[i];
+      } else if (r < near2[m])
+        near2[m] = r;
+    }
+  }
+  // the find with the lowest fluid atom ID: fluid ID, wall ID, distance,
+  // spacing, fluid x
+  double found[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  tagint lowest = MAXTAGINT;
+  for (int m = 0; m < nfluid; m++) {
+    const int j = fluid_atoms[m];
+    if (!(near1[m] + near2[m] < ENTERED * spacing[m]) || tag[j] >= lowest) continue;
+    lowest = tag[j];
+    const double row[7] = {
+        (double) tag[j], (double) wall_of[m], near1[m], spacing[m], x[j][0], x[j][1], x[j][2]};
+    for (int k = 0; k < 7; k++) found[k] = row[k];
+  }
+  tagint lowest_all = MAXTAGINT;
+  MPI_Allreduce(&lowest, &lowest_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (lowest_all == MAXTAGINT) return;
+  entered_warned = 1;
+  // the rank with the lowest ID gives its find to rank 0
+  int mine = (lowest == lowest_all) ? comm->me : comm->nprocs, from = 0;
+  MPI_Allreduce(&mine, &from, 1, MPI_INT, MPI_MIN, world);
+  MPI_Bcast(found, 7, MPI_DOUBLE, from, world);
+  if (comm->me == 0)
+    error->warning(
+        FLERR,
+        "Fix {} sph/wall/adami: fluid atom {} at ({:.6g} {:.6g} {:.6g}) is {:.3g} from "
+        "wall atom {} and its two nearest wall atoms are together nearer than {} "
+        "times the wall's spacing {:.3g}, at step {}: it is about a wall row deep in the "
+        "wall, where the walls' pressure may no longer push it out (a free surface that "
+        "strikes walls wants pair sph/harmonic/visc 'artificial')",
+        id, (tagint) found[0], found[4], found[5], found[6], found[2], (tagint) found[1], ENTERED,
+        found[3], update->ntimestep);
 }
 
 void FixSPHWallAdami::setup_pre_force(int /*vflag*/)

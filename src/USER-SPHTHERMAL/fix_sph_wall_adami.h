@@ -101,6 +101,11 @@ class FixSPHWallAdami : public Fix {
   std::vector<double> fluid_pressure, fluid_rho_accel;
   bool fluid_near_valid;
   void find_fluid_near();
+  // a fluid atom much nearer to a wall atom than the wall's spacing has
+  // gone into the wall (the extrapolated pressure no longer pushes it out):
+  // warn, once a run, at the neighbour build that finds it
+  int entered_warned;
+  void warn_entered_wall();
   int *solid_type;    // per type: 1 when the type has no equation of state
   // per thread (package omp) and type: the kernel weight of its fluid
   // around one solid particle
