@@ -558,6 +558,7 @@ double PairSPHHarmonicVisc::artificial_pair(int i, int j, double vr, double rsq,
 {
   const int *const type = atom->type;
   const sphe_eos *const eos_i = eos_of[type[i]], *const eos_j = eos_of[type[j]];
+  if (!eos_i && !eos_j) return 0.0;    // two solids: no flow between them
   const double c_i = eos_i ? eos_i->c0 : eos_j->c0;
   const double c_j = eos_j ? eos_j->c0 : c_i;
   return sphf_artificial_pair(artificial * kernel.h * 0.5 * (c_i + c_j), mass_of[i], mass_of[j],
