@@ -456,6 +456,17 @@ void PairSPHHarmonicVisc::eval(int ifrom, int ito, const Rates &rates)
    round-off.
 ------------------------------------------------------------------------- */
 
+/* a pair's dissipated work as heat: a fluid pair halves it; with a wall
+   particle the fluid particle takes it all. i's share is summed in
+   desph_i (the caller divides it by i's mass), j's goes to desph_j where
+   j is counted here. */
+static inline void share_pair_heat(double heat, int wall_i, int wall_j, int j_counted,
+                                   double mass_j, double &desph_i, double &desph_j)
+{
+  desph_i += (wall_i ? 0.0 : (wall_j ? 1.0 : 0.5)) * heat;
+  if (!wall_j && j_counted) desph_j += (wall_i ? 1.0 : 0.5) * heat / mass_j;
+}
+
 template <int KERNEL>
 void PairSPHHarmonicVisc::eval_heating_kernel(int ifrom, int ito, const Rates &rates)
 {
@@ -532,12 +543,8 @@ void PairSPHHarmonicVisc::eval_heating(int ifrom, int ito, const Rates &rates)
       double s_r, s_rv, s_v, c_i, c_j, inv_other;
       sphf_pair(SPHF_P_SUM, VISCOSITY, xi, &a, &b, rsq, dwdr_r, eta2, vr, 1.0, &s_r, &s_rv, &s_v,
                 &c_i, &c_j, &inv_other);
-      const double heat = heating * sphf_viscous_power(s_rv, s_v, del, dv, du);
-      // a fluid pair halves it; with a wall the fluid particle takes it all
-      const double share_i = wall_i ? 0.0 : (wall_j ? 1.0 : 0.5);
-      desph_i += share_i * heat;
-      if (!wall_j && (newton_pair || j < nlocal))
-        desph[j] += (wall_i ? 1.0 : 0.5) * heat / mass_of[j];
+      share_pair_heat(heating * sphf_viscous_power(s_rv, s_v, del, dv, du), wall_i, wall_j,
+                      newton_pair || j < nlocal, mass_of[j], desph_i, desph[j]);
     }
     if (!wall_i) desph[i] += desph_i / mass_of[i];
   }
@@ -622,10 +629,8 @@ void PairSPHHarmonicVisc::eval_artificial(int ifrom, int ito, const Rates &rates
       }
       if (heating > 0.0) {
         const double zero[3] = {0.0, 0.0, 0.0};
-        const double heat = heating * sphf_viscous_power(s, 0.0, del, zero, du);
-        desph_i += (wall_i ? 0.0 : (wall_j ? 1.0 : 0.5)) * heat;
-        if (!wall_j && (newton_pair || j < nlocal))
-          desph[j] += (wall_i ? 1.0 : 0.5) * heat / mass_of[j];
+        share_pair_heat(heating * sphf_viscous_power(s, 0.0, del, zero, du), wall_i, wall_j,
+                        newton_pair || j < nlocal, mass_of[j], desph_i, desph[j]);
       }
       if (evflag) tally_pair(i, j, fx, fy, fz, del[0], del[1], del[2], rates.thread);
     }
