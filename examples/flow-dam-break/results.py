@@ -29,7 +29,8 @@ def main():
     points = [(t, z) for t, z in reference.MARTIN_MOYCE if z < LENGTH - 1]
     lines = ["# Dam break: the front against Martin and Moyce (1952)", "",
              "Written by results.py (run.sh). Z = x / a of the front, T = t sqrt(2 g / a);",
-             "artificial viscosity 0.1 unless said otherwise.", "",
+             "the package's defaults (under fix gravity Monaghan's artificial viscosity, 0.1, at",
+             "the free surface and at walls) unless said otherwise.", "",
              "| T | experiment | " + " | ".join(name for name, _ in runs) + " |",
              "|---|---|" + "---|" * len(runs)]
     worst = {name: 0.0 for name, _ in runs}

@@ -293,8 +293,9 @@ void FixSPHWallAdami::warn_entered_wall()
         "Fix {} sph/wall/adami: fluid atom {} at ({:.6g} {:.6g} {:.6g}) is {:.3g} from "
         "wall atom {} and its two nearest wall atoms are together nearer than {} "
         "times the wall's spacing {:.3g}, at step {}: it is about a wall row deep in the "
-        "wall, where the walls' pressure may no longer push it out (a free surface that "
-        "strikes walls wants pair sph/harmonic/visc 'artificial')",
+        "wall, where the walls' pressure may no longer push it out (pair "
+        "sph/harmonic/visc's 'artificial' damps films and splashes at walls: 0.1 by default "
+        "under fix gravity)",
         id, (tagint) found[0], found[4], found[5], found[6], found[2], (tagint) found[1], ENTERED,
         found[3], update->ntimestep);
 }

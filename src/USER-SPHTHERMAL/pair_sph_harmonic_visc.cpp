@@ -49,16 +49,17 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     PairSPHKernel(lmp, "sph/harmonic/visc",
                   "viscosities and equations of state come from fix sph/materials"),
     pressure_form(SPHF_P_AVERAGED), viscosity_form(SPHF_V_ADAMI), xi(SPHF_XI_CLEARY), delta(0.1),
-    heating(0.0), artificial(0.0), pressure_request(-1), pressure_logged(-1), delta_request(-1.0),
-    delta_logged(-1), grain_forms_warned(0), mean_pressure_held(0), mean_pressure(0.0),
-    gradient_correction(0), gradient_request(-1), gradient_logged(-1), gradient_inverse(nullptr),
-    nmax_gradient(0), diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr),
-    buoyancy(nullptr), pressure_buoyancy(nullptr), eta2(0.0), materials(nullptr),
-    viscosity_varies(0), wall_groupbit(0), pressure(nullptr), viscosity(nullptr), mass_of(nullptr),
-    volume(nullptr), density(nullptr), diffused_density(nullptr), diffusion_rho(nullptr),
+    heating(0.0), artificial(0.0), artificial_request(-1.0), artificial_logged(-1),
+    pressure_request(-1), pressure_logged(-1), delta_request(-1.0), delta_logged(-1),
+    grain_forms_warned(0), mean_pressure_held(0), mean_pressure(0.0), gradient_correction(0),
+    gradient_request(-1), gradient_logged(-1), gradient_inverse(nullptr), nmax_gradient(0),
+    diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr), buoyancy(nullptr),
+    pressure_buoyancy(nullptr), eta2(0.0), materials(nullptr), viscosity_varies(0),
+    wall_groupbit(0), pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr),
+    density(nullptr), diffused_density(nullptr), diffusion_rho(nullptr),
     velocity_seen_store(nullptr), velocity_seen(nullptr), thermal_expansion(0), nmax(0),
     heat(nullptr), shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0), background_warned(0),
-    soft_fluid_warned(0)
+    soft_fluid_warned(0), shepard(nullptr), nmax_shepard(0), artificial_here(0)
 {
   // the continuity equation and the viscous term need the velocities of
   // ghost atoms: turned on here, as comm_modify vel yes would
@@ -75,6 +76,7 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
 PairSPHHarmonicVisc::~PairSPHHarmonicVisc()
 {
   memory->destroy(pressure);
+  memory->destroy(shepard);
   memory->destroy(viscosity);
   memory->destroy(mass_of);
   memory->destroy(volume);
@@ -103,6 +105,11 @@ void PairSPHHarmonicVisc::compute(int eflag, int vflag)
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
+struct PairSPHHarmonicVisc::ShepardCall {
+  PairSPHHarmonicVisc *pair;
+  template <int KERNEL, int DIM> void run() { pair->update_shepard<KERNEL, DIM>(); }
+};
+
 /* ----------------------------------------------------------------------
    before the pair loops: the per-atom state they read
 ------------------------------------------------------------------------- */
@@ -118,6 +125,11 @@ void PairSPHHarmonicVisc::begin_compute()
   update_atom_state();
   if (update->setupflag) check_neighbours();
   if (gradient_correction) refresh_gradient_correction();
+  if (artificial > 0.0) {
+    ShepardCall call = {this};
+    const int settings[] = {kernel_kind, domain->dimension};
+    SPHDispatch<SPHKernelKinds, SPHDimensions>::to(call, settings);
+  }
   heat_term = PairSPHClearyHeat::FlowLoopTerm();
   if (heat && heat->term_in_flow_loop()) heat_term = heat->begin_flow_loop_term();
   if (shift_sums_wanted) {
@@ -176,8 +188,9 @@ void PairSPHHarmonicVisc::eval_pairs(int ifrom, int ito, const Rates &rates)
                         HEAT_ON | HEAT_ATOM_K | HEAT_RELAX, DIFFUSION, DIFFUSION | HEAT_ON,
                         DIFFUSION | HEAT_ON | HEAT_ATOM_K, DIFFUSION | HEAT_ON | HEAT_RELAX,
                         DIFFUSION | HEAT_ON | HEAT_ATOM_K | HEAT_RELAX>>::to(call, settings);
-  // Monaghan's artificial viscosity: a pass of its own, only when asked for
-  if (artificial > 0.0) {
+  // Monaghan's artificial viscosity: a pass of its own, only where a
+  // particle is at a free surface
+  if (artificial > 0.0 && artificial_here) {
     ArtificialCall artificial_call = {this, ifrom, ito, &rates};
     const int artificial_settings[] = {kernel_kind, domain->dimension};
     SPHDispatch<SPHKernelKinds, SPHDimensions>::to(artificial_call, artificial_settings);
@@ -552,17 +565,23 @@ void PairSPHHarmonicVisc::eval_heating(int ifrom, int ito, const Rates &rates)
 
 /* ----------------------------------------------------------------------
    Monaghan's artificial viscosity (sph_flow.h, sphf_artificial_pair) of
-   the pair i, j: s with force on i = s r_ij, vr = v_ij . r_ij with the
-   fluid's vest and a wall particle's own velocity (its no-slip mirror
-   velocity would make the term a friction twice as strong on a thin layer
-   sliding along the wall: a dam break's front fell 12 % behind the
-   experiment); c_ij the mean speed of sound of the two (a solid wall's,
-   which has none, is the fluid's).
+   the pair i, j where one of them is at a free surface (its Shepard sum
+   below SPHF_SURFACE_SHEPARD) or a wall particle, 0 otherwise: s with
+   force on i = s r_ij, vr = v_ij . r_ij with the fluid's vest and a wall
+   particle's own velocity (its no-slip mirror velocity would make the term
+   a friction twice as strong on a thin layer sliding along the wall: a dam
+   break's front fell 12 % behind the experiment); c_ij the mean speed of
+   sound of the two (a solid wall's, which has none, is the fluid's).
 ------------------------------------------------------------------------- */
 
 double PairSPHHarmonicVisc::artificial_pair(int i, int j, double vr, double rsq,
                                             double dwdr_r) const
 {
+  // only where one of the two is at a free surface or a wall particle
+  const int *const mask = atom->mask;
+  if (!((mask[i] | mask[j]) & wall_groupbit) && !(shepard[i] < SPHF_SURFACE_SHEPARD) &&
+      !(shepard[j] < SPHF_SURFACE_SHEPARD))
+    return 0.0;
   const int *const type = atom->type;
   const sphe_eos *const eos_i = eos_of[type[i]], *const eos_j = eos_of[type[j]];
   if (!eos_i && !eos_j) return 0.0;    // two solids: no flow between them
@@ -638,5 +657,85 @@ void PairSPHHarmonicVisc::eval_artificial(int ifrom, int ito, const Rates &rates
     f[i][1] += fy_i;
     if (DIM == 3) f[i][2] += fz_i;
     if (heating > 0.0 && !wall_i) desph[i] += desph_i / mass_of[i];
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the Shepard sum S_i = sum_j V_j W_ij of every owned and ghost atom, i
+   itself and wall particles included: about 1 inside the fluid and next to
+   walls (which complete the support), about 0.5 on a free surface and
+   below SPHF_SURFACE_SHEPARD over the outer rows, where the artificial
+   viscosity acts; and whether this rank has any such atom
+------------------------------------------------------------------------- */
+
+template <int KERNEL, int DIM> void PairSPHHarmonicVisc::update_shepard()
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  if (atom->nmax > nmax_shepard) {
+    nmax_shepard = atom->nmax;
+    memory->destroy(shepard);
+    memory->create(shepard, nmax_shepard, "pair:shepard");
+  }
+  const double *const *const x = atom->x;
+  const double *const volume = this->volume;
+  const int newton_pair = force->newton_pair;
+  const double w0 = kernel.w_scale * sphk_f(KERNEL, 0.0);
+  for (int i = 0; i < nall; i++) shepard[i] = (i < nlocal) ? volume[i] * w0 : 0.0;
+  const double cutsq_kernel = cut_global * cut_global;
+  const int *const ilist = list->ilist;
+  const int *const numneigh = list->numneigh;
+  int **const firstneigh = list->firstneigh;
+  const int *const mask = atom->mask;
+  const int wall_groupbit = this->wall_groupbit;
+  SPHSupport support;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = ilist[ii];
+    const int wall_i = mask[i] & wall_groupbit;
+    const int nin = support.gather<DIM, true>(x[i], x, firstneigh[i], numneigh[i], cutsq_kernel);
+    double sum_i = 0.0;
+    for (int k = 0; k < nin; k++) {
+      const int j = support.index[k];
+      const int wall_j = mask[j] & wall_groupbit;
+      if (wall_i && wall_j) continue;
+      const double w = kernel.w_scale * sphk_f(KERNEL, sqrt(support.rsq[k]) * kernel.inv_h);
+      sum_i += volume[j] * w;
+      if (newton_pair || j < nlocal) shepard[j] += volume[i] * w;
+    }
+    shepard[i] += sum_i;
+  }
+  if (newton_pair) reverse(SPHCommStage().flat(shepard, 1));
+  forward(SPHCommStage().flat(shepard, 1));
+  // wall particles are not at a free surface (their own sums are not
+  // complete behind the wall), but take part with every fluid neighbour
+  bigint surface_owned = 0;
+  artificial_here = 0;
+  for (int i = 0; i < nall; i++) {
+    if (mask[i] & wall_groupbit) {
+      shepard[i] = 1.0;
+      artificial_here = 1;
+    } else if (shepard[i] < SPHF_SURFACE_SHEPARD) {
+      artificial_here = 1;
+      if (i < nlocal) surface_owned++;
+    }
+  }
+  if (!update->setupflag) return;
+  bigint surface_all = 0;
+  MPI_Allreduce(&surface_owned, &surface_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  // the scene's default: none where a run starts without a free surface
+  // (a closed container full of fluid, under weight)
+  if (surface_all == 0 && artificial_request < 0.0) {
+    artificial = 0.0;
+    artificial_here = 0;
+  }
+  if (comm->me == 0) {
+    if (artificial > 0.0)
+      utils::logmesg(lmp,
+                     "Pair style sph/harmonic/visc: artificial viscosity {} on pairs with one of "
+                     "{} atoms now at a free surface and between fluid and wall particles\n",
+                     artificial, surface_all);
+    else
+      utils::logmesg(lmp,
+                     "Pair style sph/harmonic/visc: artificial 0 (the default under weight when "
+                     "the run starts without a free surface)\n");
   }
 }

@@ -70,6 +70,9 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   double delta;          // density diffusion (Ng et al. 2020, eq 5), 0: none
   double heating;        // fraction of the viscous work turned into heat, 0: none
   double artificial;     // alpha of Monaghan's artificial viscosity, 0: none
+  // 'artificial' as the command gave it (-1: the scene's default at init)
+  double artificial_request;
+  int artificial_logged;
   // the command's pressure form and delta (-1: not given, the scene's
   // default at init) and the defaults last logged
   int pressure_request, pressure_logged;
@@ -215,6 +218,14 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // Monaghan's artificial viscosity, a pass of its own (only when on)
   template <int KERNEL, int DIM> void eval_artificial(int ifrom, int ito, const Rates &rates);
   double artificial_pair(int i, int j, double vr, double rsq, double dwdr_r) const;
+  // the Shepard sum sum_j V_j W_ij of each owned and ghost atom (itself and
+  // wall particles included), which tells the particles at a free surface
+  // (below SPHF_SURFACE_SHEPARD) for the artificial viscosity; 1 for walls
+  double *shepard;
+  int nmax_shepard;
+  int artificial_here;    // this rank has pairs the artificial viscosity acts on
+  template <int KERNEL, int DIM> void update_shepard();
+  struct ShepardCall;
 };
 
 }    // namespace LAMMPS_NS

@@ -95,6 +95,13 @@ void PairSPHHarmonicVisc::choose_scene_forms()
                           delta_logged);
   } else
     delta = delta_request;
+  if (artificial_request < 0.0) {
+    const SPHSceneDefaults::Choice choice = SPHSceneDefaults::artificial_viscosity(lmp);
+    artificial = choice.number;
+    SPHSceneDefaults::log(lmp, who, "artificial", fmt::format("{}", artificial).c_str(), choice,
+                          artificial_logged);
+  } else
+    artificial = artificial_request;
 
   const std::string grains = SPHSceneDefaults::grains_fix(lmp);
   if (grains.empty() || comm->me != 0 || grain_forms_warned) return;
@@ -131,7 +138,7 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
   eta_factor = -1.0;       // the default depends on the viscosity form
   delta_request = -1.0;    // the scene's default at init (choose_scene_forms)
   heating = 0.0;           // Reece et al. 2024 and Ng et al. 2020 neglect it
-  artificial = 0.0;
+  artificial_request = -1.0;    // the scene's default at init (choose_scene_forms)
   mean_pressure_held = 0;
   mean_pressure = 0.0;
   gradient_request = -1;    // the scene's default at init
@@ -191,8 +198,8 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
                    "viscous work turned into heat)",
                    cmd, value);
     } else if (strcmp(arg[iarg], "artificial") == 0) {
-      artificial = utils::numeric(FLERR, value, false, lmp);
-      if (!(artificial >= 0.0 && artificial <= 1.0))
+      artificial_request = utils::numeric(FLERR, value, false, lmp);
+      if (!(artificial_request >= 0.0 && artificial_request <= 1.0))
         error->all(FLERR,
                    "Illegal {} command: artificial {} must be in [0, 1] (alpha of Monaghan's "
                    "artificial viscosity; 0: none)",
@@ -362,12 +369,13 @@ double PairSPHHarmonicVisc::init_one(int, int)
 
 void PairSPHHarmonicVisc::write_restart_settings(FILE *fp)
 {
-  // the pressure form and delta as the command gave them (-1: the scene's)
+  // the pressure form, delta and artificial as the command gave them (-1: the scene's)
   const int ints[6] = {kernel_kind,    pressure_request,   viscosity_form,
                        diffusion_form, mean_pressure_held, gradient_request};
   // xi_given only checks the command line
-  const double doubles[10] = {cut_global, xi,         eta_factor, delta_request, gravity[0],
-                              gravity[1], gravity[2], heating,    mean_pressure, artificial};
+  const double doubles[10] = {
+      cut_global, xi,         eta_factor, delta_request, gravity[0],
+      gravity[1], gravity[2], heating,    mean_pressure, artificial_request};
   SPHCheck::write_restart_head(fp, RESTART_VERSION);
   fwrite(ints, sizeof(int), 6, fp);
   fwrite(doubles, sizeof(double), 10, fp);
@@ -397,7 +405,7 @@ void PairSPHHarmonicVisc::read_restart_settings(FILE *fp)
   eta_factor = doubles[2];
   delta_request = doubles[3];
   heating = doubles[7];
-  artificial = doubles[9];
+  artificial_request = doubles[9];    // -1: the scene's default, again at init
   mean_pressure_held = ints[4];
   mean_pressure = doubles[8];
   gradient_request = ints[5];    // -1: the scene's default, again at init

@@ -136,6 +136,18 @@ static inline double sphf_diffusion_pair(double delta_h_c0, double volume_b, dou
    dv_a/dt += -m_b Pi_ab grad_a W. Returns s with force on a = s r_ab
    (>= 0: it only pushes approaching particles apart). alpha_h_c = alpha h
    c_ab; vr = v_ab . r_ab; h2 = h^2; dwdr_r = dW/dr / r. */
+/* The package applies it only to pairs with a particle at a free surface,
+   one whose Shepard sum sum_b V_b W_ab (itself and wall particles
+   included) is below SPHF_SURFACE_SHEPARD, and to pairs of a fluid and a
+   wall particle: where a free surface or its splash strikes a wall. The
+   sum is about 1 inside the fluid and next to walls, which complete the
+   kernel's support, and about 0.5 on a free surface, so the term acts
+   over the outer rows and at walls and leaves the bulk alone. A free
+   surface's particles lack the pressure and the density diffusion that
+   damp the bulk: without it a thin film on a wall oscillates against it
+   and goes through, and an impact on a wall blows up. */
+#define SPHF_SURFACE_SHEPARD 0.9
+
 static inline double sphf_artificial_pair(double alpha_h_c, double m_a, double m_b, double rho_a,
                                           double rho_b, double vr, double rsq, double h2,
                                           double dwdr_r)

@@ -202,6 +202,20 @@ SPHSceneDefaults::Choice SPHSceneDefaults::density_diffusion(LAMMPS *lmp)
           0.3};
 }
 
+SPHSceneDefaults::Choice SPHSceneDefaults::artificial_viscosity(LAMMPS *lmp)
+{
+  const Fix *weight = SPHBodyForce::source(lmp);
+  if (!weight) return {0, "the default without weight: no free surface to strike walls", 0.0};
+  return {
+      1,
+      fmt::format(
+          "the default under the weight of fix {}, where a free surface may strike "
+          "walls; it acts on pairs with a particle at a free surface and between fluid and walls, "
+          "and not where the run starts without a free surface",
+          weight->id),
+      0.1};
+}
+
 SPHSceneDefaults::Choice SPHSceneDefaults::heat_eta(LAMMPS *lmp)
 {
   return by_buoyant_shift(lmp, 0, 0.1, 1, 0.01);

@@ -50,6 +50,13 @@ namespace SPHSceneDefaults {
   // grains of fix sph/grains, 0.1 (Ng et al. 2020) otherwise
   Choice density_diffusion(LAMMPS *lmp);
 
+  // 'artificial' of pair sph/harmonic/visc (number: alpha of Monaghan's
+  // artificial viscosity, which acts on pairs with a particle at a free
+  // surface and between fluid and walls): 0.1 under weight (fix gravity),
+  // where a free surface may strike walls (the pair turns it off where a
+  // run starts without a free surface), 0 otherwise
+  Choice artificial_viscosity(LAMMPS *lmp);
+
   // the fix sph/grains of the scene (its ID), "" when there is none
   std::string grains_fix(LAMMPS *lmp);
 

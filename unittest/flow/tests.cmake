@@ -254,7 +254,12 @@ sphthermal_lammps_test(flow.momentum.gradient flow/in.momentum
 # ------------------------------------------------------------ bad input
 add_error_cases(flow flow/errors.in)
 
-# a dam break (examples/flow-dam-break) with Monaghan's artificial viscosity:
+# where Monaghan's artificial viscosity acts: at the free surface and at
+# walls, not in the bulk; its default under fix gravity, none in a closed tank
+sphthermal_python_test(flow.artificial_surface flow/test_artificial_surface.py LAMMPS LABELS unit)
+
+# a dam break (examples/flow-dam-break) with the package's defaults (Monaghan's
+# artificial viscosity under fix gravity):
 # the front against Martin and Moyce's experiment, no particle lost through
 # the far wall after the impact, 1 and 2 ranks
 sphthermal_python_test(flow.dam_break flow/test_dam_break.py LAMMPS
