@@ -10,8 +10,8 @@ here=$(cd "$(dirname "$0")" && pwd)
 
 if [ "${1:-}" = quick ]; then
   size="-var nx 20 -var ny 40 -var steps 20000"
-  # measured (README.md): largest speed 0.52 % of sqrt(g H) (at t = 0.08 s), pressure error 0.29 % of
-  # rho0 g H; the square lattice (-var lattice sq) gives 1.8 % and 0.86 %, and fails
+  # measured (README.md): largest speed 0.24 % of sqrt(g H) (at t = 0.07 s), pressure error 0.25 % of
+  # rho0 g H; the square lattice (-var lattice sq) gives 1.8 % and 1.09 %, and fails
   limits="--max-speed 0.75 --max-pressure-error 0.6"
 else
   size="-var nx 20 -var ny 40 -var steps 100000"

@@ -705,14 +705,19 @@ template <int KERNEL, int DIM> void PairSPHHarmonicVisc::update_shepard()
   }
   if (newton_pair) reverse(SPHCommStage().flat(shepard, 1));
   forward(SPHCommStage().flat(shepard, 1));
-  // wall particles are not at a free surface (their own sums are not
-  // complete behind the wall), but take part with every fluid neighbour
+  // only fluid particles can be at a free surface: wall particles (their
+  // own sums are not complete behind the wall) take part with every fluid
+  // neighbour, and atoms of types without an equation of state (the grains
+  // of fix sph/grains, solids) are not in the flow's pairs at all
   bigint surface_owned = 0;
   artificial_here = 0;
+  const int *const type = atom->type;
   for (int i = 0; i < nall; i++) {
     if (mask[i] & wall_groupbit) {
       shepard[i] = 1.0;
       artificial_here = 1;
+    } else if (!eos_of[type[i]]) {
+      shepard[i] = 1.0;
     } else if (shepard[i] < SPHF_SURFACE_SHEPARD) {
       artificial_here = 1;
       if (i < nlocal) surface_owned++;
