@@ -188,8 +188,8 @@ void PairSPHHarmonicVisc::eval_pairs(int ifrom, int ito, const Rates &rates)
                         HEAT_ON | HEAT_ATOM_K | HEAT_RELAX, DIFFUSION, DIFFUSION | HEAT_ON,
                         DIFFUSION | HEAT_ON | HEAT_ATOM_K, DIFFUSION | HEAT_ON | HEAT_RELAX,
                         DIFFUSION | HEAT_ON | HEAT_ATOM_K | HEAT_RELAX>>::to(call, settings);
-  // Monaghan's artificial viscosity: a pass of its own, only where a
-  // particle is at a free surface
+  // Monaghan's artificial viscosity: a pass of its own, only on a rank
+  // with fluid particles at a free surface or wall particles
   if (artificial > 0.0 && artificial_here) {
     ArtificialCall artificial_call = {this, ifrom, ito, &rates};
     const int artificial_settings[] = {kernel_kind, domain->dimension};
