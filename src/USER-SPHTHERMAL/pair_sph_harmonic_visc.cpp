@@ -616,9 +616,12 @@ void PairSPHHarmonicVisc::eval_artificial(int ifrom, int ito, const Rates &rates
   const int *const numneigh = list->numneigh;
   int **const firstneigh = list->firstneigh;
 
+  const double *const shepard = this->shepard;
   for (int ii = ifrom; ii < ito; ii++) {
     const int i = ilist[ii];
     const int wall_i = mask[i] & wall_groupbit;
+    // i a wall particle or at a free surface: every neighbour may pair with it
+    const int acts_i = wall_i || shepard[i] < SPHF_SURFACE_SHEPARD;
     const double *const u_i = wall_i ? v[i] : vest[i];
     const int *const jlist = firstneigh[i];
     const int jnum = numneigh[i];
@@ -627,6 +630,8 @@ void PairSPHHarmonicVisc::eval_artificial(int ifrom, int ito, const Rates &rates
       const int j = jlist[jj] & NEIGHMASK;
       const int wall_j = mask[j] & wall_groupbit;
       if (wall_i && wall_j) continue;
+      // (artificial_pair() returns 0 for the others: skipped before any work)
+      if (!acts_i && !wall_j && !(shepard[j] < SPHF_SURFACE_SHEPARD)) continue;
       const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1],
                              (DIM == 3) ? x[i][2] - x[j][2] : 0.0};
       const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
