@@ -88,20 +88,18 @@ void PairSPHHarmonicVisc::choose_scene_forms()
                           pressure_logged);
   } else
     pressure_form = pressure_request;
-  if (delta_request < 0.0) {
-    const SPHSceneDefaults::Choice choice = SPHSceneDefaults::density_diffusion(lmp);
-    delta = choice.number;
-    SPHSceneDefaults::log(lmp, who, "delta", fmt::format("{}", delta).c_str(), choice,
-                          delta_logged);
-  } else
-    delta = delta_request;
-  if (artificial_request < 0.0) {
-    const SPHSceneDefaults::Choice choice = SPHSceneDefaults::artificial_viscosity(lmp);
-    artificial = choice.number;
-    SPHSceneDefaults::log(lmp, who, "artificial", fmt::format("{}", artificial).c_str(), choice,
-                          artificial_logged);
-  } else
-    artificial = artificial_request;
+  // a number the command gave (>= 0), or the scene's default, logged
+  auto number = [&](double request, const char *setting, SPHSceneDefaults::Choice (*rule)(LAMMPS *),
+                    int &logged) {
+    if (request >= 0.0) return request;
+    const SPHSceneDefaults::Choice choice = rule(lmp);
+    SPHSceneDefaults::log(lmp, who, setting, fmt::format("{}", choice.number).c_str(), choice,
+                          logged);
+    return choice.number;
+  };
+  delta = number(delta_request, "delta", SPHSceneDefaults::density_diffusion, delta_logged);
+  artificial = number(artificial_request, "artificial", SPHSceneDefaults::artificial_viscosity,
+                      artificial_logged);
 
   const std::string grains = SPHSceneDefaults::grains_fix(lmp);
   if (grains.empty() || comm->me != 0 || grain_forms_warned) return;
