@@ -32,6 +32,10 @@ sphthermal_python_test(phase.freezing.conduction phase/test_freezing.py LAMMPS A
 # the casting-like scene, coarse (examples/phase-casting): a shell on the
 # chilled stretch only, thicker downstream, symmetric, at rest; the flow through
 sphthermal_python_test(phase.casting phase/test_casting.py LAMMPS LABELS regression)
+# a melt poured into a cold mould, coarse (examples/phase-casting/in.pour): the
+# run-out against Martin and Moyce, the shell from the mould's walls, solids
+# at rest, every particle kept, the energy books to round-off
+sphthermal_python_test(phase.pour phase/test_pour.py LAMMPS LABELS regression)
 foreach(np 2 4)
   sphthermal_python_test(phase.mpi.np${np} ${phase_test} LAMMPS
     ARGS --check mpi --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
