@@ -83,7 +83,7 @@ void ComputeSPHThermal::compute_vector()
     // exchange sums to zero at every step
     const double energy = particles.thermal_energy(i) -
         (particles.machdyn(i) ? half_step * particles.heating_rate(i, atom->desph) : 0.0);
-    const double capacity = particles.mass(i) * atom->cv[i];
+    const double capacity = particles.mass(i) * particles.sensible_cv(i);
     local[0] += energy;
     local[1] += capacity;
     local[2] += particles.heating_rate(i, atom->desph);

@@ -399,7 +399,6 @@ void FixSPHGrains::exchange()
 
   double **x = atom->x, **v = atom->v, **f = atom->f;
   const double *radius = atom->radius, *rmass = atom->rmass;
-  const double *cv = atom->cv;
   double *desph = atom->desph;
   const int *mask = atom->mask, *type = atom->type;
   const tagint *tag = atom->tag;
@@ -465,7 +464,7 @@ void FixSPHGrains::exchange()
       fluid_t += vw_heat * t;
       if (heat) {
         fluid_k += vw_heat * materials->conductivity_at(type[j], t, cmd);
-        fluid_cp += vw_heat * cv[j];
+        fluid_cp += vw_heat * particles.sensible_cv(j);
       }
       if (pressure_kind == SPHG_PRESSURE_GRADIENT) {
         const double g = minus_dwdr_r_scale * sphk_df_over_q(kernel.kind, r * kernel.inv_h);

@@ -47,8 +47,8 @@ static bool adds_forces_after_pair(const Fix *fix, int mask)
 }
 
 /* ----------------------------------------------------------------------
-   fix ID group sph/phase type I melting Tm latent L [mushy C]
-                          type I solidus Ts liquidus Tl latent L [mushy C] ...
+   fix ID group sph/phase type I melting Tm latent L [cv_liquid cl] [mushy C]
+                          type I solidus Ts liquidus Tl latent L [cv_liquid cl] [mushy C] ...
                           [epsilon e]
 ------------------------------------------------------------------------- */
 
@@ -63,7 +63,7 @@ FixSPHPhase::FixSPHPhase(LAMMPS *lmp, int narg, char **arg) :
   if (narg < 4) error->all(FLERR, "Illegal {} command: expected 'type I ...' after the style", cmd);
 
   const int ntypes = atom->ntypes;
-  laws.assign(ntypes + 1, SPHPhaseLaw{0.0, 0.0, 0.0});
+  laws.assign(ntypes + 1, SPHPhaseLaw{0.0, 0.0, 0.0, 0.0});
   changes.assign(ntypes + 1, 0);
   mushy.assign(ntypes + 1, 0.0);
   int iarg = 3;
@@ -121,7 +121,7 @@ void FixSPHPhase::parse_type(int narg, char **arg, int &iarg)
   iarg += 2;
 
   double melting = NAN, solidus = NAN, liquidus = NAN, latent = NAN;
-  double damping = 0.0;
+  double damping = 0.0, liquid_cv = 0.0;    // 0: the liquid's cv is the solid's
   while (iarg < narg && strcmp(arg[iarg], "type") != 0 && strcmp(arg[iarg], "epsilon") != 0) {
     const char *name = arg[iarg];
     double *slot = !strcmp(name, "melting") ? &melting
@@ -129,13 +129,17 @@ void FixSPHPhase::parse_type(int narg, char **arg, int &iarg)
         : !strcmp(name, "liquidus")         ? &liquidus
         : !strcmp(name, "latent")           ? &latent
         : !strcmp(name, "mushy")            ? &damping
+        : !strcmp(name, "cv_liquid")        ? &liquid_cv
                                             : nullptr;
     if (!slot)
       error->all(FLERR,
-                 "Illegal {}: unknown property '{}' (melting, solidus, liquidus, latent or mushy)",
+                 "Illegal {}: unknown property '{}' (melting, solidus, liquidus, latent, "
+                 "cv_liquid or mushy)",
                  where, name);
     if (iarg + 1 >= narg) error->all(FLERR, "Illegal {}: missing value after '{}'", where, name);
     *slot = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    if (slot == &liquid_cv && !(liquid_cv > 0.0 && std::isfinite(liquid_cv)))
+      error->all(FLERR, "Illegal {}: cv_liquid {} must be > 0", where, arg[iarg + 1]);
     iarg += 2;
   }
 
@@ -153,7 +157,7 @@ void FixSPHPhase::parse_type(int narg, char **arg, int &iarg)
     error->all(FLERR, "Illegal {}: liquidus {} is below solidus {}", where, liquidus, solidus);
   if (!(damping >= 0.0)) error->all(FLERR, "Illegal {}: mushy {} must be >= 0", where, damping);
   for (int t = ilo; t <= ihi; t++) {
-    laws[t] = SPHPhaseLaw{solidus, liquidus, latent};
+    laws[t] = SPHPhaseLaw{solidus, liquidus, latent, liquid_cv};
     changes[t] = 1;
     mushy[t] = damping;
   }
@@ -169,10 +173,10 @@ void FixSPHPhase::post_constructor()
 {
   int flag, cols;
   if (atom->find_custom(SPHParticles::PHASE_LATENT_VECTOR, flag, cols) < 0) {
-    modify->add_fix(fmt::format("{} all property/atom d_{} d_{} d_{} ghost yes", VECTOR_FIX,
-                                SPHParticles::PHASE_SOLIDUS_VECTOR,
-                                SPHParticles::PHASE_LIQUIDUS_VECTOR,
-                                SPHParticles::PHASE_LATENT_VECTOR));
+    modify->add_fix(
+        fmt::format("{} all property/atom d_{} d_{} d_{} d_{} ghost yes", VECTOR_FIX,
+                    SPHParticles::PHASE_SOLIDUS_VECTOR, SPHParticles::PHASE_LIQUIDUS_VECTOR,
+                    SPHParticles::PHASE_LATENT_VECTOR, SPHParticles::PHASE_LIQUID_CV_VECTOR));
     vectors_made = 1;
   }
   mark();
@@ -255,10 +259,12 @@ void FixSPHPhase::mark()
   const int isolidus = atom->find_custom(SPHParticles::PHASE_SOLIDUS_VECTOR, flag, cols);
   const int iliquidus = atom->find_custom(SPHParticles::PHASE_LIQUIDUS_VECTOR, flag, cols);
   const int ilatent = atom->find_custom(SPHParticles::PHASE_LATENT_VECTOR, flag, cols);
-  if (isolidus < 0 || iliquidus < 0 || ilatent < 0) return;
+  const int iliquid_cv = atom->find_custom(SPHParticles::PHASE_LIQUID_CV_VECTOR, flag, cols);
+  if (isolidus < 0 || iliquidus < 0 || ilatent < 0 || iliquid_cv < 0) return;
   double *const solidus = atom->dvector[isolidus];
   double *const liquidus = atom->dvector[iliquidus];
   double *const latent = atom->dvector[ilatent];
+  double *const liquid_cv = atom->dvector[iliquid_cv];
   const int *const type = atom->type;
   const int nall = atom->nlocal + atom->nghost;
   for (int i = 0; i < nall; i++) {
@@ -266,6 +272,7 @@ void FixSPHPhase::mark()
     solidus[i] = law.solidus;
     liquidus[i] = law.liquidus;
     latent[i] = law.latent;    // 0: the type does not change phase
+    liquid_cv[i] = law.liquid_cv;
   }
 }
 

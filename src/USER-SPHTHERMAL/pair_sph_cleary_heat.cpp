@@ -196,8 +196,9 @@ void PairSPHClearyHeat::end_solid_rates()
 void PairSPHClearyHeat::finish_relax()
 {
   if (force->newton_pair) reverse(SPHCommStage().flat(relax_rate, 1));
-  const double *const cv = atom->cv;
-  for (int i = 0; i < atom->nlocal; i++) relax_rate[i] /= cv[i];
+  // a particle that changes phase relaxes fastest in its phase of smaller cv
+  const SPHParticles particles(atom);
+  for (int i = 0; i < atom->nlocal; i++) relax_rate[i] /= particles.smallest_cv(i);
 }
 
 /* ----------------------------------------------------------------------

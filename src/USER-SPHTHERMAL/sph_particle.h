@@ -42,9 +42,9 @@ namespace LAMMPS_NS {
 // The atoms of a type that melts and solidifies (fix sph/phase) hold in
 // esph their specific enthalpy, the latent heat included; T and the liquid
 // fraction follow from it by their type's law (sph_phase_laws.h), whose
-// solidus, liquidus and latent heat fix sph/phase puts on every atom in the
-// per-atom vectors PHASE_*_VECTOR (latent 0: the atom does not change
-// phase), owned and ghost atoms alike.
+// solidus, liquidus, latent heat and liquid's specific heat fix sph/phase
+// puts on every atom in the per-atom vectors PHASE_*_VECTOR (latent 0: the
+// atom does not change phase), owned and ghost atoms alike.
 // A view of this step's arrays: make one where the arrays are read (they
 // move when atoms are added), for owned and ghost atoms alike.
 class SPHParticles {
@@ -55,14 +55,17 @@ class SPHParticles {
   static constexpr const char *PHASE_SOLIDUS_VECTOR = "sph_phase_solidus";
   static constexpr const char *PHASE_LIQUIDUS_VECTOR = "sph_phase_liquidus";
   static constexpr const char *PHASE_LATENT_VECTOR = "sph_phase_latent";
+  static constexpr const char *PHASE_LIQUID_CV_VECTOR = "sph_phase_liquid_cv";
 
   explicit SPHParticles(Atom *atom) :
       rmass((atom->rmass_flag && atom->rmass) ? atom->rmass : nullptr), type_mass(atom->mass),
       type(atom->type), esph(atom->esph), cv(atom->cv), rho(atom->rho), solid(nullptr), t0(nullptr),
       porosity(porosity_of(atom)), solidus(vector_of(atom, PHASE_SOLIDUS_VECTOR)),
-      liquidus(vector_of(atom, PHASE_LIQUIDUS_VECTOR)), latent(vector_of(atom, PHASE_LATENT_VECTOR))
+      liquidus(vector_of(atom, PHASE_LIQUIDUS_VECTOR)),
+      latent(vector_of(atom, PHASE_LATENT_VECTOR)),
+      liquid_cv(vector_of(atom, PHASE_LIQUID_CV_VECTOR))
   {
-    if (!solidus || !liquidus) latent = nullptr;
+    if (!solidus || !liquidus || !liquid_cv) latent = nullptr;
     if (!atom->smd_flag) return;
     int flag, cols;
     const int isolid = atom->find_custom(SOLID_VECTOR, flag, cols);
@@ -91,7 +94,10 @@ class SPHParticles {
   bool machdyn(int i) const { return solid && solid[i]; }
   // whether atom i melts and solidifies (its esph includes the latent heat)
   bool changes_phase(int i) const { return latent && latent[i] > 0.0; }
-  SPHPhaseLaw phase_law(int i) const { return SPHPhaseLaw{solidus[i], liquidus[i], latent[i]}; }
+  SPHPhaseLaw phase_law(int i) const
+  {
+    return SPHPhaseLaw{solidus[i], liquidus[i], latent[i], liquid_cv[i]};
+  }
   double temperature(int i) const
   {
     if (machdyn(i)) return temperature_of_solid(i, t0[i]);
@@ -137,6 +143,23 @@ class SPHParticles {
   {
     return m * cv * (T - T0);
   }
+  // the specific heat of atom i's phases without the latent heat (cv, or
+  // between the solid's and the liquid's by the liquid fraction): the
+  // weight of its temperature in a mean by heat capacity
+  double sensible_cv(int i) const
+  {
+    if (!changes_phase(i)) return cv[i];
+    const SPHPhaseLaw law = phase_law(i);
+    return sphp_sensible_cv(esph[i], cv[i], &law);
+  }
+  // the smaller specific heat of atom i's phases (cv where it has one
+  // phase): its temperature's fastest response to a heat flow
+  double smallest_cv(int i) const
+  {
+    if (!changes_phase(i)) return cv[i];
+    const SPHPhaseLaw law = phase_law(i);
+    return sphp_smallest_cv(cv[i], &law);
+  }
   // esph per unit of specific energy: a heating rate per unit mass times
   // this is the rate of esph
   double esph_per_specific(int i) const { return machdyn(i) ? mass(i) : 1.0; }
@@ -174,7 +197,7 @@ class SPHParticles {
   const double *t0;          // per atom: its T0
   const double *porosity;    // per atom: eps among grains, or nullptr
   // per atom: the phase law (fix sph/phase), or nullptr
-  const double *solidus, *liquidus, *latent;
+  const double *solidus, *liquidus, *latent, *liquid_cv;
 };
 
 }    // namespace LAMMPS_NS

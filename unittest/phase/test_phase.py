@@ -24,6 +24,15 @@ number 1; n particles on [0, 4] (dx = 4 / n), to t = 1 (exact depth
               1 % of it at t = 1 (measured +0.29 % and -0.58 %), T within
               1 and 1.5 % of Tw - Ti (measured 0.13 and 1.02 %), the energy
               balance
+  heat_capacity_jump
+              the two-phase problem with the liquid's specific heat 2 and
+              0.5 (the solid's 1: fix sph/phase's cv_liquid; St_l = cl,
+              alpha_l = 1 / cl), n = 160: Neumann's solution meets the
+              Stefan condition, the depth within 1 % of it at t = 1
+              (measured -0.27 % and -0.21 %), T within 1 % of Tw - Ti
+              (measured 0.39 and 0.51 %), the energy balance; the timestep
+              halved by the liquid's cv of 0.5 (the smaller of the phases'
+              bounds the conduction's)
   converging  the depth's error at n = 20 at least twice that at n = 80, one-
               and two-phase (measured 0.44 -> 0.026 % and 1.87 -> 0.28 %)
   mushy       a mushy zone 0.1 wide about the melting point, the solid at its
@@ -71,10 +80,11 @@ def run(args, variables, np_=1):
     return table, dump
 
 
-def exact_depth(t, ti, ks=1.0):
-    # rho = cv = 1: the diffusivities are the conductivities
-    lam = stefan.neumann_lambda(1.0, TM - ti, math.sqrt(1.0 / ks))
-    return stefan.front(t, lam, 1.0), lam
+def exact_depth(t, ti, ks=1.0, cl=1.0):
+    # rho = 1, L = 1, the melt's k = 1: alpha_l = 1 / cl, alpha_s = ks,
+    # St_l = cl (Tw - Tm), St_s = Tm - Ti
+    lam = stefan.neumann_lambda(cl, TM - ti, math.sqrt(1.0 / (cl * ks)))
+    return stefan.front(t, lam, 1.0 / cl), lam
 
 
 def check_energy(table, what):
@@ -83,10 +93,10 @@ def check_energy(table, what):
           f"{what}: heat through the wall = the particles' energy gain (largest |difference| / heat)")
 
 
-def check_stefan(args, ti, limit, what, n=80, ks=1.0, lx=LX, t_limit=0.01):
-    table, dump = run(args, {"n": n, "ti": ti, "every": 20, "ks": ks, "lx": lx})
+def check_stefan(args, ti, limit, what, n=80, ks=1.0, lx=LX, t_limit=0.01, cl=1.0):
+    table, dump = run(args, {"n": n, "ti": ti, "every": 20, "ks": ks, "lx": lx, "cl": cl})
     t, depth = table["Time"], table["v_depth"]
-    exact_end, lam = exact_depth(t[-1], ti, ks)
+    exact_end, lam = exact_depth(t[-1], ti, ks, cl)
     that(abs(t[-1] - 1.0) < 1e-12, f"{what}: the run ends at t = 1", f"{t[-1]:.15g}")
     error_end = depth[-1] / exact_end - 1.0
     below(abs(error_end), limit, f"{what}: melt depth {depth[-1]:.6f} at t = 1 against Neumann's "
@@ -94,16 +104,16 @@ def check_stefan(args, ti, limit, what, n=80, ks=1.0, lx=LX, t_limit=0.01):
     # (a front at one melting temperature crosses the particles a row at a
     # time: the error swings by about 1 % while the melt is < 12 rows deep)
     late = t >= 0.5
-    worst = max(abs(d / exact_depth(tt, ti, ks)[0] - 1.0) for tt, d in zip(t[late], depth[late]))
+    worst = max(abs(d / exact_depth(tt, ti, ks, cl)[0] - 1.0) for tt, d in zip(t[late], depth[late]))
     below(worst, 0.015, f"{what}: melt depth from t = 0.5 on against Neumann's (largest error)")
-    exact_t = np.array([stefan.temperature(x, t[-1], lam, TW, TM, ti, 1.0, ks) for x in dump["x"]])
+    exact_t = np.array([stefan.temperature(x, t[-1], lam, TW, TM, ti, 1.0 / cl, ks) for x in dump["x"]])
     below(np.abs(dump["c_T"] - exact_t).max() / (TW - ti), t_limit,
           f"{what}: T of every particle against the exact profile (largest error / (Tw - Ti))")
     f = dump["f_phase"]
     that(np.all((f >= 0.0) & (f <= 1.0)), f"{what}: every liquid fraction in [0, 1]",
          f"{f.min():.3g} .. {f.max():.3g}")
     check_energy(table, what)
-    return error_end
+    return table
 
 
 def check_conductivity_jump(args):
@@ -122,6 +132,27 @@ def check_conductivity_jump(args):
     # (T: the particle next to the front 1.02 % off at this spacing, 0.40 %
     # at half and 0.20 % at twice the resolution)
     check_stefan(args, -0.5, 1e-2, "solid conducting 0.5x the melt", n=160, ks=0.5, t_limit=0.015)
+
+
+def check_heat_capacity_jump(args):
+    # the exact solution first: the Stefan condition L ds/dt = -dT/dx (melt
+    # side) + dT/dx (solid side), k = 1 in both, at t = 1
+    for cl in (2.0, 0.5):
+        s, lam = exact_depth(1.0, -0.5, 1.0, cl)
+        h = 1e-5
+        temp = [stefan.temperature(x, 1.0, lam, TW, TM, -0.5, 1.0 / cl, 1.0)
+                for x in (s - 2 * h, s - h, s + h, s + 2 * h)]
+        flux_balance = -(temp[1] - temp[0]) / h + (temp[3] - temp[2]) / h
+        below(abs(lam * math.sqrt(1.0 / cl) - flux_balance), 1e-4, f"cl = {cl}: Neumann's solution meets the "
+              "Stefan condition (|L ds/dt - heat into the front|, one-sided differences)")
+    # dx = 0.025, the melt 35 and 39 particles deep (measured -0.27 % and
+    # -0.21 %)
+    richer = check_stefan(args, -0.5, 1e-2, "liquid's cv 2x the solid's", n=160, cl=2.0)
+    poorer = check_stefan(args, -0.5, 1e-2, "liquid's cv 0.5x the solid's", n=160, cl=0.5)
+    # the conduction's timestep is bounded by the smaller cv of the two
+    # phases: the solid's (1) for cl = 2, the liquid's (0.5) for cl = 0.5
+    ratio = poorer["Dt"][0] / richer["Dt"][0]
+    below(abs(ratio - 0.5), 1e-12, f"the timestep at cl = 0.5 over that at cl = 2 ({ratio:.15g}) against 0.5")
 
 
 def check_converging(args):
@@ -203,8 +234,8 @@ def check_damping(args):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--check", required=True,
-                        choices=["one_phase", "two_phase", "conductivity_jump", "converging", "mushy", "freezing",
-                                 "mpi", "damping"])
+                        choices=["one_phase", "two_phase", "conductivity_jump", "heat_capacity_jump", "converging",
+                                 "mushy", "freezing", "mpi", "damping"])
     lammps_arguments(parser)
     args = parser.parse_args()
     if args.check == "one_phase":
@@ -213,6 +244,8 @@ def main():
         check_stefan(args, -0.5, 5e-3, "two-phase")
     elif args.check == "conductivity_jump":
         check_conductivity_jump(args)
+    elif args.check == "heat_capacity_jump":
+        check_heat_capacity_jump(args)
     elif args.check == "converging":
         check_converging(args)
     elif args.check == "mushy":

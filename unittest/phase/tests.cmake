@@ -12,6 +12,9 @@ sphthermal_python_test(phase.stefan.one_phase ${phase_test} LAMMPS ARGS --check 
 sphthermal_python_test(phase.stefan.two_phase ${phase_test} LAMMPS ARGS --check two_phase LABELS unit)
 sphthermal_python_test(phase.stefan.conductivity_jump ${phase_test} LAMMPS ARGS --check conductivity_jump
   LABELS unit)
+# the liquid's specific heat 2 and 0.5 times the solid's (cv_liquid)
+sphthermal_python_test(phase.stefan.heat_capacity_jump ${phase_test} LAMMPS ARGS --check heat_capacity_jump
+  LABELS unit)
 sphthermal_python_test(phase.stefan.converging ${phase_test} LAMMPS ARGS --check converging
   LABELS regression)
 sphthermal_python_test(phase.energy.mushy ${phase_test} LAMMPS ARGS --check mushy LABELS unit)
