@@ -75,6 +75,14 @@ using namespace LAMMPS_NS;
 /* ---------------------------------------------------------------------- */
 
 namespace {
+// the fix that gives the fluid weight (fix gravity), or nullptr: none, or
+// one of magnitude 0 given as a number, which weighs nothing
+const Fix *weight_fix(LAMMPS *lmp)
+{
+  Fix *gravity = SPHBodyForce::source(lmp);
+  return (gravity && !SPHBodyForce::constant_zero(gravity)) ? gravity : nullptr;
+}
+
 // the id of the run's fix sph/boussinesq, empty without one: a
 // buoyancy-driven flow (natural convection, buoyant mixing)
 std::string buoyancy_fix(LAMMPS *lmp)
@@ -204,7 +212,7 @@ SPHSceneDefaults::Choice SPHSceneDefaults::density_diffusion(LAMMPS *lmp)
 
 SPHSceneDefaults::Choice SPHSceneDefaults::artificial_viscosity(LAMMPS *lmp)
 {
-  const Fix *weight = SPHBodyForce::source(lmp);
+  const Fix *weight = weight_fix(lmp);
   if (!weight) return {0, "the default without weight: no free surface to strike walls", 0.0};
   return {
       1,
@@ -226,7 +234,7 @@ SPHSceneDefaults::Choice SPHSceneDefaults::background(LAMMPS *lmp)
   const Choice buoyant = by_buoyant_shift(lmp, 0, 0.0, 1, 0.1);
   if (buoyant.value || !buoyancy_fix(lmp).empty()) return buoyant;
   // under weight the fluid may have a free surface
-  const Fix *weight = SPHBodyForce::source(lmp);
+  const Fix *weight = weight_fix(lmp);
   if (weight)
     return {0,
             fmt::format("the default under the weight of fix {}: a free surface takes none",
@@ -256,7 +264,7 @@ SPHSceneDefaults::Choice SPHSceneDefaults::background(LAMMPS *lmp)
 SPHSceneDefaults::Choice SPHSceneDefaults::volume_hold(LAMMPS *lmp, const Fix *buoyancy,
                                                        const Fix *own)
 {
-  const Fix *weight = SPHBodyForce::source(lmp);
+  const Fix *weight = weight_fix(lmp);
   if (weight)
     return {0,
             fmt::format("the default with fix {} (style {}): the fluid has weight and may have a "
@@ -287,7 +295,9 @@ SPHSceneDefaults::Choice SPHSceneDefaults::volume_hold(LAMMPS *lmp, const Fix *b
   for (FixSPHHoldVolume *hold : SPHHub(lmp).fixes<FixSPHHoldVolume>())
     if (hold != own && hold->groupbit == buoyancy->groupbit)
       return {0, fmt::format("fix sph/hold/volume {} holds it already", hold->id), 0.0};
-  return {1, "the default in a closed domain: buoyancy without fix gravity, so no free surface",
+  return {1,
+          "the default in a closed domain: buoyancy without weight (no fix gravity, or one of "
+          "magnitude 0), so no free surface",
           0.0};
 }
 

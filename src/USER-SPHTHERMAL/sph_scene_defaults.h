@@ -52,7 +52,8 @@ namespace SPHSceneDefaults {
 
   // 'artificial' of pair sph/harmonic/visc (number: alpha of Monaghan's
   // artificial viscosity, which acts on pairs with a particle at a free
-  // surface and between fluid and walls): 0.1 under weight (fix gravity),
+  // surface and between fluid and walls): 0.1 under weight (fix gravity;
+  // one of magnitude 0 weighs nothing),
   // where a free surface may strike walls (the pair turns it off where a
   // run starts without a free surface), 0 otherwise
   Choice artificial_viscosity(LAMMPS *lmp);

@@ -1,7 +1,7 @@
 """fix sph/boussinesq 'hold' and its default (unittest/convection/in.hold_default,
 a small cavity, 200 steps): with the buoyancy from the 'gravity' keyword and
 no fix gravity the fix says it holds the fluid's volume and does, to
-round-off; with 'hold no', with fix gravity (weight: a free surface may
+round-off, also beside a fix gravity of magnitude 0; with 'hold no', with fix gravity (weight: a free surface may
 exist), on a group with a type that has no equation of state or with the
 walls of fix sph/wall/adami, it says
 why not (for 'hold no' it says nothing) and the volume drifts; with the
@@ -40,9 +40,16 @@ def main():
     workdir = tempfile.mkdtemp(prefix="hold-default-")
 
     drift, said = run(args, workdir, scene="closed")
-    that(said == [("yes", "the default in a closed domain: buoyancy without fix gravity, so no free surface")],
-         "closed cavity: the fix says it holds the volume by default", str(said))
+    closed = ("yes", "the default in a closed domain: buoyancy without weight (no fix gravity, or one of "
+              "magnitude 0), so no free surface")
+    that(said == [closed], "closed cavity: the fix says it holds the volume by default", str(said))
     below(drift, HELD, "closed cavity: the volume held")
+
+    # a fix gravity of magnitude 0 weighs nothing: the scene's defaults are
+    # those without it
+    drift, said = run(args, workdir, scene="zero_weight")
+    that(said == [closed], "fix gravity of magnitude 0: the volume held by default", str(said))
+    below(drift, HELD, "fix gravity of magnitude 0: the volume held")
 
     drift, said = run(args, workdir, scene="off")
     that(said == [], "hold no: nothing said", str(said))
