@@ -18,6 +18,11 @@ t = 20 sqrt(a / g). Checks:
               in every snapshot; the heat into the mould equals the change
               of the melt's sum m e, latent heat included, to 1e-12 of it
               (measured 5e-15)
+
+With --np N (test phase.mpi.pour_np2) instead: the pour to t = 3 (the
+front at the far wall, the shell growing) on N ranks against 1 rank,
+every particle's position, velocity, temperature and liquid fraction equal
+to 1e-10 (measured 0 in the dump's 8 digits).
 """
 
 import argparse
@@ -40,10 +45,28 @@ N = 10
 LENGTH = 4.0
 
 
+def check_ranks(args):
+    frames = {}
+    for np_ in (1, args.np):
+        with tempfile.TemporaryDirectory() as tmp:
+            run_input(args.lmp, INPUT, {"plugin": args.plugin, "n": N, "tend": 3}, tmp, np_, args.mpirun)
+            frames[np_] = read_frames(os.path.join(tmp, "pour.dump"))[-1][1]
+    one, many = frames[1], frames[args.np]
+    that(len(one["id"]) == len(many["id"]), f"{args.np} ranks: every particle in the last snapshot")
+    for column in ("x", "y", "vx", "vy", "c_T", "f_phase"):
+        below(float(np.abs(one[column] - many[column]).max()), 1e-10,
+              f"{args.np} ranks against 1 at t = 3: {column} (largest difference)")
+    that(bool((one["f_phase"] <= 0.0).any()), "solid at t = 3 (the comparison covers freezing)")
+    finish()
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    lammps_arguments(parser, mpi=False)
+    lammps_arguments(parser)
     args = parser.parse_args()
+    if args.np > 1:
+        check_ranks(args)
+        return
     with tempfile.TemporaryDirectory() as tmp:
         out = run_input(args.lmp, INPUT, {"plugin": args.plugin, "n": N, "tend": 20}, tmp)
         path = os.path.join(tmp, "pour.dump")

@@ -39,6 +39,8 @@ sphthermal_python_test(phase.casting phase/test_casting.py LAMMPS LABELS regress
 # run-out against Martin and Moyce, the shell from the mould's walls, solids
 # at rest, every particle kept, the energy books to round-off
 sphthermal_python_test(phase.pour phase/test_pour.py LAMMPS LABELS regression)
+sphthermal_python_test(phase.mpi.pour_np2 phase/test_pour.py LAMMPS
+  ARGS --np 2 --mpirun ${MPIRUN} LABELS mpi PROCESSORS 2)
 foreach(np 2 4)
   sphthermal_python_test(phase.mpi.np${np} ${phase_test} LAMMPS
     ARGS --check mpi --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
