@@ -120,8 +120,8 @@ void FixSPHPhase::parse_type(int narg, char **arg, int &iarg)
   const std::string where = fmt::format("{} command: type {}", cmd, arg[iarg + 1]);
   iarg += 2;
 
-  double melting = NAN, solidus = NAN, liquidus = NAN, latent = NAN;
-  double damping = 0.0, liquid_cv = 0.0;    // 0: the liquid's cv is the solid's
+  double melting = NAN, solidus = NAN, liquidus = NAN, latent = NAN, liquid_cv = NAN;
+  double damping = 0.0;
   while (iarg < narg && strcmp(arg[iarg], "type") != 0 && strcmp(arg[iarg], "epsilon") != 0) {
     const char *name = arg[iarg];
     double *slot = !strcmp(name, "melting") ? &melting
@@ -138,8 +138,6 @@ void FixSPHPhase::parse_type(int narg, char **arg, int &iarg)
                  where, name);
     if (iarg + 1 >= narg) error->all(FLERR, "Illegal {}: missing value after '{}'", where, name);
     *slot = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-    if (slot == &liquid_cv && !(liquid_cv > 0.0 && std::isfinite(liquid_cv)))
-      error->all(FLERR, "Illegal {}: cv_liquid {} must be > 0", where, arg[iarg + 1]);
     iarg += 2;
   }
 
@@ -156,6 +154,9 @@ void FixSPHPhase::parse_type(int narg, char **arg, int &iarg)
   if (liquidus < solidus)
     error->all(FLERR, "Illegal {}: liquidus {} is below solidus {}", where, liquidus, solidus);
   if (!(damping >= 0.0)) error->all(FLERR, "Illegal {}: mushy {} must be >= 0", where, damping);
+  if (!std::isnan(liquid_cv) && !(liquid_cv > 0.0 && std::isfinite(liquid_cv)))
+    error->all(FLERR, "Illegal {}: cv_liquid {} must be > 0", where, liquid_cv);
+  if (std::isnan(liquid_cv)) liquid_cv = 0.0;    // the law's 0: the liquid's cv is the solid's
   for (int t = ilo; t <= ihi; t++) {
     laws[t] = SPHPhaseLaw{solidus, liquidus, latent, liquid_cv};
     changes[t] = 1;
