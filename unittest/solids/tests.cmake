@@ -8,6 +8,11 @@ add_example_test(solids.validation.bar solid-machdyn-bar quick solids-bar
 # Xu's block heated uniformly, expanding freely, against the exact strain
 add_example_test(solids.validation.block solid-machdyn-block quick solids-block
   PASS "block: passed" FAIL "FAIL" "ERROR")
+# Xu's Taylor bar (the Wilkins-Guinan copper bar at 227 m/s, 8 across):
+# final length and mushroom radius against the benchmark's published results,
+# the heat of the plastic work to round-off and against each particle's own
+add_example_test(solids.validation.taylor solid-machdyn-taylor quick solids-taylor
+  PASS "taylor: passed" FAIL "FAIL" "ERROR")
 # the showcase: a hot MACHDYN plate quenched in a convecting liquid curls up
 # as beam theory with its own temperatures says; energy kept to round-off
 add_example_test(solids.validation.quench solid-machdyn-quench quick solids-quench
