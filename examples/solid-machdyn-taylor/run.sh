@@ -5,6 +5,8 @@
 #                     renewing the reference configuration and with MACHDYN's
 #                     usual hourglass control (about 15 minutes on one core):
 #                     taylor.png, results.md, out/taylor-*.dump
+#   ./run.sh simo     8, 10 and 12 across on Simo's wall, which keeps the particles
+#                     that reach it on it (about 12 minutes): results-simo.md
 #   ./run.sh quick    8 across (the CI test solids.validation.taylor, about 1 minute)
 # Both check the final length and mushroom radius against the published
 # results of the benchmark, the heat books (round-off) and each particle's
@@ -32,6 +34,20 @@ if [ "${1:-}" = quick ]; then
     "$PYTHON" "$here/analyse.py" taylor-n8.dump --png taylor-quick.png \
       --max-length-error 0.06 --max-radius-error 0.05 --max-heat-error 5 || echo "taylor: FAIL"
   } | awk '{ print } /FAIL/ { bad = 1 } END { if (bad || NR == 0) print "taylor: FAIL"; else print "taylor: passed" }'
+  exit 0
+fi
+if [ "${1:-}" = simo ]; then
+  {
+    for n in 8 10 12; do taylor n$n-simo $n -var wall simo; done
+    "$PYTHON" "$here/analyse.py" taylor-n8-simo.dump taylor-n10-simo.dump taylor-n12-simo.dump
+  } | tee taylor-simo.txt
+  {
+    echo "# Xu's Taylor bar on Simo's wall (run.sh simo): final shape against the benchmark, heat of the plastic work"
+    echo
+    echo '```'
+    grep "^taylor:" taylor-simo.txt
+    echo '```'
+  } > "$here/results-simo.md"
   exit 0
 fi
 {

@@ -3,7 +3,8 @@ against 1 rank, 4 particles across (240), to 50 us (tests
 solids.mpi.taylor_np2, _np4):
 
   fixed reference  without renewing pair smd/tlsph's reference
-                   configuration (update none) every particle's position,
+                   configuration (update none), on the penalty wall and on
+                   Simo's wall, every particle's position,
                    velocity, temperature and plastic strain in every
                    snapshot equal to 1 rank's (measured: equal in the
                    dump's 10 digits); create_atoms numbers the particles by
@@ -48,10 +49,10 @@ def by_initial_position(frames):
     return aligned
 
 
-def run(args, np_, update):
+def run(args, np_, update, wall="penalty"):
     with tempfile.TemporaryDirectory() as tmp:
-        out = run_input(args.lmp, INPUT, {"plugin": args.plugin, "n": 4, "tend": 50e-6, "update": update, "out": "bar.dump"},
-                        tmp, np_, args.mpirun)
+        out = run_input(args.lmp, INPUT, {"plugin": args.plugin, "n": 4, "tend": 50e-6, "update": update, "wall": wall,
+                                          "out": "bar.dump"}, tmp, np_, args.mpirun)
         frames = [f for _, f in read_frames(os.path.join(tmp, "bar.dump"))]
     shape = re.search(r"taylor: n 4 t \S+ us length (\S+) mm radius (\S+) mm", out)
     that(shape is not None, f"{np_} ranks, update {update}: the final length and radius printed")
@@ -63,15 +64,16 @@ def main():
     lammps_arguments(parser)
     args = parser.parse_args()
 
-    one, _ = run(args, 1, "none")
-    many, _ = run(args, args.np, "none")
-    that(len(one) == len(many), f"{args.np} ranks: as many snapshots as 1 rank")
-    for k, (a, b) in enumerate(zip(one, many)):
-        that(len(a["id"]) == len(b["id"]), f"snapshot {k}: every particle on {args.np} ranks")
-        for column, tolerance in COLUMNS.items():
-            below(float(np.abs(a[column] - b[column]).max()), tolerance,
-                  f"update none, {args.np} ranks against 1, snapshot {k}: {column} (largest difference)")
-    that(float(one[-1]["c_ep"].max()) > 1.0, "the comparison covers plastic flow (largest plastic strain above 1)")
+    for wall in ("penalty", "simo"):
+        one, _ = run(args, 1, "none", wall)
+        many, _ = run(args, args.np, "none", wall)
+        that(len(one) == len(many), f"{wall} wall, {args.np} ranks: as many snapshots as 1 rank")
+        for k, (a, b) in enumerate(zip(one, many)):
+            that(len(a["id"]) == len(b["id"]), f"snapshot {k}: every particle on {args.np} ranks")
+            for column, tolerance in COLUMNS.items():
+                below(float(np.abs(a[column] - b[column]).max()), tolerance,
+                      f"{wall} wall, update none, {args.np} ranks against 1, snapshot {k}: {column} (largest difference)")
+        that(float(one[-1]["c_ep"].max()) > 1.0, f"{wall} wall: the comparison covers plastic flow (plastic strain above 1)")
 
     one_frames, one_shape = run(args, 1, "constant")
     many_frames, many_shape = run(args, args.np, "constant")
