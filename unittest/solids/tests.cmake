@@ -63,6 +63,13 @@ foreach(np 2 4)
   sphthermal_python_test(solids.mpi.taylor_np${np} solids/test_taylor.py LAMMPS
     ARGS --np ${np} --mpirun ${MPIRUN} LABELS mpi PROCESSORS ${np})
 endforeach()
+# the Taylor bar's rings at every even number across from 4 to 24: the bar
+# 32.4 mm long, radius 3.2 mm to the particles' outer faces
+foreach(n RANGE 4 24 2)
+  sphthermal_lammps_test(solids.setup.taylor_rings_n${n} ../examples/solid-machdyn-taylor/in.taylor
+    VARS n ${n} tend 0 out taylor_rings_n${n}.dump IN_BUILD_DIR LABELS unit
+    PASS "taylor: n ${n} t 0.00 us length 32.4000 mm radius 3.2000 mm")
+endforeach()
 # the Taylor bar's rings need an even number of particles across: an odd
 # one stops the input with its own error
 sphthermal_lammps_test(solids.error.taylor_odd_across ../examples/solid-machdyn-taylor/in.taylor
