@@ -88,13 +88,21 @@ def heat_check(frame, m):
     return float(100 * error.max() / frame["c_th"].max()), float(frame["c_th"].max()), float(predicted.max())
 
 
+# the final shape's measures and the band of their references (mm)
+BANDS = (("length", L_REFERENCE), ("radius", tuple(R_REFERENCE.values())))
+
+
+def finest_line(spacing, values):
+    """The least-squares line in the spacing through the finest three points."""
+    finest = np.argsort(spacing)[:3]
+    return np.polyfit(np.asarray(spacing)[finest], np.asarray(values)[finest], 1)
+
+
 def extrapolated(spacing, values):
     """The value at zero spacing of least-squares lines in the spacing through
-    every point and through the finest three, and their difference."""
-    order = np.argsort(spacing)
-    h, v = np.asarray(spacing)[order], np.asarray(values)[order]
-    every = np.polyfit(h, v, 1)[1]
-    finest = np.polyfit(h[:3], v[:3], 1)[1]
+    the finest three points and through every point, and their difference."""
+    finest = finest_line(spacing, values)[1]
+    every = np.polyfit(spacing, values, 1)[1]
     return finest, abs(finest - every)
 
 
@@ -155,8 +163,8 @@ def main():
         spacing = [1.0 / n for n, *_ in runs]
         shapes = np.array([history[-1] for _, _, history, _ in runs])
         names = ", ".join(str(n) for n, *_ in runs)
-        for k, (name, mean, band) in enumerate((("length", L_MEAN, L_REFERENCE),
-                                                 ("radius", R_MEAN, tuple(R_REFERENCE.values())))):
+        for k, (name, band) in enumerate(BANDS):
+            mean = float(np.mean(band))
             value, uncertainty = extrapolated(spacing, shapes[:, k])
             print(f"taylor: {name} at zero spacing (lines in the spacing through {names} across and through the finest three) "
                   f"{value:.3f} mm +- {uncertainty:.3f} mm ({100 * (value - mean) / mean:+.1f} % of {mean:.2f}; "
@@ -197,12 +205,10 @@ def main():
             ax = axes[3]
             h = np.array(spacing)
             line = np.linspace(0.0, h.max(), 20)
-            for k, (name, band, colour) in enumerate((("length", L_REFERENCE, "C0"),
-                                                      ("radius", tuple(R_REFERENCE.values()), "C3"))):
+            for k, ((name, band), colour) in enumerate(zip(BANDS, ("C0", "C3"))):
                 scale = 1.0 / np.mean(band)
                 ax.plot(h, scale * shapes[:, k], "o", color=colour, label=f"{name}")
-                finest = np.argsort(h)[:3]
-                ax.plot(line, scale * np.polyval(np.polyfit(h[finest], shapes[finest, k], 1), line), "--", color=colour, lw=1)
+                ax.plot(line, scale * np.polyval(finest_line(h, shapes[:, k]), line), "--", color=colour, lw=1)
                 ax.axhspan(scale * min(band), scale * max(band), color=colour, alpha=0.15)
             ax.set_xlim(0.0, 1.05 * h.max())
             ax.set_xlabel("spacing / diameter")
