@@ -7,6 +7,8 @@
 #                     usual hourglass control and without artificial
 #                     viscosity (about 1.5 hours on one core): results.md,
 #                     taylor.png, out/taylor-*.dump
+#   ./run.sh fine     20 and 24 across (about 3.5 hours on one core, under
+#                     2.5 hours with NP=2), then the analysis with them
 #   ./run.sh analyse  the analysis alone, of the runs already in OUT
 #   ./run.sh quick    8 across (the CI test solids.validation.taylor, about 1 minute)
 # Each checks the final length and mushroom radius against the published
@@ -34,6 +36,7 @@ report() {    # label ...: the runs' own lines and their heat books
 }
 
 resolutions="n8 n10 n12 n16"
+fine="n20 n24"
 variants="n8-cubic n12-cubic n16-cubic n8-penalty n8-no-renewal n8-hg10 n8-q0"
 
 if [ "${1:-}" = quick ]; then
@@ -50,7 +53,9 @@ if [ "${1:-}" = quick ]; then
   } | awk '{ print } /FAIL/ { bad = 1 } END { if (bad || NR == 0) print "taylor: FAIL"; else print "taylor: passed" }'
   exit 0
 fi
-if [ "${1:-}" != analyse ]; then
+if [ "${1:-}" = fine ]; then
+  for label in $fine; do taylor $label ${label#n}; done
+elif [ "${1:-}" != analyse ]; then
   for label in $resolutions; do taylor $label ${label#n}; done
   for n in 8 12 16; do taylor n$n-cubic $n -var lattice cubic; done
   taylor n8-penalty 8 -var wall penalty
@@ -58,6 +63,10 @@ if [ "${1:-}" != analyse ]; then
   taylor n8-hg10 8 -var hg 10.0
   taylor n8-q0 8 -var q1 0.0
 fi
+# the fine runs join the analysis once they have finished
+for label in $fine; do
+  grep -q "^taylor: n " "log.taylor-$label" 2>/dev/null && resolutions="$resolutions $label"
+done
 {
   report $resolutions $variants
   "$PYTHON" "$here/analyse.py" $(for l in $resolutions; do echo taylor-$l.dump; done) --png "$here/taylor.png" --converge
