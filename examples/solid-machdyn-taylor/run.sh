@@ -4,11 +4,12 @@
 #   ./run.sh          8, 10, 12 and 16 particles across; 8, 12 and 16 on a
 #                     cubic lattice; at 8 across on the penalty wall, without
 #                     renewing the reference configuration, with MACHDYN's
-#                     usual hourglass control and without artificial
-#                     viscosity (about 1.5 hours on one core): results.md,
+#                     usual hourglass control, without artificial
+#                     viscosity and without conduction (about 1.5 hours on
+#                     one core): results.md,
 #                     taylor.png, out/taylor-*.dump
-#   ./run.sh fine     20 and 24 across (about 3.5 hours on one core, under
-#                     2.5 hours with NP=2), then the analysis with them
+#   ./run.sh fine     20 and 24 across (2 hours 18 minutes with NP=2: 44 and
+#                     94 minutes), then the analysis with them
 #   ./run.sh analyse  the analysis alone, of the runs already in OUT
 #   ./run.sh quick    8 across (the CI test solids.validation.taylor, about 1 minute)
 # Each checks the final length and mushroom radius against the published
@@ -37,7 +38,7 @@ report() {    # label ...: the runs' own lines and their heat books
 
 resolutions="n8 n10 n12 n16"
 fine="n20 n24"
-variants="n8-cubic n12-cubic n16-cubic n8-penalty n8-no-renewal n8-hg10 n8-q0"
+variants="n8-cubic n12-cubic n16-cubic n8-penalty n8-no-renewal n8-hg10 n8-q0 n8-k0"
 
 if [ "${1:-}" = quick ]; then
   # 8 across: the length and radius of the full run at 8 across (results.md)
@@ -62,6 +63,7 @@ elif [ "${1:-}" != analyse ]; then
   taylor n8-no-renewal 8 -var update none
   taylor n8-hg10 8 -var hg 10.0
   taylor n8-q0 8 -var q1 0.0
+  taylor n8-k0 8 -var conductivity 0.0
 fi
 # the fine runs join the analysis once they have finished
 for label in $fine; do
