@@ -88,8 +88,8 @@ def heat_check(frame, m):
     return float(100 * error.max() / frame["c_th"].max()), float(frame["c_th"].max()), float(predicted.max())
 
 
-# the final shape's measures and the band of their references (mm)
-BANDS = (("length", L_REFERENCE), ("radius", tuple(R_REFERENCE.values())))
+# the final shape's measures, the band of their references and its mean (mm)
+BANDS = (("length", L_REFERENCE, L_MEAN), ("radius", tuple(R_REFERENCE.values()), R_MEAN))
 
 
 def finest_line(spacing, values):
@@ -163,8 +163,7 @@ def main():
         spacing = [1.0 / n for n, *_ in runs]
         shapes = np.array([history[-1] for _, _, history, _ in runs])
         names = ", ".join(str(n) for n, *_ in runs)
-        for k, (name, band) in enumerate(BANDS):
-            mean = float(np.mean(band))
+        for k, (name, band, mean) in enumerate(BANDS):
             value, uncertainty = extrapolated(spacing, shapes[:, k])
             print(f"taylor: {name} at zero spacing (lines in the spacing through {names} across and through the finest three) "
                   f"{value:.3f} mm +- {uncertainty:.3f} mm ({100 * (value - mean) / mean:+.1f} % of {mean:.2f}; "
@@ -205,8 +204,8 @@ def main():
             ax = axes[3]
             h = np.array(spacing)
             line = np.linspace(0.0, h.max(), 20)
-            for k, ((name, band), colour) in enumerate(zip(BANDS, ("C0", "C3"))):
-                scale = 1.0 / np.mean(band)
+            for k, ((name, band, mean), colour) in enumerate(zip(BANDS, ("C0", "C3"))):
+                scale = 1.0 / mean
                 ax.plot(h, scale * shapes[:, k], "o", color=colour, label=f"{name}")
                 ax.plot(line, scale * np.polyval(finest_line(h, shapes[:, k]), line), "--", color=colour, lw=1)
                 ax.axhspan(scale * min(band), scale * max(band), color=colour, alpha=0.15)
