@@ -4,7 +4,8 @@ under `perf record` (sampling at 499 Hz, serial, one thread) for a window
 of its time loop, after a delay that skips its set-up, and the samples'
 self time is summed by function and by the package's components (flow
 pair, its pressure-gradient correction, conduction pair, the consistent
-conduction's factors, shifting, mirror walls, neighbour lists, ...).
+conduction's factors, shifting, mirror walls, Adami's flow walls,
+neighbour lists, ...).
 
   profile.py [--lmp build/lmp] [--plugin build/sphthermalplugin.so]
              [--scenes cavity air channel tank3d bodies] [--window 20]
@@ -56,7 +57,10 @@ COMPONENTS = [
     ("per-atom state (density, pressure, volume)", r"sphe_|update_state|PairSPHHarmonicVisc::"),
     ("shifting", r"FixSPHShift"),
     ("kernel-support sums (free surfaces, walls)", r"SPHSupport"),
-    ("mirror walls", r"SPHMirror|FixSPHWall"),
+    # the ghost points' interpolation of the thermal walls (and of
+    # sph/wall/adami 'surface'), and the thermal walls' own passes
+    ("mirror walls", r"SPHMirror|^sphi_|FixSPHWall(Dirichlet|Adiabatic|Isothermal|Tally)"),
+    ("Adami's flow walls (wall pressure, density, no-slip velocity)", r"FixSPHWallAdami"),
     ("rigid bodies", r"FixRigid|Rigid"),
     ("buoyancy, materials, other package fixes", r"FixSPH(Boussinesq|Materials|HoldVolume|DtReset|Mixing)|ComputeSPH"),
     ("time integration", r"FixSPH::|initial_integrate|final_integrate"),

@@ -37,6 +37,7 @@
 #include "sph_checks.h"
 #include "sph_comm_stage.h"
 #include "sph_compat.h"
+#include "sph_dispatch.h"
 #include "sph_hub.h"
 #include "sph_interpolation.h"
 #include "sph_kernels.h"
@@ -343,6 +344,18 @@ void FixSPHWallAdami::sample_acceleration(double half_dt)
   remaining_sampled = (half_dt > 0.0) ? update->dt - half_dt : 0.0;
 }
 
+struct FixSPHWallAdami::AtomsCall {
+  FixSPHWallAdami *fix;
+  int from, to;
+  double *fluid_weight;
+  const sphk_kernel *kernel;
+  int *below_eos;
+  template <int KERNEL> void run()
+  {
+    fix->pre_force_atoms<KERNEL>(from, to, fluid_weight, *kernel, *below_eos);
+  }
+};
+
 /* ----------------------------------------------------------------------
    density and viscous velocity of the owned wall particles, then of their
    ghost copies; a wall particle with no fluid neighbour is at rest density
@@ -401,8 +414,10 @@ void FixSPHWallAdami::pre_force_walls()
   std::vector<int> slices;
   sph_work_slices(first_fluid.data(), atom->nlocal, nthreads, slices);
   sph_parallel(nthreads, [&](int tid) {
-    pre_force_atoms(slices[tid], slices[tid + 1],
-                    fluid_weights.data() + (size_t) tid * (ntypes + 1), kernel, below_eos_of[tid]);
+    AtomsCall call = {this,   slices[tid], slices[tid + 1],
+                      fluid_weights.data() + (size_t) tid * (ntypes + 1), &kernel,
+                      &below_eos_of[tid]};
+    SPHDispatch<SPHKernelKinds>::to(call, &kernel_kind);
   });
   for (int t = 0; t < nthreads; t++) below_eos += below_eos_of[t];
   // a tension beyond the equation of state leaves no density: stop, collectively
@@ -419,8 +434,11 @@ void FixSPHWallAdami::pre_force_walls()
 
 /* the extrapolated state of the wall atoms [from, to) of the group, with
    fluid_weight the room for a weight per type and below_eos counting the
-   atoms whose pressure is below their equation of state's */
+   atoms whose pressure is below their equation of state's; KERNEL a
+   constant, so that the kernel's switch leaves the loop over the fluid
+   neighbours */
 
+template <int KERNEL>
 void FixSPHWallAdami::pre_force_atoms(int from, int to, double *fluid_weight,
                                       const sphk_kernel &kernel, int &below_eos)
 {
@@ -433,6 +451,15 @@ void FixSPHWallAdami::pre_force_atoms(int from, int to, double *fluid_weight,
   const int *const mask = atom->mask;
   const double cutsq = cutoff * cutoff;
   const int ntypes = atom->ntypes;
+  // local copies: the solid's viscosity call in the loop could change any
+  // member, which would then be read again for every pair
+  const double w_scale = kernel.w_scale, inv_h = kernel.inv_h;
+  const int moving = this->moving;
+  const int *const first = first_fluid.data();
+  const int *const near = fluid_near.data();
+  const int *const atom_of = fluid_atoms.data();
+  const double *const pressure_of = fluid_pressure.data();
+  const double *const rho_accel_of = fluid_rho_accel.data();
   for (int i = from; i < to; i++) {
     if (!(mask[i] & groupbit)) continue;
     const int is_solid = solid_type[type[i]];
@@ -442,16 +469,16 @@ void FixSPHWallAdami::pre_force_atoms(int from, int to, double *fluid_weight,
     if (is_solid)
       for (int t = 1; t <= ntypes; t++) fluid_weight[t] = 0.0;
     double weighted_v[3] = {0.0, 0.0, 0.0};
-    for (int n = first_fluid[i]; n < first_fluid[i + 1]; n++) {
-      const int m = fluid_near[n];
-      const int j = fluid_atoms[m];
+    for (int n = first[i]; n < first[i + 1]; n++) {
+      const int m = near[n];
+      const int j = atom_of[m];
       const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
       const double rsq = dx * dx + dy * dy + dz * dz;
       if (rsq >= cutsq) continue;
-      const double w = sphk_w(&kernel, sqrt(rsq));
+      const double w = w_scale * sphk_f(KERNEL, sqrt(rsq) * inv_h);
       weight += w;
-      weighted_p += w * fluid_pressure[m];
-      const double *const rho_accel = &fluid_rho_accel[3 * (size_t) m];
+      weighted_p += w * pressure_of[m];
+      const double *const rho_accel = &rho_accel_of[3 * (size_t) m];
       hydrostatic += w * (rho_accel[0] * dx + rho_accel[1] * dy + rho_accel[2] * dz);
       if (moving) {
         const double w_rho = w * rho[j];

@@ -110,8 +110,10 @@ class FixSPHWallAdami : public Fix {
   // per thread (package omp) and type: the kernel weight of its fluid
   // around one solid particle
   std::vector<double> fluid_weights;
+  template <int KERNEL>
   void pre_force_atoms(int from, int to, double *fluid_weight, const sphk_kernel &kernel,
                        int &below_eos);
+  struct AtomsCall;
   int any_solid;    // 1 when some wall particle of this fix is solid
   // per atom (owned and ghost): P, rho, viscosity, rho0/rho and the no-slip
   // velocity (3) seen by the flow

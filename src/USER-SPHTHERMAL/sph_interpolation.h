@@ -24,6 +24,14 @@
    0.1-0.3 at a flat wall; below this bound the correction is not trusted. */
 #define SPHI_MIN_DETERMINANT 1e-3
 
+/* GCC and Clang otherwise keep the per-neighbour sums out of line in large
+   callers */
+#if defined(__GNUC__)
+#define SPHI_ALWAYS_INLINE __attribute__((always_inline))
+#else
+#define SPHI_ALWAYS_INLINE
+#endif
+
 enum sphi_result { SPHI_NONE = 0, SPHI_SHEPARD = 1, SPHI_CORRECTED = 2 };
 
 typedef struct {
@@ -44,25 +52,42 @@ static inline void sphi_begin(sphi_point *p, int dim)
 
 /* one neighbour j: d = r_j - r_p, w = W(|d|), g = -(dW/dr) / r (so that
    G_pj = g d; finite at r = 0 for the package's kernels, sphk_df_over_q),
-   volume V_j = m_j / rho_j, value f_j */
-static inline void sphi_add_g(sphi_point *p, const double d[3], double w, double g,
-                              double volume, double f)
+   volume V_j = m_j / rho_j, value f_j: a[k][c] += row_k col_c and
+   b[k] += row_k f with row = V [w, g d], col = [1, d]. Written out term by
+   term: with row and col as arrays the compiler stored them and read them
+   back in wider loads than it wrote, a stall on every neighbour (the mirror
+   walls call this once per neighbour of every ghost point and step), and
+   inlined always: a call per neighbour cost as much again. */
+static inline SPHI_ALWAYS_INLINE void sphi_add_g(sphi_point *p, const double d[3], double w,
+                                                 double g, double volume, double f)
 {
-  const int n = p->dim;
-  double row[4], col[4];
-  int k, c;
-  row[0] = w * volume;
-  col[0] = 1.0;
-  for (k = 0; k < n; k++) {
-    row[k + 1] = g * d[k] * volume;
-    col[k + 1] = d[k];
-  }
-  for (k = 0; k <= n; k++) {
-    p->b[k] += row[k] * f;
-    for (c = 0; c <= n; c++) p->a[k][c] += row[k] * col[c];
+  const double r0 = w * volume;
+  const double r1 = g * d[0] * volume;
+  const double r2 = g * d[1] * volume;
+  p->b[0] += r0 * f;
+  p->b[1] += r1 * f;
+  p->b[2] += r2 * f;
+  p->a[0][0] += r0;
+  p->a[0][1] += r0 * d[0];
+  p->a[0][2] += r0 * d[1];
+  p->a[1][0] += r1;
+  p->a[1][1] += r1 * d[0];
+  p->a[1][2] += r1 * d[1];
+  p->a[2][0] += r2;
+  p->a[2][1] += r2 * d[0];
+  p->a[2][2] += r2 * d[1];
+  if (p->dim == 3) {
+    const double r3 = g * d[2] * volume;
+    p->b[3] += r3 * f;
+    p->a[0][3] += r0 * d[2];
+    p->a[1][3] += r1 * d[2];
+    p->a[2][3] += r2 * d[2];
+    p->a[3][0] += r3;
+    p->a[3][1] += r3 * d[0];
+    p->a[3][2] += r3 * d[1];
+    p->a[3][3] += r3 * d[2];
   }
 }
-
 /* the same given r = |d| and dwdr = dW/dr at r */
 static inline void sphi_add(sphi_point *p, const double d[3], double r, double w, double dwdr,
                             double volume, double f)
@@ -201,18 +226,29 @@ static inline void sphi_quadratic_accumulate(sphi_quadratic *q, const double *ba
   }
 }
 
-/* one neighbour j: d = r_j - r_p, weight = V_j W_pj, f[nfields] its values */
-static inline void sphi_quadratic_add(sphi_quadratic *q, const double d[3], double weight,
-                                      const double *f)
+/* one neighbour j given its basis (sphi_quadratic_basis), weight = V_j W_pj
+   and f[nfields] its values. A caller with many neighbours makes all their
+   bases first: the sums read each basis in pairs, and a basis just written
+   term by term cannot be read so until its stores have gone through (a
+   stall per neighbour). */
+static inline void sphi_quadratic_add_basis(sphi_quadratic *q, const double *basis, double weight,
+                                            const double *f)
 {
-  double basis[SPHI_QUADRATIC_TERMS];
-  sphi_quadratic_basis(q, d, basis);
   if (q->nterms == 6 && q->nfields == 2)
     sphi_quadratic_accumulate(q, basis, 6, 2, weight, f);
   else if (q->nterms == 10 && q->nfields == 3)
     sphi_quadratic_accumulate(q, basis, 10, 3, weight, f);
   else
     sphi_quadratic_accumulate(q, basis, q->nterms, q->nfields, weight, f);
+}
+
+/* one neighbour j: d = r_j - r_p, weight = V_j W_pj, f[nfields] its values */
+static inline void sphi_quadratic_add(sphi_quadratic *q, const double d[3], double weight,
+                                      const double *f)
+{
+  double basis[SPHI_QUADRATIC_TERMS];
+  sphi_quadratic_basis(q, d, basis);
+  sphi_quadratic_add_basis(q, basis, weight, f);
 }
 
 /* value[k] and grad[3 k .. 3 k + 2] of each field k; returns

@@ -416,7 +416,7 @@ void SPHMirror::interpolate_points(std::vector<double> &ghost, std::vector<int> 
       scratch.neighbours.clear();
       scratch.weights.clear();
     }
-    interpolate_slice<DIM, KERNEL>(from, to, ghost, how, kernel, scratch.support,
+    interpolate_slice<DIM, KERNEL>(from, to, ghost, how, kernel, scratch.support, scratch.basis,
                                    tid ? scratch.neighbours : neighbours,
                                    tid ? scratch.weights : weights);
   });
@@ -429,46 +429,61 @@ void SPHMirror::interpolate_points(std::vector<double> &ghost, std::vector<int> 
 }
 
 /* the ghost points of the atoms with_ghost[from, to), with the candidates
-   inside the support in 'support' and, where heat is returned, the Shepard
+   inside the support in 'support' (and the quadratic fit's basis of each in
+   'basis') and, where heat is returned, the Shepard
    neighbours and weights appended to 'near' and 'near_weights' (and their
    count per atom in neighbour_count) */
 
 template <int DIM, int KERNEL>
 void SPHMirror::interpolate_slice(int from, int to, std::vector<double> &ghost,
                                   std::vector<int> &how, const sphk_kernel &kernel,
-                                  SPHSupport &support, std::vector<int> &near,
-                                  std::vector<double> &near_weights)
+                                  SPHSupport &support, std::vector<double> &basis,
+                                  std::vector<int> &near, std::vector<double> &near_weights)
 {
   const double h = kernel.h;
   const double cutsq = cutoff * cutoff;
   // -(dW/dr) / r = this f'(q) / q, without a division
   const double minus_dwdr_r_scale = -kernel.dw_scale * kernel.inv_h;
+  // local copies: the stores into the support's int and double arrays could
+  // alias the members, which the loops would then read again per candidate
+  const int axis = inlet_axis;
+  const int *const candidate = candidates.data();
+  const double *const candidate_x = medium_x.data();
+  const double *const volume_of = medium_volume.data();
+  const double *const value_of = medium_values.data();
+  const bool heat_back = returns_heat;
 
   for (int n_ghost = from; n_ghost < to; n_ghost++) {
     const int i = with_ghost[n_ghost];
     const double *const g = &ghost_at[3 * (size_t) i];
+    const int first = first_candidate[i], last = first_candidate[i + 1];
     // the candidates inside the support (sph_support.h)
-    support.fit(first_candidate[i + 1] - first_candidate[i]);
+    support.fit(last - first);
     int *const m_in = support.index;
     double *const d_in = support.del;
     double *const rsq_in = support.rsq;
     double *const w_in = support.a;
     double *const g_in = support.b;
-    const double side = (inlet_axis < 0)
-        ? 0.0
-        : FixSPHInletTemperature::periodic_cell(domain, g[inlet_axis], inlet_axis);
+    const double side =
+        (axis < 0) ? 0.0 : FixSPHInletTemperature::periodic_cell(domain, g[axis], axis);
+    auto inside = [&](const double *x_m, double rsq) {
+      return rsq < cutsq &&
+          (axis < 0 || FixSPHInletTemperature::periodic_cell(domain, x_m[axis], axis) == side);
+    };
+
+    // the candidates inside the support, then their kernel values: storing
+    // every candidate and keeping those inside (no branch) was faster than
+    // summing each as it comes (a mispredicted branch, and the square root's
+    // latency in the chain)
     int nin = 0;
-    for (int n = first_candidate[i]; n < first_candidate[i + 1]; n++) {
-      const int m = candidates[n];
-      const double *const x_m = &medium_x[3 * (size_t) m];
+    for (int n = first; n < last; n++) {
+      const int m = candidate[n];
+      const double *const x_m = &candidate_x[3 * (size_t) m];
       const double d[3] = {x_m[0] - g[0], x_m[1] - g[1], x_m[2] - g[2]};
       const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
       m_in[nin] = m;
-      for (int k = 0; k < 3; k++) d_in[3 * nin + k] = d[k];
       rsq_in[nin] = rsq;
-      nin += (rsq < cutsq) &&
-          (inlet_axis < 0 ||
-           FixSPHInletTemperature::periodic_cell(domain, x_m[inlet_axis], inlet_axis) == side);
+      nin += inside(x_m, rsq);
     }
     for (int k = 0; k < nin; k++) {
       const double q = sqrt(rsq_in[k]) * kernel.inv_h;
@@ -480,22 +495,38 @@ void SPHMirror::interpolate_slice(int from, int to, std::vector<double> &ghost,
       // the temperature: first-order corrected
       sphi_point point;
       sphi_begin(&point, DIM);
-      double shepard = 0.0;
-      const size_t start = near_weights.size();
       for (int k = 0; k < nin; k++) {
         const int m = m_in[k];
-        const double volume = medium_volume[m];
-        sphi_add_g(&point, &d_in[3 * k], w_in[k], g_in[k], volume, medium_values[m]);
-        if (returns_heat) {
-          near.push_back(medium_atoms[m]);
-          near_weights.push_back(w_in[k] * volume);
-          shepard += w_in[k] * volume;
-        }
+        // the separation again (from the atom's position, which the gather
+        // has just read): cheaper than storing it there
+        const double *const x_m = &candidate_x[3 * (size_t) m];
+        const double d[3] = {x_m[0] - g[0], x_m[1] - g[1], x_m[2] - g[2]};
+        sphi_add_g(&point, d, w_in[k], g_in[k], volume_of[m], value_of[m]);
       }
-      for (size_t n = start; n < near_weights.size(); n++) near_weights[n] /= shepard;
-      neighbour_count[i] = near_weights.size() - start;
+      if (heat_back) {
+        // the Shepard weights that return the wall's heat to the medium
+        const size_t start = near_weights.size();
+        near.resize(start + nin);
+        near_weights.resize(start + nin);
+        int *const near_atom = near.data() + start;
+        double *const near_weight = near_weights.data() + start;
+        double shepard = 0.0;
+        for (int k = 0; k < nin; k++) {
+          const int m = m_in[k];
+          near_atom[k] = medium_atoms[m];
+          near_weight[k] = w_in[k] * volume_of[m];
+          shepard += near_weight[k];
+        }
+        for (int k = 0; k < nin; k++) near_weight[k] /= shepard;
+        neighbour_count[i] = nin;
+      }
       how[i] = sphi_solve(&point, h, &ghost[i], nullptr);
       continue;
+    }
+
+    for (int k = 0; k < nin; k++) {
+      const double *const x_m = &candidate_x[3 * (size_t) m_in[k]];
+      for (int c = 0; c < 3; c++) d_in[3 * k + c] = x_m[c] - g[c];
     }
     // the velocity: its curvature matters to the wall's viscous force, so
     // a quadratic fit (value and gradient of a quadratic field exact), or
@@ -504,10 +535,15 @@ void SPHMirror::interpolate_slice(int from, int to, std::vector<double> &ghost,
     double *const out = &ghost[12 * (size_t) i];
     sphi_quadratic fit;
     sphi_quadratic_begin(&fit, DIM, DIM, h);
+    // every neighbour's basis first (sph_interpolation.h says why)
+    const int nterms = fit.nterms;
+    basis.resize((size_t) nterms * nin);
+    for (int k = 0; k < nin; k++)
+      sphi_quadratic_basis(&fit, &d_in[3 * k], &basis[(size_t) nterms * k]);
     for (int k = 0; k < nin; k++) {
       const int m = m_in[k];
-      sphi_quadratic_add(&fit, &d_in[3 * k], w_in[k] * medium_volume[m],
-                         &medium_values[3 * (size_t) m]);
+      sphi_quadratic_add_basis(&fit, &basis[(size_t) nterms * k], w_in[k] * volume_of[m],
+                               &value_of[3 * (size_t) m]);
     }
     how[i] = sphi_quadratic_solve(&fit, out, out + 3);
     if (how[i] == SPHI_CORRECTED) continue;
@@ -516,8 +552,8 @@ void SPHMirror::interpolate_slice(int from, int to, std::vector<double> &ghost,
       sphi_begin(&point, DIM);
       for (int k = 0; k < nin; k++) {
         const int m = m_in[k];
-        sphi_add_g(&point, &d_in[3 * k], w_in[k], g_in[k], medium_volume[m],
-                   medium_values[3 * (size_t) m + c]);
+        sphi_add_g(&point, &d_in[3 * k], w_in[k], g_in[k], volume_of[m],
+                   value_of[3 * (size_t) m + c]);
       }
       how[i] = (sphi_solve(&point, h, &out[c], nullptr) == SPHI_NONE) ? SPHI_NONE : SPHI_SHEPARD;
     }

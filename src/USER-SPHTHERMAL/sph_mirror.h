@@ -159,6 +159,7 @@ class SPHMirror : protected Pointers {
     SPHSupport support;
     std::vector<int> neighbours;
     std::vector<double> weights;
+    std::vector<double> basis;    // the quadratic fit's basis of each neighbour
   };
   std::vector<PointScratch> threads;
   // the owned atoms with a ghost point this step, and how many Shepard
@@ -170,8 +171,8 @@ class SPHMirror : protected Pointers {
                           const sphk_kernel &kernel);
   template <int DIM, int KERNEL>
   void interpolate_slice(int from, int to, std::vector<double> &ghost, std::vector<int> &how,
-                         const sphk_kernel &kernel, SPHSupport &support, std::vector<int> &near,
-                         std::vector<double> &near_weights);
+                         const sphk_kernel &kernel, SPHSupport &support, std::vector<double> &basis,
+                         std::vector<int> &near, std::vector<double> &near_weights);
 };
 
 }    // namespace LAMMPS_NS

@@ -4,7 +4,7 @@
    and particle shifting (sph_shift.h), and the quadratic fit at a point
    (sph_interpolation.h) of the flow walls' 'surface'.
    Usage: test_convection_terms buoyancy | linear | thin | shift | deltaplus |
-   gradient | quadratic */
+   gradient | quadratic | moments */
 
 #include "sph_buoyancy.h"
 #include "sph_gradient.h"
@@ -271,6 +271,78 @@ static double jitter_of(int i, int k)
   return 0.4 * ((u % 10007u) / 10006.0) - 0.2;
 }
 
+/* sphi_add_g's sums, written out term by term, are the definition's
+   a[k][c] = sum_j row_k col_c and b[k] = sum_j row_k f_j with
+   row = V [w, g d], col = [1, d], to the last bit, in 2-d and 3-d (a wrong
+   or missing term fails), and a linear field in 3-d is reproduced */
+static void test_moments(void)
+{
+  int dim;
+  for (dim = 2; dim <= 3; dim++) {
+    const int n = dim + 1;
+    sphi_point point;
+    double a[4][4] = {{0.0}}, b[4] = {0.0};
+    int j, k, c, same = 1;
+    char what[120];
+    sphi_begin(&point, dim);
+    for (j = 0; j < 37; j++) {
+      /* neighbours spread irregularly about the point */
+      const double d[3] = {sin(1.3 * j + 0.2), cos(2.1 * j) * 0.8,
+                           (dim == 3) ? sin(0.7 * j - 1.0) : 0.0};
+      const double w = 0.1 + 0.05 * (j % 7), g = 0.3 + 0.02 * (j % 5), volume = 0.9 + 0.01 * j;
+      const double f = 1.0 + 0.5 * d[0] - 2.0 * d[1] + 0.25 * d[2];
+      double row[4], col[4];
+      row[0] = w * volume;
+      col[0] = 1.0;
+      for (k = 0; k < dim; k++) {
+        row[k + 1] = g * d[k] * volume;
+        col[k + 1] = d[k];
+      }
+      for (k = 0; k < n; k++) {
+        b[k] += row[k] * f;
+        for (c = 0; c < n; c++) a[k][c] += row[k] * col[c];
+      }
+      sphi_add_g(&point, d, w, g, volume, f);
+    }
+    for (k = 0; k < 4; k++) {
+      same = same && point.b[k] == ((k < n) ? b[k] : 0.0);
+      for (c = 0; c < 4; c++) same = same && point.a[k][c] == ((k < n && c < n) ? a[k][c] : 0.0);
+    }
+    snprintf(what, sizeof what, "%d-d: sphi_add_g's moments equal the definition's, bit for bit",
+             dim);
+    check(same, what, point.a[n - 1][n - 1], a[n - 1][n - 1]);
+  }
+  {
+    /* 3-d: a linear field at a point next to a plane wall (a cubic lattice,
+       spacing 1, z > 0 only), Wendland kernel, h = 1.3 */
+    const double c[4] = {0.3, -1.7, 2.9, 0.6}, p[3] = {0.2, -0.1, 0.3};
+    const double cutoff = 1.3 * sphk_support(SPHK_WENDLAND);
+    const sphk_kernel k = sphk_make(SPHK_WENDLAND, 3, cutoff);
+    sphi_point point;
+    double value = 0.0, grad[3];
+    int i, j, l, how;
+    sphi_begin(&point, 3);
+    for (i = -6; i < 6; i++)
+      for (j = -6; j < 6; j++)
+        for (l = 0; l < 6; l++) {
+          const double x = i + 0.5, y = j + 0.5, z = l + 0.5;
+          const double d[3] = {x - p[0], y - p[1], z - p[2]};
+          const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+          if (r >= cutoff) continue;
+          sphi_add_g(&point, d, sphk_w(&k, r),
+                     -k.dw_scale * k.inv_h * sphk_df_over_q(SPHK_WENDLAND, r * k.inv_h), 1.0,
+                     c[0] + c[1] * x + c[2] * y + c[3] * z);
+        }
+    how = sphi_solve(&point, 1.3, &value, grad);
+    const double want = c[0] + c[1] * p[0] + c[2] * p[1] + c[3] * p[2];
+    check(how == SPHI_CORRECTED && fabs(value - want) < 1e-12,
+          "3-d, Wendland kernel, at a plane wall: corrected value", value, want);
+    check(fabs(grad[0] - c[1]) < 1e-11 && fabs(grad[1] - c[2]) < 1e-11 &&
+              fabs(grad[2] - c[3]) < 1e-11,
+          "3-d, Wendland kernel, at a plane wall: gradient", grad[2], c[3]);
+  }
+}
+
 static void test_quadratic(void)
 {
   const double h = 1.0;
@@ -345,7 +417,7 @@ static void test_quadratic(void)
 int main(int argc, char **argv)
 {
   if (argc < 2) {
-    fprintf(stderr, "usage: %s buoyancy|linear|thin|shift|deltaplus|gradient|quadratic\n",
+    fprintf(stderr, "usage: %s buoyancy|linear|thin|shift|deltaplus|gradient|quadratic|moments\n",
             argv[0]);
     return 2;
   }
@@ -363,6 +435,8 @@ int main(int argc, char **argv)
     test_gradient();
   else if (strcmp(argv[1], "quadratic") == 0)
     test_quadratic();
+  else if (strcmp(argv[1], "moments") == 0)
+    test_moments();
   else {
     fprintf(stderr, "unknown test %s\n", argv[1]);
     return 2;

@@ -1,7 +1,7 @@
 # convection tests (included by unittest/CMakeLists.txt; helpers: cmake/sphthermal_tests.cmake)
 add_header_test(test_convection_terms convection/test_convection_terms.c C_EXTENSIONS OFF)
 sphthermal_unit_checks(convection.terms test_convection_terms buoyancy linear thin shift gradient
-  quadratic)
+  quadratic moments)
 add_error_cases(convection convection/errors.in)
 # the reference of the Rayleigh-Benard onset (linear stability, Chebyshev)
 sphthermal_python_test(convection.reference.rb_linear tools/test_rb_linear.py LABELS unit)
