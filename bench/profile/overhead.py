@@ -15,12 +15,19 @@ not the pair's share).
 
   overhead.py [--lmp build/lmp] [--plugin build/sphthermalplugin.so]
               [--scenes cavity air channel tank3d bodies] [--repeat 3]
+              [--before PLUGIN --before-label COMMIT]
               [--out bench/profile/out] [--results bench/profile/overhead.md]
+
+--before: a plugin built from an earlier commit (for instance
+`git stash; cmake --build build --target sphthermalplugin;
+cp build/sphthermalplugin.so /tmp/before.so; git stash pop`), whose scenes
+run in the same session beside --plugin's, for a table of before and after.
 
 Serial, one thread; each figure the fastest of --repeat runs (the scenes
 one run each unless --repeat-scenes). Run on an otherwise idle machine.
 """
 
+import argparse
 import importlib.util
 import os
 import subprocess
@@ -59,8 +66,10 @@ def loop_cost(cmd, workdir):
     return time / (steps * atoms), steps, atoms
 
 
-def scene_cost(args, scene):
+def scene_cost(args, scene, plugin=None):
     path, variables, _, _, _ = SCENES[scene]
+    if plugin:
+        args = argparse.Namespace(**dict(vars(args), plugin=plugin))
     work, cmd = profile.scene_command(args, scene, path, variables)
     runs = [loop_cost(cmd, work) for _ in range(args.repeat_scenes)]
     return min(runs)
@@ -80,17 +89,23 @@ def main():
     p = profile.scene_arguments(__doc__, SCENES, "overhead.md")
     p.add_argument("--repeat", type=int, default=3, help="runs of each box, the fastest kept (default 3)")
     p.add_argument("--repeat-scenes", type=int, default=1, help="runs of each scene (default 1)")
+    p.add_argument("--before", help="a plugin of an earlier commit: its scenes too, for before and after")
+    p.add_argument("--before-label", default="before", help="what --before was built from (a commit)")
     args = p.parse_args()
     args.lmp, args.plugin, args.out = (os.path.abspath(a) for a in (args.lmp, args.plugin, args.out))
+    if args.before:
+        args.before = os.path.abspath(args.before)
 
     rows = []
     for scene in args.scenes:
         _, _, kernel, hdx, dim = SCENES[scene]
         cost, steps, atoms = scene_cost(args, scene)
         bare, _, box_atoms = box_cost(args, "ours", kernel, hdx, dim, atoms, 200)
-        rows.append((scene, kernel, hdx, dim, atoms, steps, cost, box_atoms, bare))
+        before = scene_cost(args, scene, args.before)[0] if args.before else None
+        rows.append((scene, kernel, hdx, dim, atoms, steps, cost, box_atoms, bare, before))
         print(f"{scene}: {cost * 1e6:.3f} us per particle-step ({atoms} atoms, {steps} steps); "
-              f"bare loop {bare * 1e6:.3f} us ({box_atoms} atoms): {cost / bare:.2f}", flush=True)
+              f"bare loop {bare * 1e6:.3f} us ({box_atoms} atoms): {cost / bare:.2f}"
+              + (f"; {args.before_label}: {before * 1e6:.3f} us" if before else ""), flush=True)
     whole = {}
     for n in (60, 120):
         ours, _, atoms = box_cost(args, "ours", "lucy", 2.6, 2, n * n, 200)
@@ -110,9 +125,16 @@ def main():
              "about as many particles.", "",
              "| scene | kernel, h / dx, dim | atoms | steps | scene (us) | bare loop (us) | scene / bare |",
              "|---|---|---|---|---|---|---|"]
-    for scene, kernel, hdx, dim, atoms, steps, cost, box_atoms, bare in rows:
+    for scene, kernel, hdx, dim, atoms, steps, cost, box_atoms, bare, _ in rows:
         lines.append(f"| {scene} | {kernel}, {hdx:g}, {dim}-d | {atoms} | {steps} | {cost * 1e6:.3f} | "
                      f"{bare * 1e6:.3f} ({box_atoms} atoms) | {cost / bare:.2f} |")
+    if args.before:
+        lines += ["", f"The same scenes with the plugin of {args.before_label}, run in the same",
+                  "session (each the fastest of as many runs), loop time per particle-step:", "",
+                  f"| scene | {args.before_label} (us) | this (us) | this / {args.before_label} |",
+                  "|---|---|---|---|"]
+        for scene, *_, cost, _, _, before in rows:
+            lines.append(f"| {scene} | {before * 1e6:.3f} | {cost * 1e6:.3f} | {cost / before:.2f} |")
     lines += ["", "The whole thermal-flow step against LAMMPS's styles (sph/taitwater/morris +",
               "sph/heatconduction, hybrid/overlay) on the same particles, Lucy kernel,",
               "h = 2.6 dx, loop time per particle-step:", "",

@@ -57,7 +57,7 @@ static inline void sphi_begin(sphi_point *p, int dim)
    term: with row and col as arrays the compiler stored them and read them
    back in wider loads than it wrote, a stall on every neighbour (the mirror
    walls call this once per neighbour of every ghost point and step), and
-   inlined always: a call per neighbour cost as much again. */
+   inlined always, so that the sums stay in registers across neighbours. */
 static inline SPHI_ALWAYS_INLINE void sphi_add_g(sphi_point *p, const double d[3], double w,
                                                  double g, double volume, double f)
 {
