@@ -39,6 +39,19 @@ report() {    # label ...: the runs' own lines and their heat books
   done
 }
 
+finished() {    # label: its run has written its final line
+  grep -q "^taylor: n " "log.taylor-$1" 2>/dev/null
+}
+
+results_file() {    # file title: the 'taylor:' lines of the input, fenced
+  { echo "# $2"
+    echo
+    echo '```'
+    grep "^taylor:"
+    echo '```'
+  } > "$1"
+}
+
 resolutions="n8 n10 n12 n16"
 fine="n20 n24"
 variants="n8-cubic n12-cubic n16-cubic n8-penalty n8-no-renewal n8-hg10 n8-q0 n8-k0"
@@ -62,17 +75,11 @@ if [ "${1:-}" = hourglass ]; then
   # spacing? (the example's coefficient 1 at the same spacings is in
   # results.md)
   for n in 12 16; do
-    grep -q "^taylor: n " "log.taylor-n$n-hg2" 2>/dev/null || taylor n$n-hg2 $n -var hg 2.0
+    finished n$n-hg2 || taylor n$n-hg2 $n -var hg 2.0
   done
-  {
-    echo "# Xu's Taylor bar (run.sh hourglass): twice the example's hourglass control"
-    echo
-    echo '```'
-    { report n12-hg2 n16-hg2
-      "$PYTHON" "$here/analyse.py" taylor-n12-hg2.dump taylor-n16-hg2.dump
-    } | grep "^taylor:"
-    echo '```'
-  } > "$here/hourglass.md"
+  { report n12-hg2 n16-hg2
+    "$PYTHON" "$here/analyse.py" taylor-n12-hg2.dump taylor-n16-hg2.dump
+  } | results_file "$here/hourglass.md" "Xu's Taylor bar (run.sh hourglass): twice the example's hourglass control"
   cat "$here/hourglass.md"
   exit 0
 fi
@@ -89,17 +96,12 @@ elif [ "${1:-}" != analyse ]; then
 fi
 # the fine runs join the analysis once they have finished
 for label in $fine; do
-  grep -q "^taylor: n " "log.taylor-$label" 2>/dev/null && resolutions="$resolutions $label"
+  finished $label && resolutions="$resolutions $label"
 done
 {
   report $resolutions $variants
   "$PYTHON" "$here/analyse.py" $(for l in $resolutions; do echo taylor-$l.dump; done) --png "$here/taylor.png" --converge
   "$PYTHON" "$here/analyse.py" $(for l in $variants; do echo taylor-$l.dump; done)
 } | tee taylor.txt
-{
-  echo "# Xu's Taylor bar (run.sh): final shape against the benchmark, heat of the plastic work"
-  echo
-  echo '```'
-  grep "^taylor:" taylor.txt
-  echo '```'
-} > "$here/results.md"
+results_file "$here/results.md" \
+  "Xu's Taylor bar (run.sh): final shape against the benchmark, heat of the plastic work" < taylor.txt

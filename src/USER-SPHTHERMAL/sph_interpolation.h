@@ -88,6 +88,7 @@ static inline SPHI_ALWAYS_INLINE void sphi_add_g(sphi_point *p, const double d[3
     p->a[3][3] += r3 * d[2];
   }
 }
+
 /* the same given r = |d| and dwdr = dW/dr at r */
 static inline void sphi_add(sphi_point *p, const double d[3], double r, double w, double dwdr,
                             double volume, double f)

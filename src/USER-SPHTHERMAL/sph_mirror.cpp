@@ -466,9 +466,16 @@ void SPHMirror::interpolate_slice(int from, int to, std::vector<double> &ghost,
     double *const g_in = support.b;
     const double side =
         (axis < 0) ? 0.0 : FixSPHInletTemperature::periodic_cell(domain, g[axis], axis);
-    auto inside = [&](const double *x_m, double rsq) {
+    // candidate m's separation from the ghost point, d = x_m - g
+    auto separation = [&](int m, double d[3]) {
+      const double *const x_m = &candidate_x[3 * (size_t) m];
+      for (int c = 0; c < 3; c++) d[c] = x_m[c] - g[c];
+    };
+    auto inside = [&](int m, double rsq) {
       return rsq < cutsq &&
-          (axis < 0 || FixSPHInletTemperature::periodic_cell(domain, x_m[axis], axis) == side);
+          (axis < 0 ||
+           FixSPHInletTemperature::periodic_cell(domain, candidate_x[3 * (size_t) m + axis],
+                                                 axis) == side);
     };
 
     // the candidates inside the support, then their kernel values: storing
@@ -478,12 +485,12 @@ void SPHMirror::interpolate_slice(int from, int to, std::vector<double> &ghost,
     int nin = 0;
     for (int n = first; n < last; n++) {
       const int m = candidate[n];
-      const double *const x_m = &candidate_x[3 * (size_t) m];
-      const double d[3] = {x_m[0] - g[0], x_m[1] - g[1], x_m[2] - g[2]};
+      double d[3];
+      separation(m, d);
       const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
       m_in[nin] = m;
       rsq_in[nin] = rsq;
-      nin += inside(x_m, rsq);
+      nin += inside(m, rsq);
     }
     for (int k = 0; k < nin; k++) {
       const double q = sqrt(rsq_in[k]) * kernel.inv_h;
@@ -497,10 +504,10 @@ void SPHMirror::interpolate_slice(int from, int to, std::vector<double> &ghost,
       sphi_begin(&point, DIM);
       for (int k = 0; k < nin; k++) {
         const int m = m_in[k];
-        // the separation again (from the atom's position, which the gather
-        // has just read): cheaper than storing it there
-        const double *const x_m = &candidate_x[3 * (size_t) m];
-        const double d[3] = {x_m[0] - g[0], x_m[1] - g[1], x_m[2] - g[2]};
+        // the separation again (the gather has just read the position):
+        // cheaper than storing it there
+        double d[3];
+        separation(m, d);
         sphi_add_g(&point, d, w_in[k], g_in[k], volume_of[m], value_of[m]);
       }
       if (heat_back) {
@@ -524,10 +531,7 @@ void SPHMirror::interpolate_slice(int from, int to, std::vector<double> &ghost,
       continue;
     }
 
-    for (int k = 0; k < nin; k++) {
-      const double *const x_m = &candidate_x[3 * (size_t) m_in[k]];
-      for (int c = 0; c < 3; c++) d_in[3 * k + c] = x_m[c] - g[c];
-    }
+    for (int k = 0; k < nin; k++) separation(m_in[k], &d_in[3 * k]);
     // the velocity: its curvature matters to the wall's viscous force, so
     // a quadratic fit (value and gradient of a quadratic field exact), or
     // where the neighbourhood is too thin for one, the first-order value
