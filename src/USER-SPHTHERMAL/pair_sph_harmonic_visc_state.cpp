@@ -115,15 +115,21 @@ template <int KERNEL, int DIM> void PairSPHHarmonicVisc::update_gradient_correct
       double *const g_in = support.a;
       for (int k = 0; k < nin; k++)
         g_in[k] = -dwdr_r_scale * sphk_df_over_q(KERNEL, sqrt(rsq_in[k]) * inv_h);
+      // i's row in registers over its neighbours (none of them adds to it):
+      // the same sums, without a store and reload per pair
+      double *const row_i = moment_thr + 6 * (size_t) i;
+      double moment_i[6];
+      for (int k = 0; k < 6; k++) moment_i[k] = row_i[k];
       for (int k = 0; k < nin; k++) {
         const int j = support.index[k];
         const int wall_j = mask[j] & wall_groupbit;
         if (wall_i && wall_j) continue;
         const double *const del = support.del + 3 * k;
-        if (!wall_i) sphc_moment_add_in(DIM, moment_thr + 6 * i, g_in[k] * volume[j], del);
+        if (!wall_i) sphc_moment_add_in(DIM, moment_i, g_in[k] * volume[j], del);
         if (!wall_j && (newton_pair || j < nlocal))
           sphc_moment_add_in(DIM, moment_thr + 6 * (size_t) j, g_in[k] * volume[i], del);
       }
+      for (int k = 0; k < 6; k++) row_i[k] = moment_i[k];
     }
     gradient_sums.reduce(moment[0], nthreads, tid);
   });

@@ -31,13 +31,14 @@ template <int DIM> static inline double dot(const double *a, const double *b)
 }
 
 // a Jacobi sweep's coupling of pair (i, j) with weight G = gq at r = r_ij:
-// i gains G (r . lambda_j) r, and j (where j_side) G (r . lambda_i) r
+// i gains G (r . lambda_j) r (into coupling_i, its row or a copy of it), and
+// j (where j_side) G (r . lambda_i) r
 template <int DIM>
-static inline void add_coupling(double *coupling, const double *lambda, int i, int j, bool j_side,
-                                double gq, const double *r)
+static inline void add_coupling(double *coupling_i, double *coupling, const double *lambda, int i,
+                                int j, bool j_side, double gq, const double *r)
 {
   const double along_j = gq * dot<DIM>(r, lambda + 3 * j);
-  for (int k = 0; k < DIM; k++) coupling[3 * i + k] += along_j * r[k];
+  for (int k = 0; k < DIM; k++) coupling_i[k] += along_j * r[k];
   if (j_side) {
     const double along_i = gq * dot<DIM>(r, lambda + 3 * i);
     for (int k = 0; k < DIM; k++) coupling[3 * j + k] += along_i * r[k];
@@ -272,8 +273,8 @@ void SPHConsistentWeights::refresh_in(SPHSupportPairs &pairs, SPHExchange &excha
       }
       const SPHSupportPairs::Block block = pairs.blocks[tid];
       for (int q = block.begin; q < block.end; q++)
-        add_coupling<DIM>(coupling_thr, lambda_flat, pair_i[q], pair_j[q],
-                          newton || pair_j[q] < nlocal, g[q], pair_r + 3 * q);
+        add_coupling<DIM>(coupling_thr + 3 * pair_i[q], coupling_thr, lambda_flat, pair_i[q],
+                          pair_j[q], newton || pair_j[q] < nlocal, g[q], pair_r + 3 * q);
       coupling_sums.reduce(coupling_flat, nthreads, tid);
     });
     if (newton) exchange.reverse(SPHCommStage().rows(coupling, 3));
@@ -311,21 +312,37 @@ void SPHConsistentWeights::weigh_pairs(SPHSupportPairs &pairs, SPHSupportPairs::
   double *const weight = pairs.weight.data();
   const double *const s_flat = s[0];
   const double *const lambda_flat = lambda[0];
-  for (int q = block.begin; q < block.end; q++) {
-    const int i = pair_i[q], j = pair_j[q];
-    const double *const r = pair_r + 3 * q;
-    weight[q] =
-        sphc_second_factor_of(DIM, s_flat + 6 * i, s_flat + 6 * j, r, distance[q] * distance[q]);
-    const double gq = g[q] * weight[q];
-    g[q] = gq;
-    const bool j_side = newton || j < nlocal;
-    sphc_moment_add_in(DIM, kinv_flat + 6 * i, gq, r);
-    for (int k = 0; k < DIM; k++) deficit_flat[3 * i + k] += gq * r[k];
-    if (j_side) {
-      sphc_moment_add_in(DIM, kinv_flat + 6 * j, gq, r);
-      for (int k = 0; k < DIM; k++) deficit_flat[3 * j + k] -= gq * r[k];
+  int q = block.begin;
+  while (q < block.end) {
+    // atom i's pairs are consecutive and no other pair of theirs adds to
+    // i's sums: those stay in registers over the run (the same additions
+    // in the same order), without a store and reload per pair
+    const int i = pair_i[q];
+    double kinv_i[6], deficit_i[3], coupling_i[3];
+    for (int k = 0; k < 6; k++) kinv_i[k] = kinv_flat[6 * i + k];
+    for (int k = 0; k < 3; k++) deficit_i[k] = deficit_flat[3 * i + k];
+    if (WARM)
+      for (int k = 0; k < 3; k++) coupling_i[k] = coupling_flat[3 * i + k];
+    for (; q < block.end && pair_i[q] == i; q++) {
+      const int j = pair_j[q];
+      const double *const r = pair_r + 3 * q;
+      weight[q] =
+          sphc_second_factor_of(DIM, s_flat + 6 * i, s_flat + 6 * j, r, distance[q] * distance[q]);
+      const double gq = g[q] * weight[q];
+      g[q] = gq;
+      const bool j_side = newton || j < nlocal;
+      sphc_moment_add_in(DIM, kinv_i, gq, r);
+      for (int k = 0; k < DIM; k++) deficit_i[k] += gq * r[k];
+      if (j_side) {
+        sphc_moment_add_in(DIM, kinv_flat + 6 * j, gq, r);
+        for (int k = 0; k < DIM; k++) deficit_flat[3 * j + k] -= gq * r[k];
+      }
+      if (WARM) add_coupling<DIM>(coupling_i, coupling_flat, lambda_flat, i, j, j_side, gq, r);
     }
-    if (WARM) add_coupling<DIM>(coupling_flat, lambda_flat, i, j, j_side, gq, r);
+    for (int k = 0; k < 6; k++) kinv_flat[6 * i + k] = kinv_i[k];
+    for (int k = 0; k < 3; k++) deficit_flat[3 * i + k] = deficit_i[k];
+    if (WARM)
+      for (int k = 0; k < 3; k++) coupling_flat[3 * i + k] = coupling_i[k];
   }
 }
 

@@ -17,6 +17,8 @@
 #ifndef SPH_EOS_H
 #define SPH_EOS_H
 
+#include "sph_inline.h"
+
 #include <math.h>
 #include <string.h>
 
@@ -152,8 +154,9 @@ static inline double sphe_tait_offset_far(const sphe_eos *eos, double x)
 
 /* the offsets at +dp (up) and -dp (down); series: sphe_tait_series_of(eos)
    for tait (unused for linear) */
-static inline void sphe_hydrostatic_offsets(const sphe_eos *eos, const sphe_tait_series *series,
-                                            double dp, double *up, double *down)
+static inline SPH_ALWAYS_INLINE void sphe_hydrostatic_offsets(const sphe_eos *eos,
+                                                              const sphe_tait_series *series,
+                                                              double dp, double *up, double *down)
 {
   if (eos->kind != SPHE_TAIT) {
     *up = dp / (eos->c0 * eos->c0);

@@ -17,20 +17,14 @@
 #ifndef SPH_INTERPOLATION_H
 #define SPH_INTERPOLATION_H
 
+#include "sph_inline.h"
+
 #include <math.h>
 
 /* The determinant of the dimensionless system (rows and columns of the
    gradient scaled by h) is about 1 with a full kernel support and about
    0.1-0.3 at a flat wall; below this bound the correction is not trusted. */
 #define SPHI_MIN_DETERMINANT 1e-3
-
-/* GCC and Clang otherwise keep the per-neighbour sums out of line in large
-   callers */
-#if defined(__GNUC__)
-#define SPHI_ALWAYS_INLINE __attribute__((always_inline))
-#else
-#define SPHI_ALWAYS_INLINE
-#endif
 
 enum sphi_result { SPHI_NONE = 0, SPHI_SHEPARD = 1, SPHI_CORRECTED = 2 };
 
@@ -58,7 +52,7 @@ static inline void sphi_begin(sphi_point *p, int dim)
    back in wider loads than it wrote, a stall on every neighbour (the mirror
    walls call this once per neighbour of every ghost point and step), and
    inlined always, so that the sums stay in registers across neighbours. */
-static inline SPHI_ALWAYS_INLINE void sphi_add_g(sphi_point *p, const double d[3], double w,
+static inline SPH_ALWAYS_INLINE void sphi_add_g(sphi_point *p, const double d[3], double w,
                                                  double g, double volume, double f)
 {
   const double r0 = w * volume;

@@ -170,12 +170,19 @@ class SPHSupportPairs {
       if (with_w)
         for (int q = first[ii]; q < n; q++)
           w[q] = kernel.w_scale * sphk_f(KERNEL, distance[q] * kernel.inv_h);
-      if (moments)
+      if (moments) {
+        // atom_i's row in registers over its pairs (no other pair adds to
+        // it here): the same sums, without a store and reload per pair
+        double *const row_i = moments + 6 * (size_t) atom_i;
+        double moment_i[6];
+        for (int k = 0; k < 6; k++) moment_i[k] = row_i[k];
         for (int q = first[ii]; q < n; q++) {
-          sphc_moment_add_in(DIM, moments + 6 * atom_i, g[q], r_of(q));
+          sphc_moment_add_in(DIM, moment_i, g[q], r_of(q));
           if (newton || j[q] < nlocal)
             sphc_moment_add_in(DIM, moments + 6 * (size_t) j[q], g[q], r_of(q));
         }
+        for (int k = 0; k < 6; k++) row_i[k] = moment_i[k];
+      }
     }
     return n;
   }
