@@ -314,9 +314,9 @@ void SPHConsistentWeights::weigh_pairs(SPHSupportPairs &pairs, SPHSupportPairs::
   const double *const lambda_flat = lambda[0];
   int q = block.begin;
   while (q < block.end) {
-    // atom i's pairs are consecutive and no other pair of theirs adds to
-    // i's sums: those stay in registers over the run (the same additions
-    // in the same order), without a store and reload per pair
+    // atom i's pairs are consecutive and none has i as its j: i's sums
+    // stay in registers over them (the same additions in the same order),
+    // without a store and reload per pair
     const int i = pair_i[q];
     double kinv_i[6], deficit_i[3], coupling_i[3];
     for (int k = 0; k < 6; k++) kinv_i[k] = kinv_flat[6 * i + k];

@@ -53,7 +53,7 @@ static inline void sphi_begin(sphi_point *p, int dim)
    walls call this once per neighbour of every ghost point and step), and
    inlined always, so that the sums stay in registers across neighbours. */
 static inline SPH_ALWAYS_INLINE void sphi_add_g(sphi_point *p, const double d[3], double w,
-                                                 double g, double volume, double f)
+                                                double g, double volume, double f)
 {
   const double r0 = w * volume;
   const double r1 = g * d[0] * volume;
