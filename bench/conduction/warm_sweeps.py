@@ -6,7 +6,11 @@ moving scene against its Jacobi sweeps: the flagship cavity (Ra = 1e4,
   - 'sweeps 30 warm 0': thirty (the factors close to converged);
   - 'sweeps 5 warm 1' (the default) and 'warm 2': five from zero at each
     neighbour-list build, one or two per step between builds from the last
-    step's factors.
+    step's factors;
+  - 'sweeps 5 warm hold': five from zero at each build and none between,
+    each pair's factor from the build's S and lambda at its current
+    separation; then also with pair sph/harmonic/visc's 'correction
+    gradient/hold' (its B made at builds only).
 
 For each: the mean Nu's error against de Vahl Davis (1983), the L2 errors
 of the temperature and velocity profiles on the mid-lines against the
@@ -29,13 +33,19 @@ here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.join(here, "..", "..")
 run_sh = os.path.join(root, "examples", "convection-cavity", "run.sh")
 
-CASES = ["sweeps 5 warm 0", "sweeps 30 warm 0", "sweeps 5 warm 1", "sweeps 5 warm 2"]
+# pair sph/cleary/heat's options, then (after '/') pair sph/harmonic/visc's
+# correction where not the flagship's gradient
+CASES = ["sweeps 5 warm 0", "sweeps 30 warm 0", "sweeps 5 warm 1", "sweeps 5 warm 2",
+         "sweeps 5 warm hold", "sweeps 5 warm hold / gradient/hold"]
 
 
-def run_case(lmp, plugin, workdir, sweeps):
-    out = os.path.join(workdir, sweeps.replace(" ", "_"))
+def run_case(lmp, plugin, workdir, case):
+    sweeps, _, gradient = case.partition(" / ")
+    out = os.path.join(workdir, case.replace(" ", "_").replace("/", "_"))
     env = dict(os.environ, LMP=lmp, PLUGIN=plugin, OUT=out,
                CONDUCTION="correction consistent eta 0.01 " + sweeps)
+    if gradient:
+        env["GRADIENT"] = gradient
     text = subprocess.run(["sh", run_sh], env=env, check=True, capture_output=True,
                           text=True).stdout
     log = open(os.path.join(out, "log.cavity")).read()

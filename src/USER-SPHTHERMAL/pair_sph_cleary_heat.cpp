@@ -333,7 +333,7 @@ void PairSPHClearyHeat::allocate()
 
 /* ----------------------------------------------------------------------
    pair_style sph/cleary/heat kernel cutoff [mean harmonic|arithmetic|interface] [distance d_name] [eta f]
-     [correction none|consistent|second] [sweeps n] [warm m] [loop shared|own]
+     [correction none|consistent|second] [sweeps n] [warm m|hold] [loop shared|own]
 ------------------------------------------------------------------------- */
 
 void PairSPHClearyHeat::settings(int narg, char **arg)
@@ -411,10 +411,15 @@ void PairSPHClearyHeat::settings(int narg, char **arg)
         error->all(FLERR, "Illegal pair_style sph/cleary/heat command: sweeps {} must be >= 1",
                    arg[iarg + 1]);
     } else if (strcmp(arg[iarg], "warm") == 0) {
-      warm_sweeps = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (warm_sweeps < 0)
-        error->all(FLERR, "Illegal pair_style sph/cleary/heat command: warm {} must be >= 0",
-                   arg[iarg + 1]);
+      if (strcmp(arg[iarg + 1], "hold") == 0)
+        warm_sweeps = SPHConductionWeights::HOLD;
+      else {
+        warm_sweeps = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+        if (warm_sweeps < 0)
+          error->all(FLERR,
+                     "Illegal pair_style sph/cleary/heat command: warm {} must be >= 0 or 'hold'",
+                     arg[iarg + 1]);
+      }
     } else if (strcmp(arg[iarg], "mean") == 0) {
       if (strcmp(arg[iarg + 1], "harmonic") == 0)
         mean = SPHC_HARMONIC;

@@ -55,7 +55,9 @@ template <int KERNEL> void PairSPHClearyHeat::update_pairs()
   // without a correction only the interface needs pairs: those of the
   // atoms near it
   const double *const near = weights ? nullptr : interface->near();
-  double *const moments = weights ? weights->moments_to_gather() : nullptr;
+  // 'warm hold' between builds: the factors from the held solution, no moments
+  const bool held = weights && weights->held();
+  double *const moments = (weights && !held) ? weights->moments_to_gather() : nullptr;
   const int nall = atom->nlocal + atom->nghost;
   if (domain->dimension == 3)
     support_pairs.gather<KERNEL, 3>(list, atom->x, kernel, cutsq_kernel, eta2, volume,
@@ -65,7 +67,10 @@ template <int KERNEL> void PairSPHClearyHeat::update_pairs()
     support_pairs.gather<KERNEL, 2>(list, atom->x, kernel, cutsq_kernel, eta2, volume,
                                     interface != nullptr, near, moments, atom->nlocal, nall,
                                     force->newton_pair, comm->nthreads);
-  if (weights) weights->refresh(support_pairs, volume, *this);
+  if (held)
+    weights->reweigh(support_pairs);
+  else if (weights)
+    weights->refresh(support_pairs, volume, *this);
   if (interface)
     interface->refresh(support_pairs, volume, kernel.w_scale * sphk_f(KERNEL, 0.0), kernel.h,
                        *this);

@@ -91,9 +91,15 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // (owned and ghost) B in sph_consistent.h's storage,
   // I where the support is incomplete and for wall particles
   int gradient_correction;
-  // the command's choice (-1: not given, the scene's default at init) and
-  // the default last logged
+  // the command's choice (-1: not given, the scene's default at init; 0
+  // none, 1 gradient, GRADIENT_HOLD gradient/hold) and the default last logged
   int gradient_request, gradient_logged;
+  static constexpr int GRADIENT_HOLD = 2;
+  // 'gradient/hold': B made at neighbour-list builds only, held between
+  // them (the atoms, ghosts included, keep their indices); the step B was
+  // last made (-1: none since the array was made)
+  int gradient_hold;
+  bigint gradient_made_at;
   double **gradient_inverse;
   int nmax_gradient;
   // the density diffusion: Fourtakas's (Reece et al. 2024, eq 39) with the

@@ -82,7 +82,7 @@ void PairSPHHarmonicVisc::choose_scene_forms()
   const char *who = "Pair style sph/harmonic/visc";
   if (pressure_request < 0) {
     const SPHSceneDefaults::Choice choice =
-        SPHSceneDefaults::pressure_form(lmp, gradient_request == 1);
+        SPHSceneDefaults::pressure_form(lmp, gradient_request >= 1);
     pressure_form = choice.value;
     SPHSceneDefaults::log(lmp, who, "pressure", sphf_pressure_name(pressure_form), choice,
                           pressure_logged);
@@ -208,11 +208,14 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
     } else if (strcmp(arg[iarg], "correction") == 0) {
       if (strcmp(value, "gradient") == 0)
         gradient_request = 1;
+      else if (strcmp(value, "gradient/hold") == 0)
+        gradient_request = GRADIENT_HOLD;
       else if (strcmp(value, "none") == 0)
         gradient_request = 0;
       else
-        error->all(FLERR, "Illegal {} command: unknown correction '{}' (none or gradient)", cmd,
-                   value);
+        error->all(FLERR,
+                   "Illegal {} command: unknown correction '{}' (none, gradient or gradient/hold)",
+                   cmd, value);
     } else if (strcmp(arg[iarg], "delta") == 0) {
       delta_request = utils::numeric(FLERR, value, false, lmp);
       if (delta_request < 0.0)
@@ -226,7 +229,7 @@ void PairSPHHarmonicVisc::settings(int narg, char **arg)
                "Illegal {} command: xi is a factor of the cleary viscosity form only; viscosity {} "
                "does not use it",
                cmd, sphf_viscosity_name(viscosity_form));
-  if (gradient_request == 1 && pressure_request >= 0 && pressure_request != SPHF_P_AVERAGED)
+  if (gradient_request >= 1 && pressure_request >= 0 && pressure_request != SPHF_P_AVERAGED)
     error->all(FLERR,
                "Illegal {} command: correction gradient needs the averaged pressure form (the "
                "default), not pressure {}",
@@ -342,7 +345,8 @@ void PairSPHHarmonicVisc::init_style()
     SPHSceneDefaults::log(lmp, "Pair style sph/harmonic/visc", "correction",
                           gradient_correction ? "gradient" : "none", choice, gradient_logged);
   } else
-    gradient_correction = (gradient_request == 1);
+    gradient_correction = (gradient_request >= 1);
+  gradient_hold = (gradient_request == GRADIENT_HOLD);
 
   eta2 = init_kernel();
   eos_of.assign(atom->ntypes + 1, nullptr);

@@ -50,13 +50,13 @@ SPHConductionWeights *SPHConductionWeights::create(LAMMPS *lmp, int kind, double
 {
   SPHConductionWeights *made = nullptr;
   if (kind == CONSISTENT) made = new SPHConsistentWeights(lmp, sweeps, warm_sweeps);
-  if (kind == SECOND) made = new SPHSecondWeights(lmp, inv_h);
+  if (kind == SECOND) made = new SPHSecondWeights(lmp, inv_h, warm_sweeps == HOLD);
   if (made) made->grow();
   return made;
 }
 
-SPHConductionWeights::SPHConductionWeights(LAMMPS *lmp, int kind) :
-    Pointers(lmp), kind(kind), nmax(0), s(nullptr), state(nullptr)
+SPHConductionWeights::SPHConductionWeights(LAMMPS *lmp, int kind, int hold) :
+    Pointers(lmp), kind(kind), hold(hold), nmax(0), made_at(-1), s(nullptr), state(nullptr)
 {
 }
 
@@ -74,7 +74,26 @@ void SPHConductionWeights::grow()
   memory->destroy(state);
   memory->create(s, nmax, 6, "sph/cleary/heat:correction_s");
   memory->create(state, nmax, "sph/cleary/heat:correction_state");
+  made_at = -1;
   grow_more();
+}
+
+/* ----------------------------------------------------------------------
+   'warm hold': between neighbour-list builds the atoms keep their indices
+   (ghosts included), so the solution of the last build's refresh still
+   belongs to them; a run's setup always makes it anew
+------------------------------------------------------------------------- */
+
+bool SPHConductionWeights::held() const
+{
+  return hold && !update->setupflag && made_at >= 0 && made_at >= neighbor->lastcall &&
+      atom->nmax <= nmax;
+}
+
+void SPHConductionWeights::reweigh(SPHSupportPairs &pairs)
+{
+  for (int q : pairs.all())
+    pairs.weight[q] = factor(pairs.i[q], pairs.j[q], pairs.r_of(q), pairs.distance[q]);
 }
 
 double SPHConductionWeights::memory_usage() const
@@ -140,8 +159,8 @@ void SPHConductionWeights::report() const
 ------------------------------------------------------------------------- */
 
 SPHConsistentWeights::SPHConsistentWeights(LAMMPS *lmp, int sweeps, int warm_sweeps) :
-    SPHConductionWeights(lmp, CONSISTENT), sweeps(sweeps), warm_sweeps(warm_sweeps), kinv(nullptr),
-    lambda(nullptr), deficit(nullptr), coupling(nullptr), lambda_step(-1)
+    SPHConductionWeights(lmp, CONSISTENT, warm_sweeps == HOLD), sweeps(sweeps),
+    warm_sweeps(warm_sweeps), kinv(nullptr), lambda(nullptr), deficit(nullptr), coupling(nullptr)
 {
 }
 
@@ -165,7 +184,6 @@ void SPHConsistentWeights::grow_more()
   memory->create(lambda, nmax, 3, "sph/cleary/heat:correction_lambda");
   memory->create(deficit, nmax, 3, "sph/cleary/heat:correction_deficit");
   memory->create(coupling, nmax, 3, "sph/cleary/heat:correction_coupling");
-  lambda_step = -1;
 }
 
 double SPHConsistentWeights::memory_usage() const
@@ -204,7 +222,7 @@ void SPHConsistentWeights::refresh_in(SPHSupportPairs &pairs, SPHExchange &excha
   double *const deficit_flat = deficit[0];
   double *const coupling_flat = coupling[0];
   // (no build since the last refresh: the atoms kept their indices)
-  const bool warm = warm_sweeps > 0 && !update->setupflag && lambda_step >= neighbor->lastcall;
+  const bool warm = warm_sweeps > 0 && !update->setupflag && made_at >= neighbor->lastcall;
 
   // the weights with S from here on, and their first moments s and K; on a
   // warm start the first sweep's coupling too, from the last step's lambda
@@ -284,7 +302,7 @@ void SPHConsistentWeights::refresh_in(SPHSupportPairs &pairs, SPHExchange &excha
     });
   }
   exchange.forward(lambda_stage);
-  lambda_step = update->ntimestep;
+  made_at = update->ntimestep;
   sph_parallel(nthreads, [&](int tid) {
     const SPHSupportPairs::Block block = pairs.blocks[tid];
     for (int q = block.begin; q < block.end; q++)
@@ -346,6 +364,38 @@ void SPHConsistentWeights::weigh_pairs(SPHSupportPairs &pairs, SPHSupportPairs::
   }
 }
 
+/* 'warm hold' between builds: S and lambda of the last refresh, each
+   pair's factor at its current separation (the same expression as refresh) */
+
+void SPHConsistentWeights::reweigh(SPHSupportPairs &pairs)
+{
+  if (domain->dimension == 3)
+    reweigh_in<3>(pairs);
+  else
+    reweigh_in<2>(pairs);
+}
+
+template <int DIM> void SPHConsistentWeights::reweigh_in(SPHSupportPairs &pairs)
+{
+  const int *const pair_i = pairs.i.data();
+  const int *const pair_j = pairs.j.data();
+  const double *const pair_r = pairs.r.data();
+  const double *const distance = pairs.distance.data();
+  double *const weight = pairs.weight.data();
+  const double *const s_flat = s[0];
+  const double *const lambda_flat = lambda[0];
+  sph_parallel(pairs.threads(), [&](int tid) {
+    const SPHSupportPairs::Block block = pairs.blocks[tid];
+    for (int q = block.begin; q < block.end; q++) {
+      const int i = pair_i[q], j = pair_j[q];
+      const double *const r = pair_r + 3 * q;
+      weight[q] =
+          sphc_second_factor_of(DIM, s_flat + 6 * i, s_flat + 6 * j, r, distance[q] * distance[q]) *
+          sphc_first_factor_in(DIM, lambda_flat + 3 * i, lambda_flat + 3 * j, r);
+    }
+  });
+}
+
 double SPHConsistentWeights::factor(int i, int j, const double r_ij[3], double r) const
 {
   const int dim = domain->dimension;
@@ -390,8 +440,8 @@ static constexpr int SECOND_CG_STEPS = 100000;
 static constexpr double SECOND_COARSE_SPACING = 2.0;
 static constexpr int SECOND_COARSE_SIZE = 2000;
 
-SPHSecondWeights::SPHSecondWeights(LAMMPS *lmp, double inv_h) :
-    SPHConductionWeights(lmp, SECOND), inv_h(inv_h), result(), exact(-1), warned(0), solved_at(-1),
+SPHSecondWeights::SPHSecondWeights(LAMMPS *lmp, double inv_h, int hold) :
+    SPHConductionWeights(lmp, SECOND, hold), inv_h(inv_h), result(), exact(-1), warned(0),
     exchange(nullptr)
 {
 }
@@ -453,7 +503,7 @@ void SPHSecondWeights::refresh(SPHSupportPairs &pairs, const double *volume, SPH
   this->exchange = &exchange;
   work.resize(sphs_work_size(&problem));
   const int warm =
-      neighbor->ago > 0 && solved_at >= neighbor->lastcall && nu.size() == (size_t) nall * n;
+      neighbor->ago > 0 && made_at >= neighbor->lastcall && nu.size() == (size_t) nall * n;
   if (!warm) nu.assign((size_t) nall * n, 0.0);
   result = sphs_solve(&problem, nu.data(), work.data());
   exact = -1;
@@ -472,7 +522,7 @@ void SPHSecondWeights::refresh(SPHSupportPairs &pairs, const double *volume, SPH
       nu = kept;    // ghosts included
   }
   this->exchange = nullptr;
-  solved_at = update->ntimestep;
+  made_at = update->ntimestep;
 
   for (int q : pairs.all()) {
     double f[SPHS_MAX];

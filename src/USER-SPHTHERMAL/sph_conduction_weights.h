@@ -26,10 +26,15 @@ class SPHExchange;
 class SPHConductionWeights : protected Pointers {
  public:
   enum Kind { NONE = 0, CONSISTENT = 1, SECOND = 2 };
+  // warm_sweeps of create(): no sweeps between builds, the per-atom
+  // solution of the last build held and each pair's factor made from it at
+  // the pair's current separation ('warm hold')
+  static constexpr int HOLD = -1;
   // the weights of 'kind' (nullptr for NONE); inv_h the inverse of the
   // kernel's smoothing length; sweeps the Jacobi sweeps of CONSISTENT from
   // lambda = 0 (at a neighbour-list build), warm_sweeps those that go on
-  // from the last step's lambda between builds (0: from lambda = 0 always)
+  // from the last step's lambda between builds (0: from lambda = 0 always;
+  // HOLD: the solution held, for either kind)
   static SPHConductionWeights *create(LAMMPS *lmp, int kind, double inv_h, int sweeps,
                                       int warm_sweeps);
   ~SPHConductionWeights() override;
@@ -41,6 +46,13 @@ class SPHConductionWeights : protected Pointers {
   // pairs.weight (volume: m / rho of every owned and ghost atom), with the
   // states of every owned and ghost atom
   virtual void refresh(SPHSupportPairs &pairs, const double *volume, SPHExchange &exchange) = 0;
+  // with HOLD, whether this step's factors come from the held solution
+  // (reweigh) instead of refresh: no neighbour-list build since the last
+  // refresh, and not a run's setup; then moments_to_gather() is not called
+  bool held() const;
+  // pairs.weight from the held solution at this step's pairs (as gathered,
+  // without moments)
+  virtual void reweigh(SPHSupportPairs &pairs);
   // the factor between atoms i and j (owned or ghost) at r_ij = x_i - x_j,
   // |r_ij| = r, for the last refresh
   virtual double factor(int i, int j, const double r_ij[3], double r) const = 0;
@@ -59,9 +71,13 @@ class SPHConductionWeights : protected Pointers {
   void grow();
 
  protected:
-  SPHConductionWeights(LAMMPS *lmp, int kind);
+  SPHConductionWeights(LAMMPS *lmp, int kind, int hold);
   const int kind;
+  const int hold;    // 'warm hold'
   int nmax;
+  // the step of the last refresh (-1: none since the arrays were made),
+  // whose solution (owned and ghost atoms) a warm start or a hold goes on from
+  bigint made_at;
   double **s;       // the normalised second moment S = V M^-1 (6 per atom)
   double *state;    // 1: corrected, 0: plain
   // from the gathered M of the plain weights: S and the states, on every atom
@@ -75,18 +91,17 @@ class SPHConsistentWeights : public SPHConductionWeights {
   SPHConsistentWeights(LAMMPS *lmp, int sweeps, int warm_sweeps);
   ~SPHConsistentWeights() override;
   void refresh(SPHSupportPairs &pairs, const double *volume, SPHExchange &exchange) override;
+  void reweigh(SPHSupportPairs &pairs) override;
   double factor(int i, int j, const double r_ij[3], double r) const override;
   double memory_usage() const override;
 
  private:
   const int sweeps, warm_sweeps;
   double **kinv, **lambda, **deficit, **coupling;
-  // the step of the last refresh, whose lambda (owned and ghost atoms) a
-  // warm start goes on from (-1: none since the arrays were made)
-  bigint lambda_step;
   void grow_more() override;
   void release();
   template <int DIM> void refresh_in(SPHSupportPairs &pairs, SPHExchange &exchange);
+  template <int DIM> void reweigh_in(SPHSupportPairs &pairs);
   template <int DIM, bool WARM>
   void weigh_pairs(SPHSupportPairs &pairs, SPHSupportPairs::Block block, int newton,
                    double *kinv_flat, double *deficit_flat, double *coupling_flat);
@@ -97,7 +112,7 @@ class SPHConsistentWeights : public SPHConductionWeights {
 // 'correction second': the multipliers nu of sph_second_moment.h's solve
 class SPHSecondWeights : public SPHConductionWeights {
  public:
-  SPHSecondWeights(LAMMPS *lmp, double inv_h);
+  SPHSecondWeights(LAMMPS *lmp, double inv_h, int hold);
   void refresh(SPHSupportPairs &pairs, const double *volume, SPHExchange &exchange) override;
   double factor(int i, int j, const double r_ij[3], double r) const override;
   void report() const override;
@@ -114,7 +129,6 @@ class SPHSecondWeights : public SPHConductionWeights {
   // 0 not converged (the regularised multipliers kept), -1 not tried
   int exact;
   int warned;
-  bigint solved_at;         // step of the last solve, -1 before the first
   SPHExchange *exchange;    // during refresh()
   static void forward(void *context, double *values, int n);
   static void reverse(void *context, double *values, int n);
