@@ -138,6 +138,14 @@ sphthermal_state_test(convection.mpi.hold_np2 same ${cavity_small} NP 2
   ARGS --var steps=100 --var warm=hold RTOL 1e-12)
 sphthermal_state_test(convection.hold.restart same ${cavity_small}
   ARGS --var warm=hold --var2 split=yes RTOL 0)
+# the same with correction second (nu held; measured 1.3e-2 of max desph,
+# the plain term 8.1e-2)
+sphthermal_state_test(convection.hold.second_builds same ${cavity_small}
+  ARGS --var steps=20 "--var=warm=hold correction second" --var check=no
+  "--var2=warm=0 correction second" RTOL 0)
+sphthermal_state_test(convection.hold.second_moved same ${cavity_small}
+  ARGS --var steps=100 "--var=warm=hold correction second" "--var2=warm=0 correction second"
+  RTOL 2e-2)
 # 'correction gradient/hold' likewise against gradient: to the bit with a
 # build every step; within 5e-2 with builds every few steps (measured
 # 3.1e-2 of max drho; correction none: 1.4e-1 of drho, 5.8e-2 of fx)
