@@ -87,7 +87,7 @@ def main():
         "against de Vahl Davis (1983); L2: the mid-line profiles against the reference solver "
         "(Reece et al. 2024, eqs 35-36); largest v on y = 0.5 against 19.604.",
         "",
-        "| pair sph/cleary/heat | Nu error | L2 theta (y = 0.5) | L2 v (y = 0.5) | L2 theta (x = 0.5) "
+        "| pair sph/cleary/heat (/ sph/harmonic/visc correction) | Nu error | L2 theta (y = 0.5) | L2 v (y = 0.5) | L2 theta (x = 0.5) "
         "| L2 u (x = 0.5) | largest v | steps | loop (s) | Pair (s) |",
         "|---|---|---|---|---|---|---|---|---|---|",
     ]

@@ -14,7 +14,7 @@ against ours on the same particles gives the whole-step ratio (loop time,
 not the pair's share).
 
   overhead.py [--lmp build/lmp] [--plugin build/sphthermalplugin.so]
-              [--scenes cavity air channel tank3d bodies] [--repeat 3]
+              [--scenes cavity air channel tank3d bodies cavity-held channel-held] [--repeat 3]
               [--before PLUGIN --before-label COMMIT]
               [--out bench/profile/out] [--results bench/profile/overhead.md]
 
@@ -53,6 +53,14 @@ SCENES = {
     "tank3d": ("mixing-tank-3d/in.tank3d", {"data": "tank.data", "tend": 0.1, "dumpdt": 100.0},
                "wendland", 2.0, 3),
     "bodies": ("coupling-hot-bodies/in.bodies", {"tend": 0.2}, "wendland", 1.3, 2),
+    # the flagship and the channel with the corrections made at neighbour-list
+    # builds only (pair sph/cleary/heat 'warm hold', sph/harmonic/visc
+    # 'correction gradient/hold'; not the defaults)
+    "cavity-held": ("convection-cavity/in.cavity-options",
+                    {"tend": 0.05, "conduction": "correction consistent warm hold",
+                     "gradient": "gradient/hold"}, "wendland", 2.0, 2),
+    "channel-held": ("forced-channel/in.channel", {"tend": 1.0, "conduction": "warm hold"},
+                     "quintic", 1.3, 2),
 }
 
 
