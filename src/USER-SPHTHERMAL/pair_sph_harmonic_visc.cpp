@@ -52,15 +52,14 @@ PairSPHHarmonicVisc::PairSPHHarmonicVisc(LAMMPS *lmp) :
     heating(0.0), artificial(0.0), artificial_request(-1.0), artificial_logged(-1),
     pressure_request(-1), pressure_logged(-1), delta_request(-1.0), delta_logged(-1),
     grain_forms_warned(0), mean_pressure_held(0), mean_pressure(0.0), gradient_correction(0),
-    gradient_request(-1), gradient_logged(-1), gradient_hold(0), gradient_made_at(-1),
-    gradient_inverse(nullptr), nmax_gradient(0), diffusion_form(DIFFUSION_BODY_FORCE),
-    hydrostatic(0), body_force(nullptr), buoyancy(nullptr), pressure_buoyancy(nullptr), eta2(0.0),
-    materials(nullptr), viscosity_varies(0), wall_groupbit(0), pressure(nullptr),
-    viscosity(nullptr), mass_of(nullptr), volume(nullptr), density(nullptr),
-    diffused_density(nullptr), diffusion_rho(nullptr), velocity_seen_store(nullptr),
-    velocity_seen(nullptr), thermal_expansion(0), nmax(0), heat(nullptr), shift_sums_wanted(0),
-    shift_sum(nullptr), nmax_shift(0), background_warned(0), soft_fluid_warned(0), shepard(nullptr),
-    nmax_shepard(0), artificial_here(0)
+    gradient_request(-1), gradient_logged(-1), gradient_inverse(nullptr), nmax_gradient(0),
+    diffusion_form(DIFFUSION_BODY_FORCE), hydrostatic(0), body_force(nullptr), buoyancy(nullptr),
+    pressure_buoyancy(nullptr), eta2(0.0), materials(nullptr), viscosity_varies(0),
+    wall_groupbit(0), pressure(nullptr), viscosity(nullptr), mass_of(nullptr), volume(nullptr),
+    density(nullptr), diffused_density(nullptr), diffusion_rho(nullptr),
+    velocity_seen_store(nullptr), velocity_seen(nullptr), thermal_expansion(0), nmax(0),
+    heat(nullptr), shift_sums_wanted(0), shift_sum(nullptr), nmax_shift(0), background_warned(0),
+    soft_fluid_warned(0), shepard(nullptr), nmax_shepard(0), artificial_here(0)
 {
   // the continuity equation and the viscous term need the velocities of
   // ghost atoms: turned on here, as comm_modify vel yes would

@@ -15,6 +15,7 @@ PairStyle(sph/harmonic/visc,PairSPHHarmonicVisc);
 #include "pair_sph_cleary_heat.h"
 #include "pair_sph_kernel.h"
 #include "sph_body_force.h"
+#include "sph_build_stamp.h"
 #include "sph_comm_stage.h"
 #include "sph_consistent.h"
 #include "sph_eos.h"
@@ -95,11 +96,8 @@ class PairSPHHarmonicVisc : public PairSPHKernel {
   // none, 1 gradient, GRADIENT_HOLD gradient/hold) and the default last logged
   int gradient_request, gradient_logged;
   static constexpr int GRADIENT_HOLD = 2;
-  // 'gradient/hold': B made at neighbour-list builds only, held between
-  // them (the atoms, ghosts included, keep their indices); the step B was
-  // last made (-1: none since the array was made)
-  int gradient_hold;
-  bigint gradient_made_at;
+  // when B was last made ('gradient/hold' keeps it until the next build)
+  SPHBuildStamp gradient_made;
   double **gradient_inverse;
   int nmax_gradient;
   // the density diffusion: Fourtakas's (Reece et al. 2024, eq 39) with the

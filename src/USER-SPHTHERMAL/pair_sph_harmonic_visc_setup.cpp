@@ -346,7 +346,6 @@ void PairSPHHarmonicVisc::init_style()
                           gradient_correction ? "gradient" : "none", choice, gradient_logged);
   } else
     gradient_correction = (gradient_request >= 1);
-  gradient_hold = (gradient_request == GRADIENT_HOLD);
 
   eta2 = init_kernel();
   eos_of.assign(atom->ntypes + 1, nullptr);

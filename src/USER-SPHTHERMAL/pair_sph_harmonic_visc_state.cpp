@@ -83,13 +83,10 @@ template <int KERNEL, int DIM> void PairSPHHarmonicVisc::update_gradient_correct
     nmax_gradient = atom->nmax;
     memory->destroy(gradient_inverse);
     memory->create(gradient_inverse, nmax_gradient, 6, "pair:gradient_inverse");
-    gradient_made_at = -1;
+    gradient_made.forget();
   }
-  // 'gradient/hold': no build since B was made, owned and ghost atoms alike
-  if (gradient_hold && !update->setupflag && gradient_made_at >= 0 &&
-      gradient_made_at >= neighbor->lastcall)
-    return;
-  gradient_made_at = update->ntimestep;
+  if (gradient_request == GRADIENT_HOLD && gradient_made.current(update, neighbor)) return;
+  gradient_made.stamp(update);
   double **const moment = gradient_inverse;    // M until B replaces it
   const int nthreads = comm->nthreads;
   sph_parallel_for(nall, nthreads, [&](int i) {

@@ -45,6 +45,16 @@ static inline void add_coupling(double *coupling_i, double *coupling, const doub
   }
 }
 
+// the consistent factor of a pair from its atoms' S and lambda at r = r_ij,
+// |r|^2 = rsq (sph_consistent.h)
+template <int DIM>
+static inline double consistent_factor(const double *s_i, const double *s_j, const double *lambda_i,
+                                       const double *lambda_j, const double *r, double rsq)
+{
+  return sphc_second_factor_of(DIM, s_i, s_j, r, rsq) *
+      sphc_first_factor_in(DIM, lambda_i, lambda_j, r);
+}
+
 SPHConductionWeights *SPHConductionWeights::create(LAMMPS *lmp, int kind, double inv_h, int sweeps,
                                                    int warm_sweeps)
 {
@@ -56,7 +66,7 @@ SPHConductionWeights *SPHConductionWeights::create(LAMMPS *lmp, int kind, double
 }
 
 SPHConductionWeights::SPHConductionWeights(LAMMPS *lmp, int kind, int hold) :
-    Pointers(lmp), kind(kind), hold(hold), nmax(0), made_at(-1), s(nullptr), state(nullptr)
+    Pointers(lmp), kind(kind), hold(hold), nmax(0), s(nullptr), state(nullptr)
 {
 }
 
@@ -74,20 +84,13 @@ void SPHConductionWeights::grow()
   memory->destroy(state);
   memory->create(s, nmax, 6, "sph/cleary/heat:correction_s");
   memory->create(state, nmax, "sph/cleary/heat:correction_state");
-  made_at = -1;
+  made.forget();
   grow_more();
 }
 
-/* ----------------------------------------------------------------------
-   'warm hold': between neighbour-list builds the atoms keep their indices
-   (ghosts included), so the solution of the last build's refresh still
-   belongs to them; a run's setup always makes it anew
-------------------------------------------------------------------------- */
-
 bool SPHConductionWeights::held() const
 {
-  return hold && !update->setupflag && made_at >= 0 && made_at >= neighbor->lastcall &&
-      atom->nmax <= nmax;
+  return hold && made.current(update, neighbor) && atom->nmax <= nmax;
 }
 
 void SPHConductionWeights::reweigh(SPHSupportPairs &pairs)
@@ -222,7 +225,7 @@ void SPHConsistentWeights::refresh_in(SPHSupportPairs &pairs, SPHExchange &excha
   double *const deficit_flat = deficit[0];
   double *const coupling_flat = coupling[0];
   // (no build since the last refresh: the atoms kept their indices)
-  const bool warm = warm_sweeps > 0 && !update->setupflag && made_at >= neighbor->lastcall;
+  const bool warm = warm_sweeps > 0 && made.current(update, neighbor);
 
   // the weights with S from here on, and their first moments s and K; on a
   // warm start the first sweep's coupling too, from the last step's lambda
@@ -302,7 +305,7 @@ void SPHConsistentWeights::refresh_in(SPHSupportPairs &pairs, SPHExchange &excha
     });
   }
   exchange.forward(lambda_stage);
-  made_at = update->ntimestep;
+  made.stamp(update);
   sph_parallel(nthreads, [&](int tid) {
     const SPHSupportPairs::Block block = pairs.blocks[tid];
     for (int q = block.begin; q < block.end; q++)
@@ -365,7 +368,7 @@ void SPHConsistentWeights::weigh_pairs(SPHSupportPairs &pairs, SPHSupportPairs::
 }
 
 /* 'warm hold' between builds: S and lambda of the last refresh, each
-   pair's factor at its current separation (the same expression as refresh) */
+   pair's factor at its current separation */
 
 void SPHConsistentWeights::reweigh(SPHSupportPairs &pairs)
 {
@@ -388,19 +391,18 @@ template <int DIM> void SPHConsistentWeights::reweigh_in(SPHSupportPairs &pairs)
     const SPHSupportPairs::Block block = pairs.blocks[tid];
     for (int q = block.begin; q < block.end; q++) {
       const int i = pair_i[q], j = pair_j[q];
-      const double *const r = pair_r + 3 * q;
       weight[q] =
-          sphc_second_factor_of(DIM, s_flat + 6 * i, s_flat + 6 * j, r, distance[q] * distance[q]) *
-          sphc_first_factor_in(DIM, lambda_flat + 3 * i, lambda_flat + 3 * j, r);
+          consistent_factor<DIM>(s_flat + 6 * i, s_flat + 6 * j, lambda_flat + 3 * i,
+                                 lambda_flat + 3 * j, pair_r + 3 * q, distance[q] * distance[q]);
     }
   });
 }
 
 double SPHConsistentWeights::factor(int i, int j, const double r_ij[3], double r) const
 {
-  const int dim = domain->dimension;
-  return sphc_second_factor_of(dim, s[i], s[j], r_ij, r * r) *
-      sphc_first_factor_in(dim, lambda[i], lambda[j], r_ij);
+  if (domain->dimension == 3)
+    return consistent_factor<3>(s[i], s[j], lambda[i], lambda[j], r_ij, r * r);
+  return consistent_factor<2>(s[i], s[j], lambda[i], lambda[j], r_ij, r * r);
 }
 
 /* ----------------------------------------------------------------------
@@ -503,7 +505,7 @@ void SPHSecondWeights::refresh(SPHSupportPairs &pairs, const double *volume, SPH
   this->exchange = &exchange;
   work.resize(sphs_work_size(&problem));
   const int warm =
-      neighbor->ago > 0 && made_at >= neighbor->lastcall && nu.size() == (size_t) nall * n;
+      neighbor->ago > 0 && made.since_build(neighbor) && nu.size() == (size_t) nall * n;
   if (!warm) nu.assign((size_t) nall * n, 0.0);
   result = sphs_solve(&problem, nu.data(), work.data());
   exact = -1;
@@ -522,7 +524,7 @@ void SPHSecondWeights::refresh(SPHSupportPairs &pairs, const double *volume, SPH
       nu = kept;    // ghosts included
   }
   this->exchange = nullptr;
-  made_at = update->ntimestep;
+  made.stamp(update);
 
   for (int q : pairs.all()) {
     double f[SPHS_MAX];

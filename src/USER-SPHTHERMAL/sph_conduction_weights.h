@@ -7,6 +7,7 @@
 #define LMP_SPH_CONDUCTION_WEIGHTS_H
 
 #include "pointers.h"
+#include "sph_build_stamp.h"
 #include "sph_second_moment.h"
 #include "sph_support_pairs.h"
 #include "sph_threads.h"
@@ -75,9 +76,9 @@ class SPHConductionWeights : protected Pointers {
   const int kind;
   const int hold;    // 'warm hold'
   int nmax;
-  // the step of the last refresh (-1: none since the arrays were made),
-  // whose solution (owned and ghost atoms) a warm start or a hold goes on from
-  bigint made_at;
+  // the last refresh, whose solution (owned and ghost atoms) a warm start
+  // or a hold goes on from (forgotten when the arrays are made anew)
+  SPHBuildStamp made;
   double **s;       // the normalised second moment S = V M^-1 (6 per atom)
   double *state;    // 1: corrected, 0: plain
   // from the gathered M of the plain weights: S and the states, on every atom
